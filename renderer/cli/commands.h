@@ -1,0 +1,11 @@
+#pragma once
+// Each `pdrt` subcommand registers itself on the app; its callback runs the command and
+// throws UsageError (exit 2) or InputError (exit 1) with a one-line message.
+#include <CLI/CLI.hpp>
+
+namespace pdrt::cli {
+
+void add_sample_command(CLI::App& app);
+void add_analyze_command(CLI::App& app);
+
+}  // namespace pdrt::cli

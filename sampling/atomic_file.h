@@ -1,0 +1,21 @@
+#pragma once
+// Writes a file all-or-nothing: content goes to a temporary file beside the target,
+// which is renamed over it only when complete. Users never see a half-written file.
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace pdrt {
+
+// Throws InputError naming `path` if the directory is not writable or writing fails.
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& writer);
+
+// For writers that need a file name (image libraries): `writer` gets the temporary path.
+void write_path_atomically(const std::filesystem::path& path,
+                           const std::function<void(const std::filesystem::path& tmp)>& writer);
+
+// Fails early (InputError) when `path` could not be created: missing or unwritable directory.
+void check_writable(const std::filesystem::path& path);
+
+}  // namespace pdrt

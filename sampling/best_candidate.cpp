@@ -1,0 +1,6 @@
+#include "errors.h"
+#include "generator.h"
+
+namespace pdrt {
+PointSet generate_best_candidate(const GeneratorParams&) { throw InputError("method not implemented yet"); }
+}  // namespace pdrt

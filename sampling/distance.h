@@ -5,10 +5,14 @@
 
 namespace pdrt {
 
-// Signed per-axis difference a - b, wrapped to [-0.5, 0.5] when periodic.
+// Signed per-axis difference a - b of coordinates in [0,1), wrapped to [-0.5, 0.5] when
+// periodic (branches instead of nearbyint: this sits in every neighbour query).
 inline double axis_delta(double a, double b, bool periodic) {
   double d = a - b;
-  if (periodic) d -= std::nearbyint(d);
+  if (periodic) {
+    if (d > 0.5) d -= 1.0;
+    else if (d < -0.5) d += 1.0;
+  }
   return d;
 }
 

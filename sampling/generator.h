@@ -23,10 +23,12 @@ struct GeneratorParams {
   uint64_t seed = 1;
   bool periodic = false;
   // Method tuning; unset means the method's documented default.
-  std::optional<int64_t> attempts;  // dart: consecutive failures; bridson: k; mccool: darts per radius step; best-candidate: candidates per point
-  std::optional<double> decay;      // mccool: radius multiplier per failed step (0,1)
-  std::optional<double> magnification;  // mccool: attempt growth per placed point
-  std::optional<double> start_radius;   // mccool: initial radius
+  // dart: consecutive failures before stopping (1000); bridson: candidates k per active
+  // point (30); mccool: darts per free cell per refinement level (2); best-candidate:
+  // candidates per placed point m (1); lloyd: Monte Carlo probes per site (64).
+  std::optional<int64_t> attempts;
+  std::optional<double> decay;         // mccool: radius multiplier per step, in (0,1) (0.97)
+  std::optional<double> start_radius;  // mccool: initial radius (the domain's diameter)
   int lloyd_iterations = 10;            // lloyd
   bool quiet = true;                    // generators may report progress on stderr when false
 };

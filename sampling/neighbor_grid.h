@@ -50,6 +50,7 @@ class NeighborGrid {
   // (a superset of those within reach). Stops early when f returns true; returns whether it did.
   template <class F>
   bool visit_near(const double* p, F&& f) const {
+    if (dim_ == 2 && res_ >= 3) return visit_near_2d(p, f);
     int lo[16], hi[16], cur[16];
     for (int k = 0; k < dim_; ++k) {
       int c = axis_cell(p[k]);
@@ -98,6 +99,32 @@ class NeighborGrid {
   }
 
  private:
+  // The common 2-D case without the odometer (this is the hot loop of the generators).
+  template <class F>
+  bool visit_near_2d(const double* p, F& f) const {
+    const int cx = axis_cell(p[0]), cy = axis_cell(p[1]);
+    for (int dy = -1; dy <= 1; ++dy) {
+      int y = cy + dy;
+      if (y < 0 || y >= res_) {
+        if (!periodic_) continue;
+        y = y < 0 ? y + res_ : y - res_;
+      }
+      for (int dx = -1; dx <= 1; ++dx) {
+        int x = cx + dx;
+        if (x < 0 || x >= res_) {
+          if (!periodic_) continue;
+          x = x < 0 ? x + res_ : x - res_;
+        }
+        for (int32_t s = head_[std::size_t(y) * res_ + x]; s >= 0; s = next_[s]) {
+          const double* q = &pts_[std::size_t(s) * 2];
+          double ex = axis_delta(p[0], q[0], periodic_), ey = axis_delta(p[1], q[1], periodic_);
+          if (f(ids_[s], q, ex * ex + ey * ey)) return true;
+        }
+      }
+    }
+    return false;
+  }
+
   int axis_cell(double x) const { return std::clamp(int(x * res_), 0, res_ - 1); }
   std::size_t cell_of(const double* p) const {
     std::size_t idx = 0;

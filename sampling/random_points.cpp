@@ -1,6 +1,16 @@
-#include "errors.h"
+// `random`: independent uniform points, the "Poisson" process of McCool §3.1 (baseline).
 #include "generator.h"
+#include "rng.h"
 
 namespace pdrt {
-PointSet generate_random(const GeneratorParams&) { throw InputError("method not implemented yet"); }
+
+PointSet generate_random(const GeneratorParams& p) {
+  PointSet ps;
+  ps.dim = p.dim;
+  Rng rng(p.seed, 0x72616e64);
+  ps.coords.resize(std::size_t(*p.count) * p.dim);
+  for (double& x : ps.coords) x = rng.uniform();
+  return ps;
+}
+
 }  // namespace pdrt

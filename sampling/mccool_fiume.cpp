@@ -95,15 +95,15 @@ class Relaxation {
       Cell cell;
       std::size_t rest = c;
       for (int k = 0; k < dim_; ++k) cell.idx[k] = uint32_t(rest % m), rest /= m;
-      // The domain was full at the previous radius, so most cells are still covered.
-      if (!covered(cell, side, r2)) active.push_back(cell);
+      // The domain was full at the previous radius, so most cells are still covered. Above
+      // 3-D the 3^n-cell coverage query costs more than the darts it saves.
+      if (dim_ > 3 || !covered(cell, side, r2)) active.push_back(cell);
     }
-    // Three refinement levels leave only slivers uncovered (the free area shrinks
-    // geometrically per level, Ebeida et al. 2011); the next, slightly smaller radius
-    // step picks up what remains.
+    // Refinement shrinks the free area geometrically per level (Ebeida et al. 2011); seven
+    // levels in 2-D leave only slivers, which the next, slightly smaller radius picks up.
     // Above 2-D a child is seldom inside a single disk, so children multiply by up to 2^n
     // per level: refine less and let the next radius step pick up the rest.
-    const int levels = fine ? 3 : (dim_ == 3 ? 2 : 1);
+    const int levels = fine ? 7 : (dim_ == 3 ? 2 : 1);
     for (int level = 0; level < levels && !active.empty() && !done(); ++level) {
       int64_t darts = per_cell * int64_t(active.size());
       double x[kMaxDim];

@@ -1,4 +1,196 @@
+// `pdrt analyze`: statistics, spectra and plots of one or more point-set CSVs (several files
+// are realizations of one process: their periodograms are averaged).
+//
+// Every input is read and validated, and the plotting interpreter found, before any heavy work
+// or output. Outputs are first written to a staging directory inside DIR and renamed into
+// place only when all exist (stats.json last), so a failure leaves DIR as it was.
+#include "analysis_report.h"
+#include "atomic_file.h"
 #include "commands.h"
+#include "errors.h"
+#include "point_csv.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+extern char** environ;
+
 namespace pdrt::cli {
-void add_analyze_command(CLI::App& app) { app.add_subcommand("analyze", "Analyse point sets (not implemented yet)"); }
+namespace fs = std::filesystem;
+
+namespace {
+
+// Runs argv with stdout and stderr sent to `log` (or /dev/null); returns the exit status,
+// or -1 when the program could not be started.
+int run_program(const std::vector<std::string>& argv, const std::string& log = "/dev/null") {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  int rc = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The first interpreter that imports matplotlib: $PDRT_PYTHON if set, else python3 on PATH,
+// else the system one (a PATH python3 from a version manager may lack Debian's matplotlib).
+std::string find_plot_python() {
+  std::vector<std::string> candidates;
+  if (const char* env = std::getenv("PDRT_PYTHON"); env && *env)
+    candidates.push_back(env);
+  else
+    candidates = {"python3", "/usr/bin/python3"};
+  for (const auto& py : candidates)
+    if (run_program({py, "-c", "import matplotlib, numpy"}) == 0) return py;
+  std::string tried;
+  for (const auto& c : candidates) tried += (tried.empty() ? "" : ", ") + c;
+  throw std::runtime_error("plots need python3 with matplotlib and numpy (tried " + tried +
+                           "; install python3-matplotlib, set PDRT_PYTHON, or pass --no-plots)");
+}
+
+std::string last_line_of(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+template <class T>
+void write_raw(const fs::path& path, const std::vector<T>& values) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(T)));
+  });
+}
+
+// Removes the staging directory however the command ends.
+struct StagingDir {
+  fs::path path;
+  ~StagingDir() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
+}  // namespace
+
+void add_analyze_command(CLI::App& app) {
+  struct Opts {
+    std::vector<std::string> files;
+    bool periodic = false;
+    int resolution = 0;
+    bool quiet = false;
+    bool no_plots = false;
+    std::string out;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand(
+      "analyze",
+      "Analyse point-set CSVs: min distance, relative radius rho (and per prefix), largest empty ball, chi-square "
+      "uniformity, periodogram with radial power and anisotropy (McCool & Fiume 1992 §2). Several files are "
+      "realizations whose spectra are averaged. Writes DIR/stats.json, DIR/periodogram.f32 and PNG plots.");
+  cmd->add_option("files", o->files, "Point CSV files (x0,x1,...[,radius]), all of one dim")->required();
+  cmd->add_flag("--periodic", o->periodic, "Toroidal distances (for sets generated with --periodic)");
+  cmd->add_option("--resolution", o->resolution,
+                  "Periodogram grid size R (even; 2-D: 32..4096, 1-D: 64..16777216); default: the smallest power "
+                  "of two >= 4 N^(1/d)");
+  cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
+  cmd->add_flag("--no-plots", o->no_plots, "Skip the PNG plots (no python3/matplotlib needed)");
+  cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
+  cmd->callback([o] {
+    auto t0 = std::chrono::steady_clock::now();
+    // 1. Validate everything before any expensive work or output.
+    std::vector<PointSet> sets;
+    for (const auto& f : o->files) sets.push_back(read_point_csv(f));
+    check_same_dim(sets, o->files);
+    AnalysisOptions opts;
+    opts.periodic = o->periodic;
+    opts.resolution = resolve_resolution(sets, o->resolution);
+    std::string python;
+    if (!o->no_plots) python = find_plot_python();
+    const fs::path out = o->out;
+    std::error_code ec;
+    if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+      throw InputError(o->out + ": exists and is not a directory");
+    fs::create_directories(out, ec);
+    if (ec) throw InputError(o->out + ": cannot create directory (" + ec.message() + ")");
+    check_writable(out / "stats.json");
+
+    // 2. Compute.
+    Analysis a = analyze_point_sets(sets, o->files, opts);
+    const Periodogram& pg = a.periodogram;
+    a.stats["spectrum"]["periodogram_file"] = "periodogram.f32";
+    a.stats["spectrum"]["periodogram_layout"] =
+        "float32 little-endian, centred: R*R values (2-D, row ky+R/2, column kx+R/2) or R values (1-D, kx+R/2), "
+        "for frequencies in [-R/2, R/2)";
+    std::vector<std::string> plots;
+    if (!o->no_plots) {
+      plots = {"points.png", "periodogram.png", "radial_power.png", "prefix_rho.png"};
+      if (pg.spectral_dim == 2) plots.push_back("anisotropy.png");
+    }
+    a.stats["plots"] = plots;
+
+    // 3. Stage every output, then move them into place.
+    StagingDir staging{out / (".pdrt-analyze.tmp" + std::to_string(::getpid()))};
+    fs::remove_all(staging.path, ec);
+    fs::create_directory(staging.path, ec);
+    if (ec) throw InputError(staging.path.string() + ": cannot create (" + ec.message() + ")");
+    std::vector<float> power(pg.power.begin(), pg.power.end());
+    write_raw(staging.path / "periodogram.f32", power);
+    write_file_atomically(staging.path / "stats.json", [&](std::ostream& s) { s << a.stats.dump(1) << '\n'; });
+    if (!o->no_plots) {
+      // The first file's points and radii, already validated, for the point plots.
+      write_raw(staging.path / "points.f64", sets.front().coords);
+      if (sets.front().has_radius()) write_raw(staging.path / "radius.f64", sets.front().radius);
+      ::setenv("MPLBACKEND", "Agg", 1);
+      const std::string script = std::string(PDRT_SOURCE_DIR) + "/sampling/plot_analysis.py";
+      int rc = run_program({python, script, staging.path.string()}, (staging.path / "plot.log").string());
+      if (rc != 0) {
+        std::string why = last_line_of(staging.path / "plot.log");
+        throw std::runtime_error("plotting with " + python + " " + script + " failed" +
+                                 (why.empty() ? std::string(rc < 0 ? " to start" : "") : ": " + why));
+      }
+      for (const auto& p : plots)
+        if (!fs::exists(staging.path / p)) throw std::runtime_error("plotting did not write " + p);
+    }
+    std::vector<std::string> finals = plots;
+    finals.push_back("periodogram.f32");
+    finals.push_back("stats.json");  // last: its presence means the analysis is complete
+    for (const auto& f : finals) {
+      fs::rename(staging.path / f, out / f, ec);
+      if (ec) throw InputError((out / f).string() + ": cannot write (" + ec.message() + ")");
+    }
+
+    if (!o->quiet) {
+      double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto& s = a.stats;
+      auto num = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : NAN; };
+      std::fprintf(stderr,
+                   "pdrt analyze: %zu file(s), %zu points, dim %d: min distance %.6g, rho %.4g, max empty radius %.6g "
+                   "(%s), chi2 p %.3g; periodogram %d^%d over %d realization(s); %.2f s -> %s\n",
+                   sets.size(), sets.front().size(), sets.front().dim, num(s["min_distance"]),
+                   num(s["relative_radius"]), num(s["max_empty_radius"]),
+                   s["maximal"].is_boolean() ? (s["maximal"].get<bool>() ? "maximal" : "not maximal") : "maximality undefined", num(s["chi2_p"]), pg.resolution,
+                   pg.spectral_dim, pg.realizations, secs, o->out.c_str());
+    }
+  });
+}
+
 }  // namespace pdrt::cli

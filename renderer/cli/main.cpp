@@ -9,6 +9,8 @@ int main(int argc, char** argv) {
   CLI::App app{"pdrt — a distribution ray tracer with hierarchical Poisson-disk sampling"};
   app.set_version_flag("--version", PDRT_VERSION);
   app.require_subcommand(1);
+  // One line per error, as for every other pdrt error.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string("pdrt: ") + e.what() + " (see --help)\n"; });
   pdrt::cli::add_sample_command(app);
   pdrt::cli::add_analyze_command(app);
   try {

@@ -137,16 +137,24 @@ class Relaxation {
   }
 
   // True when one point's disk contains the whole cell (its farthest corner is within r).
-  bool covered(const Cell& c, double side, double r2) const {
+  // Neighbouring cells are usually covered by the same point, so the last one found is
+  // tried first.
+  bool covered(const Cell& c, double side, double r2) {
     double centre[kMaxDim];
     for (int k = 0; k < dim_; ++k) centre[k] = (c.idx[k] + 0.5) * side;
-    return grid_.visit_near(centre, [&](uint32_t, const double* q, double) {
+    auto covers = [&](const double* q) {
       double far2 = 0.0;
       for (int k = 0; k < dim_; ++k) {
         double d = std::abs(axis_delta(q[k], centre[k], p_.periodic)) + side / 2.0;
         far2 += d * d;
       }
       return far2 < r2;
+    };
+    if (hint_ < ps_.size() && covers(ps_.coords.data() + hint_ * dim_)) return true;
+    return grid_.visit_near(centre, [&](uint32_t id, const double* q, double d2) {
+      if (d2 >= r2 || !covers(q)) return false;  // a point farther than r from the centre cannot cover
+      hint_ = id;
+      return true;
     });
   }
 
@@ -156,6 +164,7 @@ class Relaxation {
   NeighborGrid grid_;
   Rng rng_;
   PointSet ps_;
+  std::size_t hint_ = 0;  // index of the point that covered the last cell
 };
 
 }  // namespace

@@ -1,0 +1,66 @@
+// Speed of the point-set generators (issue targets: bridson 2-D >= 2 M points/s on one core;
+// mccool 2-D 4096 points <= 100 ms). Run: ./build/bench/bench_generators
+#include "generator.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+void run(benchmark::State& state, pdrt::GeneratorParams p) {
+  std::size_t points = 0;
+  for (auto _ : state) {
+    pdrt::PointSet ps = pdrt::generate(p);
+    points = ps.size();
+    benchmark::DoNotOptimize(ps.coords.data());
+    ++p.seed;
+  }
+  state.SetItemsProcessed(int64_t(points) * state.iterations());
+  state.counters["points"] = double(points);
+}
+
+void BM_Bridson(benchmark::State& state) {
+  pdrt::GeneratorParams p;
+  p.method = "bridson";
+  p.dim = int(state.range(0));
+  p.count = state.range(1);
+  run(state, p);
+}
+BENCHMARK(BM_Bridson)->Args({2, 100000})->Args({2, 1000000})->Args({3, 100000})->Args({4, 100000})->Args({5, 50000})
+    ->Unit(benchmark::kMillisecond);
+
+void BM_McCool(benchmark::State& state) {
+  pdrt::GeneratorParams p;
+  p.method = "mccool";
+  p.dim = int(state.range(0));
+  p.count = state.range(1);
+  p.periodic = state.range(2) != 0;
+  run(state, p);
+}
+BENCHMARK(BM_McCool)->Args({2, 4096, 0})->Args({2, 4096, 1})->Args({2, 65536, 1})->Args({1, 4096, 1})
+    ->Unit(benchmark::kMillisecond);
+
+void BM_Dart(benchmark::State& state) {
+  pdrt::GeneratorParams p;
+  p.method = "dart";
+  p.count = state.range(0);
+  run(state, p);
+}
+BENCHMARK(BM_Dart)->Arg(4096)->Unit(benchmark::kMillisecond);
+
+void BM_BestCandidate(benchmark::State& state) {
+  pdrt::GeneratorParams p;
+  p.method = "best-candidate";
+  p.count = state.range(0);
+  run(state, p);
+}
+BENCHMARK(BM_BestCandidate)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+void BM_Jitter(benchmark::State& state) {
+  pdrt::GeneratorParams p;
+  p.method = "jitter";
+  p.count = state.range(0);
+  run(state, p);
+}
+BENCHMARK(BM_Jitter)->Arg(1 << 20)->Unit(benchmark::kMillisecond);
+
+}  // namespace

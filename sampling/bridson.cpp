@@ -5,98 +5,171 @@
 // ~ rho^(n-1)), not by rejection from a 4^n box, which collapses in 4–5-D.
 #include "generator.h"
 #include "neighbor_grid.h"
+#include "distance.h"
 #include "rng.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace pdrt {
 namespace {
 
-// 2-D fast path: background grid of cell side r/sqrt(2) holds at most one point per cell
-// (Bridson step 0), padded by two ghost cells per side so a query never bounds-checks. In
-// periodic mode the ghost cells hold wrapped copies.
+// 2-D fast path. Background grid of cell side just under r/sqrt(2) (Bridson step 0: at most
+// one point per cell), in cell units so a query is a 5x5 block around the candidate's cell.
+// Each cell stores its point's offset from the cell corner as floats, x and y in separate
+// arrays (empty cells: far away), so one row of the block is two unaligned 4-wide loads
+// per axis; a float test with a small margin decides almost every candidate, and only
+// distances within the margin of r are redone exactly in doubles. Small float offsets
+// (not absolute coordinates) keep the float error ~1e-7 of a cell at any resolution.
+// Ghost cells pad the grid so queries never bounds-check; periodic ghosts hold wrapped copies.
 class Grid2D {
  public:
-  Grid2D(double r, bool periodic) : periodic_(periodic) {
-    res_ = std::max(1, int(std::ceil(std::sqrt(2.0) / r)));
-    inv_cell_ = double(res_);
-    stride_ = res_ + 2 * kPad;
-    cells_.assign(std::size_t(stride_) * stride_, Cell{kEmpty, kEmpty});
+  using V4 = float __attribute__((vector_size(16)));
+  using M4 = int32_t __attribute__((vector_size(16)));
+
+  Grid2D(double r, bool periodic) : periodic_(periodic), r2_(r * r) {
+    // Cells a hair narrower than r/sqrt(2) so rounding never puts two points in one cell;
+    // r < 0.5 keeps 2 cells >= r, so the 5x5 block covers the disk of radius r.
+    res_ = std::max(3, int(std::ceil(std::sqrt(2.0) / r * (1.0 + 1e-9))));
+    scale_ = double(res_);
+    stride_ = res_ + kPadLo + kPadHi;
+    const std::size_t cells = std::size_t(stride_) * std::size_t(res_ + 2 * kPadLo);
+    fx_.assign(cells, kFar);
+    fy_.assign(cells, kFar);
+    id_.assign(cells, -1);
+    const double rc2 = r2_ * scale_ * scale_;
+    // Float error of a squared cell-unit distance near r is < 1e-6 relative (see above).
+    lo_ = float(rc2 * (1.0 - 1e-5));
+    hi_ = float(rc2 * (1.0 + 1e-5));
   }
 
-  bool conflicts(double x, double y, double r2) const {
-    int cx = int(x * inv_cell_) + kPad, cy = int(y * inv_cell_) + kPad;
-    const Cell* row = &cells_[std::size_t(cy - 2) * stride_ + cx];
-    // The 5x5 block holds every point closer than r (cells are just under r/sqrt(2) wide,
-    // so the corners can too).
-    for (int dy = -2; dy <= 2; ++dy, row += stride_) {
-      for (int dx = -2; dx <= 2; ++dx) {
-        const Cell& c = row[dx];
-        double ex = c.x - x, ey = c.y - y;
-        if (ex * ex + ey * ey < r2) return true;
-      }
-    }
-    return false;
+  // True when a stored point is closer than r to (x, y) in [0,1)^2 (toroidally if periodic).
+  bool conflicts(double x, double y, const double* pts) const {
+    const double u = x * scale_, v = y * scale_;
+    const int cx = std::min(int(u), res_ - 1), cy = std::min(int(v), res_ - 1);
+    const std::size_t c = index(cx, cy);
+    // An occupied own cell is closer than its diagonal (< r): the commonest rejection.
+    if (id_[c] >= 0) return true;
+    const float fu = float(u - cx), fv = float(v - cy);
+    // Columns cx-2 .. cx+5; the last three are >= 2 cells (> r) away and never hit.
+    const V4 ax0 = V4{-2.f, -1.f, 0.f, 1.f} - fu, ax1 = V4{2.f, 3.f, 4.f, 5.f} - fu;
+    const float* rx = &fx_[c - 2 - 2 * std::size_t(stride_)];
+    const float* ry = &fy_[c - 2 - 2 * std::size_t(stride_)];
+    auto row = [&](int dy) {
+      const std::size_t o = std::size_t(dy + 2) * stride_;
+      const float ay = float(dy) - fv;
+      V4 x0 = load(rx + o) + ax0, x1 = load(rx + o + 4) + ax1;
+      V4 y0 = load(ry + o) + ay, y1 = load(ry + o + 4) + ay;
+      V4 d0 = x0 * x0 + y0 * y0, d1 = x1 * x1 + y1 * y1;
+      return d0 < d1 ? d0 : d1;
+    };
+    // Nearest rows first: most rejected candidates stop after three rows.
+    V4 m = min(row(0), min(row(-1), row(1)));
+    if (any(m < lo_)) return true;
+    m = min(m, min(row(-2), row(2)));
+    if (any(m < lo_)) return true;
+    if (!any(m < hi_)) return false;
+    return exact(x, y, cx, cy, pts);
   }
 
-  void insert(double x, double y) {
-    int cx = int(x * inv_cell_), cy = int(y * inv_cell_);
-    put(cx, cy, x, y);
+  void insert(double x, double y, int32_t id) {
+    const double u = x * scale_, v = y * scale_;
+    const int cx = std::min(int(u), res_ - 1), cy = std::min(int(v), res_ - 1);
+    const float fu = float(u - cx), fv = float(v - cy);
+    put(cx, cy, fu, fv, id);
     if (!periodic_) return;
-    // Ghost copies for neighbours across the wrap.
+    // Ghost copies for neighbours across the wrap (same offset within the cell).
     for (int oy = -1; oy <= 1; ++oy)
       for (int ox = -1; ox <= 1; ++ox) {
         if (!ox && !oy) continue;
         int gx = cx + ox * res_, gy = cy + oy * res_;
-        if (gx >= -kPad && gx < res_ + kPad && gy >= -kPad && gy < res_ + kPad) put(gx, gy, x + ox, y + oy);
+        if (gx >= -kPadLo && gx < res_ + kPadLo && gy >= -kPadLo && gy < res_ + kPadLo) put(gx, gy, fu, fv, id);
       }
   }
 
  private:
-  struct Cell {
-    double x, y;
-  };
-  static constexpr int kPad = 2;
-  static constexpr double kEmpty = -1e30;  // far from everything: never conflicts
-  void put(int cx, int cy, double x, double y) { cells_[std::size_t(cy + kPad) * stride_ + cx + kPad] = Cell{x, y}; }
+  static constexpr int kPadLo = 2;  // ghost cells below / left (and above)
+  static constexpr int kPadHi = 6;  // right: room for the 8-wide row loads
+  static constexpr float kFar = 1e4f;
+
+  static V4 load(const float* p) {
+    V4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  static V4 min(V4 a, V4 b) { return a < b ? a : b; }
+  static bool any(M4 m) {
+    uint64_t h[2];
+    std::memcpy(h, &m, sizeof h);
+    return (h[0] | h[1]) != 0;
+  }
+
+  // Distances within the float margin of r: decide in doubles, as the tests measure them.
+  bool exact(double x, double y, int cx, int cy, const double* pts) const {
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int32_t i = id_[index(cx + dx, cy + dy)];
+        if (i < 0) continue;
+        const double ex = axis_delta(x, pts[2 * i], periodic_), ey = axis_delta(y, pts[2 * i + 1], periodic_);
+        if (ex * ex + ey * ey < r2_) return true;
+      }
+    return false;
+  }
+
+  std::size_t index(int cx, int cy) const { return std::size_t(cy + kPadLo) * stride_ + std::size_t(cx + kPadLo); }
+  void put(int cx, int cy, float fu, float fv, int32_t id) {
+    const std::size_t c = index(cx, cy);
+    fx_[c] = fu;
+    fy_[c] = fv;
+    id_[c] = id;
+  }
 
   bool periodic_;
+  double r2_, scale_;
   int res_, stride_;
-  double inv_cell_;
-  std::vector<Cell> cells_;
+  float lo_, hi_;
+  std::vector<float> fx_, fy_;
+  std::vector<int32_t> id_;
 };
 
 PointSet bridson_2d(const GeneratorParams& p, double r, std::size_t limit) {
   const int k = int(p.attempts.value_or(30));
-  const double r2 = r * r, four_r2 = 4.0 * r2;
   Grid2D grid(r, p.periodic);
   Rng rng(p.seed, 0x62726964);
   PointSet ps;
   ps.dim = 2;
-  std::vector<uint32_t> active;
+  struct Active {
+    double x, y;
+  };
+  std::vector<Active> active;  // coordinates, not indices: no random access into ps
   ps.coords.reserve(2 * std::size_t(std::min<double>(double(limit), expected_count_for_radius(r, 2) * 1.3)));
   auto add = [&](double x, double y) {
-    active.push_back(uint32_t(ps.size()));
+    grid.insert(x, y, int32_t(ps.size()));
+    active.push_back({x, y});
     ps.coords.push_back(x);
     ps.coords.push_back(y);
-    grid.insert(x, y);
   };
   add(rng.uniform(), rng.uniform());
+  // Offsets in units of 2r / 2^31: a 32-bit half of a draw is one coordinate in [-2r, 2r).
+  const double unit = r * 0x1.0p-30;
   while (!active.empty() && ps.size() < limit) {
-    std::size_t slot = rng.below(active.size());
-    const double px = ps.coords[2 * active[slot]], py = ps.coords[2 * active[slot] + 1];
+    const std::size_t slot = rng.below(active.size());
+    const double px = active[slot].x, py = active[slot].y;
     bool found = false;
     for (int t = 0; t < k; ++t) {
-      // Uniform in the annulus by rejection from its bounding square (acceptance 3*pi/16),
-      // cheaper than a sin/cos pair per candidate.
-      double dx, dy, d2;
-      do {
-        dx = (4.0 * rng.uniform() - 2.0) * r;
-        dy = (4.0 * rng.uniform() - 2.0) * r;
-        d2 = dx * dx + dy * dy;
-      } while (d2 < r2 || d2 >= four_r2);
-      double x = px + dx, y = py + dy;
+      // Uniform in the annulus [r, 2r) by rejection from its bounding square (acceptance
+      // 3*pi/16), one 64-bit draw per try; the ring test is exact integer arithmetic.
+      int64_t a, b;
+      for (;;) {
+        const uint64_t w = rng.next_u64();
+        a = int32_t(uint32_t(w));
+        b = int32_t(uint32_t(w >> 32));
+        if (uint64_t(a * a + b * b) - (uint64_t(1) << 60) < (uint64_t(3) << 60)) break;
+      }
+      double x = px + double(a) * unit, y = py + double(b) * unit;
       if (p.periodic) {
         x -= std::floor(x);
         y -= std::floor(y);
@@ -105,7 +178,7 @@ PointSet bridson_2d(const GeneratorParams& p, double r, std::size_t limit) {
       } else if (x < 0.0 || x >= 1.0 || y < 0.0 || y >= 1.0) {
         continue;
       }
-      if (grid.conflicts(x, y, r2)) continue;
+      if (grid.conflicts(x, y, ps.coords.data())) continue;
       add(x, y);
       found = true;
       break;

@@ -92,6 +92,8 @@ void validate(const GeneratorParams& p) {
 
   if (p.attempts && *p.attempts <= 0) throw UsageError("--attempts must be > 0, got " + std::to_string(*p.attempts));
   if (p.decay && !(*p.decay > 0.0 && *p.decay < 1.0)) throw UsageError("--decay must be in (0, 1), got " + fmt(*p.decay));
+  if (p.magnification && !(std::isfinite(*p.magnification) && *p.magnification >= 0.0))
+    throw UsageError("--magnification must be a finite number >= 0, got " + fmt(*p.magnification));
   if (p.start_radius && !(std::isfinite(*p.start_radius) && *p.start_radius > 0.0))
     throw UsageError("--start-radius must be > 0, got " + fmt(*p.start_radius));
   if (p.lloyd_iterations < 0 || p.lloyd_iterations > 10000)

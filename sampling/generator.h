@@ -24,10 +24,12 @@ struct GeneratorParams {
   bool periodic = false;
   // Method tuning; unset means the method's documented default.
   // dart: consecutive failures before stopping (1000); bridson: candidates k per active
-  // point (30); mccool: darts per free cell per refinement level (2); best-candidate:
+  // point (30); mccool: consecutive missed darts before the radius shrinks
+  // (30 + magnification x placed, McCool §4); best-candidate:
   // candidates per placed point m (1); lloyd: Monte Carlo probes per site (64).
   std::optional<int64_t> attempts;
-  std::optional<double> decay;         // mccool: radius multiplier per step, in (0,1) (0.97)
+  std::optional<double> decay;          // mccool: radius multiplier per step, in (0,1) (0.97)
+  std::optional<double> magnification;  // mccool: extra missed darts allowed per placed point (32)
   std::optional<double> start_radius;  // mccool: initial radius (the domain's diameter)
   int lloyd_iterations = 10;            // lloyd
   bool quiet = true;                    // generators may report progress on stderr when false

@@ -30,9 +30,11 @@ void add_sample_command(CLI::App& app) {
   cmd->add_option("--seed,-s", o->p.seed, "Random seed")->default_val(1);
   cmd->add_option("--attempts,-k", o->p.attempts,
                   "dart: consecutive failures before stopping (1000); bridson: candidates per active point (30); "
-                  "mccool: darts per free cell per refinement level (2); best-candidate: candidates per placed point "
+                  "mccool: consecutive missed darts before the radius shrinks (30, plus magnification per placed point); best-candidate: candidates per placed point "
                   "(1); lloyd: Monte Carlo probes per point (64)");
   cmd->add_option("--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
+  cmd->add_option("--magnification", o->p.magnification,
+                  "mccool: extra consecutive misses allowed per placed point (32)");
   cmd->add_option("--start-radius", o->p.start_radius, "mccool: initial radius");
   cmd->add_option("--iterations", o->p.lloyd_iterations, "lloyd: relaxation iterations")->default_val(10);
   cmd->add_option("--out,-o", o->out, "Output CSV file")->required();

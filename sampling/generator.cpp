@@ -59,7 +59,10 @@ void validate(const GeneratorParams& p) {
   const MethodInfo* m = find_method(p.method);
   if (!m) {
     std::string known;
-    for (const auto& x : methods()) known += (known.empty() ? "" : ", ") + x.name;
+    for (const auto& x : methods()) {
+      if (!known.empty()) known += ", ";
+      known += x.name;
+    }
     throw UsageError("--method: unknown method '" + p.method + "' (known: " + known + ")");
   }
   if (p.dim < 1 || p.dim > m->max_dim)

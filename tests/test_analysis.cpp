@@ -10,6 +10,8 @@
 #include "radial_spectrum.h"
 #include "rng.h"
 
+#include "cli_runner.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -63,44 +65,8 @@ PointSet grid_points(int k, int dim, double offset) {
 
 // ---- CLI helpers
 
-struct RunResult {
-  int code = -1;
-  std::string err;
-};
-
-fs::path scratch_base() {
-  std::string base = "pdrt_test_analysis_";
-  base += std::to_string(::getpid());
-  return fs::temp_directory_path() / base;
-}
-
-// Removes this process's scratch directories when the test program exits.
-struct ScratchCleanup {
-  ~ScratchCleanup() {
-    std::error_code ec;
-    fs::remove_all(scratch_base(), ec);
-  }
-} scratch_cleanup;
-
-fs::path scratch_dir(const std::string& name) {
-  fs::path dir = scratch_base() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-RunResult run_pdrt(const std::string& args, const fs::path& dir) {
-  fs::path err = dir / "stderr.txt";
-  std::string cmd = std::string("'") + PDRT_BINARY + "' " + args + " 2> '" + err.string() + "' > /dev/null";
-  int status = std::system(cmd.c_str());
-  RunResult r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  return r;
-}
+using test::run_pdrt;
+using test::scratch_dir;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -135,8 +101,8 @@ void expect_rejected(const std::string& name, const std::string& content, const 
   fs::path csv = dir / (name + ".csv");
   write_text(csv, content);
   fs::path out = dir / "out";
-  RunResult r = run_pdrt("analyze '" + csv.string() + "' --no-plots --out '" + out.string() + "'", dir);
-  EXPECT_EQ(r.code, 1) << r.err;
+  test::CliResult r = run_pdrt("analyze '" + csv.string() + "' --no-plots --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find(csv.string() + ":" + where), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(out / "stats.json"));
@@ -329,8 +295,8 @@ TEST(AnalyzeCli, WritesStatsJsonAndPlots) {
   fs::path csv = dir / "points.csv";
   write_text(csv, csv_of(random_points(1500, 2, 77), true, 0.01));
   fs::path out = dir / "out" / "nested";  // created if missing
-  RunResult r = run_pdrt("analyze '" + csv.string() + "' --periodic --quiet --out '" + out.string() + "'", dir);
-  ASSERT_EQ(r.code, 0) << r.err;
+  test::CliResult r = run_pdrt("analyze '" + csv.string() + "' --periodic --quiet --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   std::ifstream in(out / "stats.json");
   nlohmann::json s = nlohmann::json::parse(in);
@@ -363,8 +329,8 @@ TEST(AnalyzeCli, SeveralFilesAreRealizations) {
     write_text(csv, csv_of(random_points(500 + 10 * s, 3, 40 + s)));
     args += " '" + csv.string() + "'";
   }
-  RunResult r = run_pdrt(args + " --out '" + (dir / "out").string() + "'", dir);
-  ASSERT_EQ(r.code, 0) << r.err;
+  test::CliResult r = run_pdrt(args + " --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   std::ifstream in(dir / "out" / "stats.json");
   nlohmann::json s = nlohmann::json::parse(in);
   EXPECT_EQ(s["realizations"], 3);
@@ -390,8 +356,8 @@ TEST(AnalyzeCli, MismatchedDimsAreRejected) {
   write_text(a, "x0,x1\n0.1,0.2\n0.3,0.4\n");
   write_text(b, "x0,x1,x2\n0.1,0.2,0.3\n");
   fs::path out = dir / "out";
-  RunResult r = run_pdrt("analyze '" + a.string() + "' '" + b.string() + "' --no-plots --out '" + out.string() + "'", dir);
-  EXPECT_EQ(r.code, 1) << r.err;
+  test::CliResult r = run_pdrt("analyze '" + a.string() + "' '" + b.string() + "' --no-plots --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find(b.string() + ":1:"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(out / "stats.json"));
@@ -401,8 +367,8 @@ TEST(AnalyzeCli, BadResolutionIsAUsageError) {
   fs::path dir = scratch_dir("resolution");
   fs::path csv = dir / "p.csv";
   write_text(csv, "x0,x1\n0.1,0.2\n0.3,0.4\n");
-  RunResult r = run_pdrt("analyze '" + csv.string() + "' --resolution 33 --out '" + (dir / "out").string() + "'", dir);
-  EXPECT_EQ(r.code, 2) << r.err;
+  test::CliResult r = run_pdrt("analyze '" + csv.string() + "' --resolution 33 --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "stats.json"));
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,4 +95,63 @@ TEST(Spectra, JitterLiesBetweenRandomAndDartAtLowFrequency) {
   double dart = band_power(spectrum_of("dart"), 0.1, 0.5);
   EXPECT_LT(to_db(jitter), to_db(random) - 3.0) << "jitter " << jitter << " random " << random;
   EXPECT_GT(to_db(jitter), to_db(dart) + 1.0) << "jitter " << jitter << " dart " << dart;
+}
+
+namespace {
+
+// Mean power on the ring of the spectral peak (normalised frequency 0.9..1.2) within
+// ±`half_width_deg` of the given angles, over the mean of the whole ring.
+double sector_ratio(const Periodogram& pg, std::vector<double> angles_deg, double half_width_deg) {
+  const double unit = std::sqrt(pg.mean_count);
+  const int h = pg.resolution / 2;
+  double ring = 0.0, sector = 0.0;
+  int n_ring = 0, n_sector = 0;
+  for (int ky = -h; ky < h; ++ky)
+    for (int kx = -h; kx < h; ++kx) {
+      double f = std::hypot(double(kx), double(ky)) / unit;
+      if (f < 0.9 || f >= 1.2) continue;
+      double p = pg.at(kx, ky);
+      ring += p, ++n_ring;
+      double a = std::atan2(double(ky), double(kx)) * 180.0 / M_PI;
+      for (double c : angles_deg) {
+        double d = std::remainder(a - c, 360.0);
+        if (std::abs(d) <= half_width_deg) {
+          sector += p, ++n_sector;
+          break;
+        }
+      }
+    }
+  return (sector / n_sector) / (ring / n_ring);
+}
+
+Periodogram mccool_periodogram(std::optional<int64_t> attempts) {
+  std::vector<PointSet> sets;
+  for (int s = 0; s < kRealizations; ++s) {
+    GeneratorParams p;
+    p.method = "mccool";
+    p.count = kCount;
+    p.seed = 2000 + uint64_t(s);
+    p.periodic = true;
+    p.attempts = attempts;
+    sets.push_back(generate(p));
+  }
+  return compute_periodogram(sets, default_periodogram_resolution(2, double(kCount)));
+}
+
+}  // namespace
+
+TEST(Spectra, McCoolRingHasNoSquareLatticePeaks) {
+  // Filling every radius step completely (an unlimited miss budget) grows a square lattice
+  // whose peaks sit on the axes and diagonals of the ring. The default budget must keep the
+  // ring even: those sectors within 1.5x (1.8 dB) of the ring mean.
+  double ratio = sector_ratio(mccool_periodogram(std::nullopt), {0, 45, 90, 135, 180, 225, 270, 315}, 4.0);
+  RecordProperty("sector_ratio", std::to_string(ratio));
+  EXPECT_LT(ratio, 1.5);
+}
+
+TEST(Spectra, SectorRatioDetectsTheLatticeOfUnlimitedBudget) {
+  // The detector itself: the saturating variant must show the peaks.
+  double ratio = sector_ratio(mccool_periodogram(int64_t(1) << 40), {0, 45, 90, 135, 180, 225, 270, 315}, 4.0);
+  RecordProperty("sector_ratio", std::to_string(ratio));
+  EXPECT_GT(ratio, 1.5);
 }

@@ -1,0 +1,50 @@
+// Sampler registry and the shared stream hash.
+#include "sampler.h"
+
+#include "errors.h"
+#include "rng.h"
+
+#include <limits>
+
+namespace pdrt {
+
+std::unique_ptr<Sampler> make_random_sampler(uint64_t seed);
+std::unique_ptr<Sampler> make_jitter_sampler(uint64_t seed);
+std::unique_ptr<Sampler> make_sobol_sampler(uint64_t seed);
+
+const char* family_name(Family f) {
+  switch (f) {
+    case Family::Pixel: return "pixel";
+    case Family::Lens: return "lens";
+    case Family::Time: return "time";
+    case Family::Light: return "light";
+    default: return "gloss";
+  }
+}
+
+int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
+
+const std::vector<std::string>& sampler_names() {
+  static const std::vector<std::string> names = {"random", "jitter", "sobol"};
+  return names;
+}
+
+std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
+  if (name == "random") return make_random_sampler(seed);
+  if (name == "jitter") return make_jitter_sampler(seed);
+  if (name == "sobol") return make_sobol_sampler(seed);
+  std::string known;
+  for (const auto& n : sampler_names()) {
+    if (!known.empty()) known += ", ";
+    known += n;
+  }
+  throw UsageError("sampler: unknown sampler '" + name + "' (known: " + known + ")");
+}
+
+uint64_t sample_stream(uint64_t seed, int px, int py, Family family, int bounce) {
+  uint64_t h = mix64(seed ^ 0x70647274ull);
+  h = hash_combine(h, (uint64_t(uint32_t(px)) << 32) | uint32_t(py));
+  return hash_combine(h, (uint64_t(uint8_t(family)) << 32) | uint32_t(bounce));
+}
+
+}  // namespace pdrt

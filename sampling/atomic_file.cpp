@@ -13,7 +13,11 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path temp_beside(const fs::path& path) {
-  return path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  std::string name = ".";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + string
+  name += path.filename().string();
+  name += ".tmp";
+  name += std::to_string(::getpid());
+  return path.parent_path() / name;
 }
 fs::path dir_of(const fs::path& path) { return path.parent_path().empty() ? fs::path(".") : path.parent_path(); }
 }  // namespace

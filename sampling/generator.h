@@ -29,7 +29,7 @@ struct GeneratorParams {
   // candidates per placed point m (1); lloyd: Monte Carlo probes per site (64).
   std::optional<int64_t> attempts;
   std::optional<double> decay;          // mccool: radius multiplier per step, in (0,1) (0.97)
-  std::optional<double> magnification;  // mccool: extra missed darts allowed per placed point (32)
+  std::optional<double> magnification;  // mccool: extra missed darts allowed per placed point (128)
   std::optional<double> start_radius;  // mccool: initial radius (the domain's diameter)
   int lloyd_iterations = 10;            // lloyd
   bool quiet = true;                    // generators may report progress on stderr when false
@@ -56,6 +56,9 @@ PointSet generate(const GeneratorParams& p);
 // Densest-packing minimum distance for n points in the unit cube of `dim` dimensions
 // (2-D hexagonal), from Gamito–Maddock Eq. (5) with pdrt's radius = 2r.
 double max_packing_distance(int64_t n, int dim);
+
+// Densest known sphere packing density per dimension (Conway & Sloane; 2-D hexagonal, 1-D 1).
+double densest_packing_density(int dim);
 
 // Gamito–Maddock Table I average packing density of a maximal set (periodic), per dimension.
 double maximal_packing_density(int dim);

@@ -31,7 +31,7 @@ class Relaxation {
   Relaxation(const GeneratorParams& p)
       : p_(p), dim_(p.dim), n_(*p.count), grid_(p.dim, p.periodic, 1.0, std::size_t(*p.count)),
         rng_(p.seed, 0x6d63636f), attempts_(double(p.attempts.value_or(30))),
-        magnification_(p.magnification.value_or(32.0)) {
+        magnification_(p.magnification.value_or(128.0)) {
     ps_.dim = dim_;
     ps_.coords.reserve(std::size_t(n_) * dim_);
     ps_.radius.reserve(std::size_t(n_));
@@ -40,7 +40,7 @@ class Relaxation {
   PointSet run() {
     const double diameter = std::sqrt(double(dim_)) * (p_.periodic ? 0.5 : 1.0);
     const double decay = p_.decay.value_or(0.97);
-    double r = std::min(p_.start_radius.value_or(diameter), diameter);
+    double r = std::min(p_.start_radius.value_or(default_start_radius(decay)), diameter);
     while (done() == false) {
       fill(r);
       r *= decay;
@@ -50,6 +50,19 @@ class Relaxation {
 
  private:
   bool done() const { return int64_t(ps_.size()) >= n_; }
+
+  // Like the paper's 0.3 for 64 points: large enough that the first 16 points are spread at
+  // rho > 1 (a smaller start crowds the first prefixes), not so large that the first points
+  // lock into a lattice. It is then lowered by less than one decay step so that a radius
+  // step lands at 97% of the maximal-set radius for `count` (Gamito–Maddock Table I): the
+  // run then ends near a full step, where rho is highest, instead of just after one.
+  double default_start_radius(double decay) const {
+    const double first = 1.1 * max_packing_distance(16, dim_);
+    const double rho_end = 0.97 * std::pow(maximal_packing_density(dim_) / densest_packing_density(dim_), 1.0 / dim_);
+    double r = rho_end * max_packing_distance(n_, dim_);
+    while (r < first) r /= decay;
+    return r;
+  }
 
   void place(const double* x, double r) {
     grid_.insert(uint32_t(ps_.size()), x);

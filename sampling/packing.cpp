@@ -10,7 +10,14 @@ namespace {
 // Volume of the unit ball in `dim` dimensions: pi^(n/2) / Gamma(n/2 + 1).
 double unit_ball_volume(int dim) { return std::pow(std::numbers::pi, dim / 2.0) / std::tgamma(dim / 2.0 + 1.0); }
 
-// Densest known sphere packing density per dimension (Conway & Sloane); 1-D is a full line.
+// Diameter d (= pdrt radius) for which n balls of diameter d fill `density` of the unit cube.
+double distance_for_density(double n, int dim, double density) {
+  double r = std::pow(density / (n * unit_ball_volume(dim)), 1.0 / dim);
+  return 2.0 * r;
+}
+
+}  // namespace
+
 double densest_packing_density(int dim) {
   constexpr double pi = std::numbers::pi;
   switch (dim) {
@@ -24,14 +31,6 @@ double densest_packing_density(int dim) {
     default: return pi * pi * pi * pi / 384.0;
   }
 }
-
-// Diameter d (= pdrt radius) for which n balls of diameter d fill `density` of the unit cube.
-double distance_for_density(double n, int dim, double density) {
-  double r = std::pow(density / (n * unit_ball_volume(dim)), 1.0 / dim);
-  return 2.0 * r;
-}
-
-}  // namespace
 
 double max_packing_distance(int64_t n, int dim) { return distance_for_density(double(n), dim, densest_packing_density(dim)); }
 

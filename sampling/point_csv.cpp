@@ -67,7 +67,7 @@ PointSet read_point_csv(const std::filesystem::path& path) {
   bool has_radius = header.back() == "radius";
   int dim = int(header.size()) - (has_radius ? 1 : 0);
   for (int k = 0; k < dim; ++k)
-    if (header[k] != "x" + std::to_string(k))
+    if (header[k].size() < 2 || header[k][0] != 'x' || header[k].substr(1) != std::to_string(k))
       throw InputError(name + ":1: bad header column " + std::to_string(k + 1) + " '" + header[k] + "', expected 'x" +
                        std::to_string(k) + "'");
   if (dim < 1 || dim > kMaxDim)

@@ -2,6 +2,7 @@
 #include "sampler.h"
 
 #include "errors.h"
+#include "poisson_sampler.h"
 #include "rng.h"
 
 #include <limits>
@@ -25,7 +26,7 @@ const char* family_name(Family f) {
 int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
 
 const std::vector<std::string>& sampler_names() {
-  static const std::vector<std::string> names = {"random", "jitter", "sobol"};
+  static const std::vector<std::string> names = {"random", "jitter", "poisson", "sobol"};
   return names;
 }
 
@@ -33,6 +34,7 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "random") return make_random_sampler(seed);
   if (name == "jitter") return make_jitter_sampler(seed);
   if (name == "sobol") return make_sobol_sampler(seed);
+  if (name == "poisson") return make_poisson_sampler(seed, default_tables());
   std::string known;
   for (const auto& n : sampler_names()) {
     if (!known.empty()) known += ", ";

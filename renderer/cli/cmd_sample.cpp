@@ -34,7 +34,7 @@ void add_sample_command(CLI::App& app) {
                   "(1); lloyd: Monte Carlo probes per point (64)");
   cmd->add_option("--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
   cmd->add_option("--magnification", o->p.magnification,
-                  "mccool: extra consecutive misses allowed per placed point (32)");
+                  "mccool: extra consecutive misses allowed per placed point (128)");
   cmd->add_option("--start-radius", o->p.start_radius, "mccool: initial radius");
   cmd->add_option("--iterations", o->p.lloyd_iterations, "lloyd: relaxation iterations")->default_val(10);
   cmd->add_option("--out,-o", o->out, "Output CSV file")->required();

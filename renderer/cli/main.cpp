@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string("pdrt: ") + e.what() + " (see --help)\n"; });
   pdrt::cli::add_sample_command(app);
   pdrt::cli::add_analyze_command(app);
+  pdrt::cli::add_tables_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

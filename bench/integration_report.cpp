@@ -1,0 +1,51 @@
+// Integration error report (issue 3): RMSE of every sampler on the standard 2-D integrands at
+// N = 16..4096, over 256 independent pixel streams, and the log-log slope of RMSE vs N.
+// Not a timed test: run ./build/bench/integration_report and read the tables it prints.
+#include "integration_error.h"
+#include "poisson_sampler.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+using namespace pdrt;
+
+int main() {
+  const int trials = 256;
+  const std::vector<int64_t> ns = {16, 64, 256, 1024, 4096};
+  struct Entry {
+    std::string label;
+    std::unique_ptr<Sampler> s;
+  };
+  std::vector<Entry> samplers;
+  for (const char* name : {"random", "jitter", "sobol"}) samplers.push_back({name, make_sampler(name, 1)});
+  samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
+  samplers.push_back({"poisson+shift", make_poisson_sampler(1, default_tables(), {.toroidal_shift = true})});
+  const int64_t table_len = default_tables().family[int(Family::Lens)]->params.points;
+  std::printf("Lens family, %d pixels per point; RMSE (slope of log RMSE vs log N over 16..1024)\n", trials);
+  std::printf("poisson beyond N = %lld continues in another table and is no longer one prefix.\n\n",
+              (long long)table_len);
+  for (const Integrand& f : standard_integrands()) {
+    std::printf("### %s (exact %.6f)\n\n| sampler |", f.name.c_str(), f.exact);
+    for (int64_t n : ns) std::printf(" N=%lld |", (long long)n);
+    std::printf(" slope |\n|---|");
+    for (std::size_t i = 0; i <= ns.size(); ++i) std::printf("---|");
+    std::printf("\n");
+    for (const Entry& e : samplers) {
+      std::printf("| %s |", e.label.c_str());
+      double sx = 0, sy = 0, sxx = 0, sxy = 0;
+      int m = 0;
+      for (int64_t n : ns) {
+        double r = integration_rmse(*e.s, f, n, trials);
+        std::printf(" %.3g |", r);
+        if (n <= 1024) {
+          double x = std::log(double(n)), y = std::log(r);
+          sx += x, sy += y, sxx += x * x, sxy += x * y, ++m;
+        }
+      }
+      std::printf(" %.2f |\n", (m * sxy - sx * sy) / (m * sxx - sx * sx));
+    }
+    std::printf("\n");
+  }
+}

@@ -1,0 +1,23 @@
+#pragma once
+// Integration error of a sampler on the standard 2-D test integrands (disk, triangle, step,
+// Gaussian, bilinear), the measure behind docs/sampling.md's sampler comparison. Each trial
+// is one pixel's sample stream of a family, so trials are independent streams of the sampler.
+#include "sampler.h"
+
+#include <string>
+#include <vector>
+
+namespace pdrt {
+
+struct Integrand {
+  std::string name;
+  double (*f)(Vec2);
+  double exact;
+};
+
+const std::vector<Integrand>& standard_integrands();
+
+// RMS error of the N-sample estimate over `trials` pixels (pixel (t mod 64, t / 64)).
+double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int trials, Family family = Family::Lens);
+
+}  // namespace pdrt

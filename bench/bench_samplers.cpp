@@ -1,0 +1,51 @@
+// Sampler lookup cost (issue 3 target: <= 10 ns per 2-D poisson sample on one core) and
+// default table generation time (<= 10 s on one core).
+#include "poisson_sampler.h"
+#include "sample_table.h"
+
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+namespace {
+
+void lookups(benchmark::State& state, const pdrt::Sampler& s, pdrt::Family f) {
+  int64_t i = 0;
+  double acc = 0;
+  for (auto _ : state) {
+    // Sweep pixels and indices the way a renderer does: a pixel's samples in order.
+    pdrt::Vec2 v = s.get_2d(int(i >> 6) & 255, int(i >> 14) & 255, i & 63, f, 0);
+    acc += v[0];
+    ++i;
+  }
+  benchmark::DoNotOptimize(acc);
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_PoissonLens(benchmark::State& state) {
+  auto s = pdrt::make_poisson_sampler(1, pdrt::default_tables());
+  lookups(state, *s, pdrt::Family::Lens);
+}
+BENCHMARK(BM_PoissonLens);
+
+void BM_PoissonPixel(benchmark::State& state) {
+  auto s = pdrt::make_poisson_sampler(1, pdrt::default_tables());
+  lookups(state, *s, pdrt::Family::Pixel);
+}
+BENCHMARK(BM_PoissonPixel);
+
+void BM_Sampler(benchmark::State& state, const char* name) {
+  auto s = pdrt::make_sampler(name, 1);
+  lookups(state, *s, pdrt::Family::Lens);
+}
+BENCHMARK_CAPTURE(BM_Sampler, random, "random");
+BENCHMARK_CAPTURE(BM_Sampler, jitter, "jitter");
+BENCHMARK_CAPTURE(BM_Sampler, sobol, "sobol");
+
+void BM_DefaultTablesOneCore(benchmark::State& state) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state)
+    for (const auto& p : pdrt::default_table_params()) benchmark::DoNotOptimize(pdrt::generate_table(p).coords.data());
+}
+BENCHMARK(BM_DefaultTablesOneCore)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace

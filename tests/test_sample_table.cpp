@@ -158,3 +158,37 @@ TEST(DefaultTables, FitInTheMemoryBudget) {
 
 }  // namespace
 }  // namespace pdrt
+
+namespace pdrt {
+namespace {
+
+TEST(AnalyzeTableCli, ReportsPrefixAndPixelQuality) {
+  auto dir = test::scratch_dir("analyze_table");
+  for (const char* family : {"lens", "pixel"}) {
+    auto out = dir / family;
+    auto r = test::run_pdrt(std::string("analyze --no-plots -q --table '") + PDRT_TABLE_DIR + "/" + family +
+                            ".pdrttbl' --out '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(out / "stats.json");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("\"table\""), std::string::npos);
+    EXPECT_NE(text.find(std::string(family) == "pixel" ? "pixel_prefix_rho_min" : "prefix_rho_min"), std::string::npos);
+  }
+}
+
+TEST(AnalyzeTableCli, RefusesCorruptTableWithoutOutput) {
+  auto dir = test::scratch_dir("analyze_bad_table");
+  {
+    std::ofstream bad(dir / "bad.pdrttbl");
+    bad << "PDRTTBL1 this is not a table";
+  }
+  auto r = test::run_pdrt("analyze --no-plots --table '" + (dir / "bad.pdrttbl").string() + "' --out '" +
+                          (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("bad.pdrttbl"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "stats.json"));
+}
+
+}  // namespace
+}  // namespace pdrt

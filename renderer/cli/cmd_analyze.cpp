@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "errors.h"
 #include "point_csv.h"
+#include "table_analysis.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 extern char** environ;
@@ -94,6 +96,7 @@ struct StagingDir {
 void add_analyze_command(CLI::App& app) {
   struct Opts {
     std::vector<std::string> files;
+    std::string table;
     bool periodic = false;
     int resolution = 0;
     bool quiet = false;
@@ -106,7 +109,12 @@ void add_analyze_command(CLI::App& app) {
       "Analyse point-set CSVs: min distance, relative radius rho (and per prefix), largest empty ball, chi-square "
       "uniformity, periodogram with radial power and anisotropy (McCool & Fiume 1992 §2). Several files are "
       "realizations whose spectra are averaged. Writes DIR/stats.json, DIR/periodogram.f32 and PNG plots.");
-  cmd->add_option("files", o->files, "Point CSV files (x0,x1,...[,radius]), all of one dim")->required();
+  auto* files = cmd->add_option("files", o->files, "Point CSV files (x0,x1,...[,radius]), all of one dim");
+  auto* table = cmd->add_option("--table", o->table,
+                                "A sample table file (pdrt tables): every table is a realization; adds rho per "
+                                "prefix and, for the pixel family, per pixel to stats.json under \"table\"");
+  files->excludes(table);
+  table->excludes(files);
   cmd->add_flag("--periodic", o->periodic, "Toroidal distances (for sets generated with --periodic)");
   cmd->add_option("--resolution", o->resolution,
                   "Periodogram grid size R (even; 2-D: 32..4096, 1-D: 64..16777216); default: the smallest power "
@@ -118,7 +126,17 @@ void add_analyze_command(CLI::App& app) {
     auto t0 = std::chrono::steady_clock::now();
     // 1. Validate everything before any expensive work or output.
     std::vector<PointSet> sets;
-    for (const auto& f : o->files) sets.push_back(read_point_csv(f));
+    std::optional<SampleTable> table;
+    if (!o->table.empty()) {
+      table = read_table(o->table);
+      sets = table_point_sets(*table);
+      o->periodic = true;  // tables are torus patterns
+      o->files.clear();
+      for (uint32_t k = 0; k < table->table_count(); ++k) o->files.push_back(o->table + "#" + std::to_string(k));
+    } else {
+      if (o->files.empty()) throw UsageError("analyze: give point CSV files or --table FILE");
+      for (const auto& f : o->files) sets.push_back(read_point_csv(f));
+    }
     check_same_dim(sets, o->files);
     AnalysisOptions opts;
     opts.periodic = o->periodic;
@@ -135,6 +153,7 @@ void add_analyze_command(CLI::App& app) {
 
     // 2. Compute.
     Analysis a = analyze_point_sets(sets, o->files, opts);
+    if (table) a.stats["table"] = table_quality(*table, sets);
     const Periodogram& pg = a.periodogram;
     a.stats["spectrum"]["periodogram_file"] = "periodogram.f32";
     a.stats["spectrum"]["periodogram_layout"] =

@@ -34,6 +34,9 @@ void inverse_symmetry_pixel(unsigned sym, int P, int& a, int& b) {
   if (sym & 1) std::swap(a, b);
 }
 
+// Table index from the top hash bits by multiply-shift (no division in the lookup path).
+uint32_t pick(uint64_t h, uint32_t n) { return uint32_t(((h >> 32) * uint64_t(n)) >> 32); }
+
 double unit_clamp(double x) { return x < 0.0 ? 0.0 : x < 1.0 ? x : kBelowOne; }
 
 int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
@@ -50,8 +53,8 @@ class PoissonSampler final : public Sampler {
     const uint32_t m = t.params.points;
     // Past the table's length, continue in another table (no longer one Poisson-disk prefix).
     if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
-    const uint32_t* c = &t.coords[h % t.table_count()][std::size_t(index) * 2];
-    Vec2 p = apply_symmetry({c[0] * kFixed, c[1] * kFixed}, unsigned(h >> 32) & 7u, 1.0);
+    const uint32_t* c = &t.coords[pick(h, t.table_count())][std::size_t(index) * 2];
+    Vec2 p = apply_symmetry({c[0] * kFixed, c[1] * kFixed}, unsigned(h) & 7u, 1.0);
     if (opt_.toroidal_shift) {
       uint64_t s = mix64(h);
       p[0] += double(s >> 40) * 0x1.0p-24;
@@ -68,8 +71,8 @@ class PoissonSampler final : public Sampler {
     uint64_t h = sample_stream(seed_, px, py, f, bounce);
     const uint32_t m = t.params.points;
     if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
-    double x = t.coords[h % t.table_count()][std::size_t(index)] * kFixed;
-    if ((h >> 32) & 1) x = 1.0 - x;  // the 1-D symmetry
+    double x = t.coords[pick(h, t.table_count())][std::size_t(index)] * kFixed;
+    if (h & 1) x = 1.0 - x;  // the 1-D symmetry
     if (opt_.toroidal_shift) x += double(mix64(h) >> 40) * 0x1.0p-24, x -= std::floor(x);
     return unit_clamp(x);
   }
@@ -93,8 +96,8 @@ class PoissonSampler final : public Sampler {
               unsigned& sym) const {
     int tx = floor_div(px, P), ty = floor_div(py, P);
     uint64_t h = sample_stream(seed_, tx, ty, Family::Pixel, bounce);
-    k = uint32_t(h % t.table_count());
-    sym = unsigned(h >> 32) & 7u;
+    k = pick(h, t.table_count());
+    sym = unsigned(h) & 7u;
     a = px - tx * P, b = py - ty * P;
     int oa = a, ob = b;
     inverse_symmetry_pixel(sym, P, oa, ob);

@@ -51,10 +51,11 @@ double maximal_packing_density(int dim) {
 
 double radius_for_count(int64_t n_wanted, int dim, bool periodic) {
   double n = double(n_wanted);
-  if (!periodic && dim >= 2 && dim <= 4) {
-    // Eq. (7): N' = N + alpha N^(beta+1); solve for N given N' (Table II).
-    static constexpr double alpha[] = {1.0997, 2.2119, 4.1114};
-    static constexpr double beta[] = {-0.4999, -0.3538, -0.3056};
+  if (!periodic && dim >= 2 && dim <= 5) {
+    // Eq. (7): N' = N + alpha N^(beta+1); solve for N given N' (Table II for 2-D..4-D; 5-D:
+    // beta extrapolated from Table II's trend, alpha fitted by pdrt to gamito at N = 2000).
+    static constexpr double alpha[] = {1.0997, 2.2119, 4.1114, 7.2};
+    static constexpr double beta[] = {-0.4999, -0.3538, -0.3056, -0.28};
     double a = alpha[dim - 2], b = beta[dim - 2], target = n, x = 1.0;
     for (int it = 0; it < 100; ++it) {
       double f = x + a * std::pow(x, b + 1.0) - target;

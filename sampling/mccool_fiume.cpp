@@ -74,11 +74,16 @@ class Relaxation {
   // McCool §4: consecutive misses allowed at one radius, growing with the points placed.
   double budget() const { return attempts_ + magnification_ * double(ps_.size()); }
 
-  // Uniform darts thrown up to and including the first inside a region of volume v.
-  double darts_to_hit(double v) {
+  // Uniform darts thrown up to and including the first inside `cells` cells of volume
+  // `cell_volume` (geometric). log(1 - v) is cached: the cell count changes far less often
+  // than darts are thrown.
+  double darts_to_hit(std::size_t cells, double cell_volume) {
+    double v = double(cells) * cell_volume;
     if (v >= 1.0) return 1.0;
+    if (cells != log_cells_ || cell_volume != log_volume_)
+      log_cells_ = cells, log_volume_ = cell_volume, log_miss_ = std::log1p(-v);
     double u = 1.0 - rng_.uniform();  // (0, 1]
-    return 1.0 + std::floor(std::log(u) / std::log1p(-v));
+    return 1.0 + std::floor(std::log(u) / log_miss_);
   }
 
   // Adds points at minimum distance r until the domain is full (or count is reached).
@@ -127,9 +132,10 @@ class Relaxation {
     const int levels = fine ? 7 : (dim_ == 3 ? 2 : 1);
     for (int level = 0; level < levels && !active.empty() && !done(); ++level) {
       double x[kMaxDim];
+      const double cell_volume = std::pow(side, dim_);
       // Refine once the darts missed about twice per cell at this level.
       for (int64_t fails = 0; !active.empty() && !done() && fails < 2 * int64_t(active.size());) {
-        misses_ += darts_to_hit(double(active.size()) * std::pow(side, dim_)) - 1;
+        misses_ += darts_to_hit(active.size(), cell_volume) - 1;
         if (misses_ >= budget()) return;  // McCool §4: no space found in time, shrink the radius
         std::size_t a = rng_.below(active.size());
         for (int k = 0; k < dim_; ++k) x[k] = (active[a].idx[k] + rng_.uniform()) * side;
@@ -193,6 +199,8 @@ class Relaxation {
   PointSet ps_;
   double attempts_, magnification_;
   double misses_ = 0;      // consecutive missed darts at the current radius
+  std::size_t log_cells_ = 0;
+  double log_volume_ = 0.0, log_miss_ = 0.0;  // darts_to_hit's cache of log(1 - v)
   std::size_t hint_ = 0;  // index of the point that covered the last cell
 };
 

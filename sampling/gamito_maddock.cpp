@@ -15,6 +15,7 @@
 // Volumes are exact integers: a cell at level l has volume 2^(n (24 - l)) units, so the
 // sums never round and one random integer below the root volume picks a leaf with
 // probability proportional to its volume, i.e. uniformly over the space left (Appendix A).
+#include "distance.h"
 #include "generator.h"
 #include "rng.h"
 
@@ -30,16 +31,6 @@ namespace {
 
 // §4: maximum subdivision level l_MAX; a leaf this deep is dropped when a sample in it fails.
 constexpr int kMaxLevel = 24;
-
-// Signed a - b, wrapped to the nearest periodic image (coordinates in [0,1]).
-inline double wrap_delta(double a, double b, bool periodic) {
-  double t = a - b;
-  if (periodic) {
-    if (t > 0.5) t -= 1.0;
-    else if (t < -0.5) t += 1.0;
-  }
-  return t;
-}
 
 // Accepted samples bucketed on a uniform grid, coordinates stored in the cells so a range
 // query reads a few contiguous rows. Up to 2-D the cells are at most d / sqrt(n) wide and so
@@ -420,7 +411,7 @@ class GamitoSampler {
   Overlap classify(const uint32_t* cell, int level, const double* s) const {
     double w = width_[level], h = 0.5 * w, near2 = 0.0, far2 = 0.0;
     for (int k = 0; k < N; ++k) {
-      double a = std::abs(wrap_delta(s[k], (double(cell[k]) + 0.5) * w, periodic_));
+      double a = std::abs(axis_delta(s[k], (double(cell[k]) + 0.5) * w, periodic_));
       if (a > h) {
         near2 += (a - h) * (a - h);
         if (near2 > out2_) return Overlap::Out;
@@ -587,7 +578,7 @@ class GamitoSampler {
       axis_[k].resize(std::size_t(span[k]));
       for (int i = 0; i < span[k]; ++i) {
         int c = ((lo + i) % res_ + res_) % res_;  // d may exceed the cube when periodic
-        double a = std::abs(wrap_delta(s[k], (double(c) + 0.5) * w, periodic_));
+        double a = std::abs(axis_delta(s[k], (double(c) + 0.5) * w, periodic_));
         AxisTerm& t = axis_[k][std::size_t(i)];
         t.near = a > h ? (a - h) * (a - h) : 0.0;
         t.far = (a + h) * (a + h);

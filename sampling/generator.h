@@ -30,7 +30,7 @@ struct GeneratorParams {
   std::optional<int64_t> attempts;
   std::optional<double> decay;          // mccool: radius multiplier per step, in (0,1) (0.97)
   std::optional<double> magnification;  // mccool: extra missed darts allowed per placed point (128)
-  std::optional<double> start_radius;  // mccool: initial radius (the domain's diameter)
+  std::optional<double> start_radius;   // mccool: initial radius (default: see mccool_fiume.cpp)
   int lloyd_iterations = 10;            // lloyd
   bool quiet = true;                    // generators may report progress on stderr when false
 };

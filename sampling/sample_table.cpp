@@ -4,6 +4,7 @@
 #include "atomic_file.h"
 #include "errors.h"
 #include "generator.h"
+#include "progress.h"
 #include "rng.h"
 
 #include <tbb/parallel_for.h>
@@ -79,7 +80,7 @@ std::size_t SampleTable::memory_bytes() const {
   return b;
 }
 
-SampleTable generate_table(const TableParams& p) {
+SampleTable generate_table(const TableParams& p, Progress* progress) {
   if (p.tables < 1 || p.points < 1) throw UsageError("tables: table count and points must be >= 1");
   if (p.family == Family::Pixel && p.tile < 1) throw UsageError("tables: pixel tile must be >= 1");
   SampleTable t;
@@ -99,6 +100,7 @@ SampleTable generate_table(const TableParams& p) {
       t.coords[k].resize(ps.coords.size());
       for (std::size_t i = 0; i < ps.coords.size(); ++i) t.coords[k][i] = to_fixed(ps.coords[i]);
       t.radius[k].assign(ps.radius.begin(), ps.radius.end());
+      if (progress) progress->advance();
       return;
     }
     // Poisson-disk counts per pixel vary only a little; grow the pattern until every pixel
@@ -112,6 +114,7 @@ SampleTable generate_table(const TableParams& p) {
       if (min_count[k] >= p.points) break;
       total *= 1.05;
     }
+    if (progress) progress->advance();
   });
   t.per_pixel_min = p.family == Family::Pixel ? *std::min_element(min_count.begin(), min_count.end()) : p.points;
   return t;

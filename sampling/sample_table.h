@@ -48,8 +48,11 @@ struct SampleTable {
   std::size_t memory_bytes() const;
 };
 
-// Generates a table family; throws UsageError for impossible parameters.
-SampleTable generate_table(const TableParams& params);
+class Progress;
+
+// Generates a table family; throws UsageError for impossible parameters. `progress`, when
+// given, advances by one per finished table.
+SampleTable generate_table(const TableParams& params, Progress* progress = nullptr);
 
 void write_table(const std::filesystem::path& path, const SampleTable& table);
 

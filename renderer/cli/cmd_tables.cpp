@@ -2,6 +2,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "errors.h"
+#include "progress.h"
 #include "sample_table.h"
 
 #include <chrono>
@@ -31,12 +32,16 @@ void add_tables_command(CLI::App& app) {
       p.seed = o->seed;
       check_writable(dir / table_file_name(p.family));
     }
+    double total = 0;
+    for (const TableParams& p : default_table_params()) total += p.tables;
+    Progress progress("pdrt tables", total, o->quiet);
     for (TableParams p : default_table_params()) {
       p.seed = o->seed;
       auto t0 = std::chrono::steady_clock::now();
-      SampleTable t = generate_table(p);
+      SampleTable t = generate_table(p, &progress);
       write_table(dir / table_file_name(p.family), t);
       double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      progress.clear_line();
       if (!o->quiet)
         std::fprintf(stderr, "pdrt tables: %-5s %u tables x %u points%s, %.2f MiB, %.2f s\n", family_name(p.family),
                      t.table_count(), p.points,

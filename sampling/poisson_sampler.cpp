@@ -49,7 +49,7 @@ class PoissonSampler final : public Sampler {
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (f == Family::Pixel) return pixel_sample(px, py, index, bounce);
     const SampleTable& t = *tables_.family[int(f)];
-    uint64_t h = sample_stream(seed_, px, py, f, bounce);
+    uint64_t h = stream(px, py, f, bounce);
     const uint32_t m = t.params.points;
     // Past the table's length, continue in another table (no longer one Poisson-disk prefix).
     if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
@@ -68,7 +68,7 @@ class PoissonSampler final : public Sampler {
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (f != Family::Time) return get_2d(px, py, index, f, bounce)[0];
     const SampleTable& t = *tables_.family[int(f)];
-    uint64_t h = sample_stream(seed_, px, py, f, bounce);
+    uint64_t h = stream(px, py, f, bounce);
     const uint32_t m = t.params.points;
     if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
     double x = t.coords[pick(h, t.table_count())][std::size_t(index)] * kFixed;
@@ -95,7 +95,7 @@ class PoissonSampler final : public Sampler {
   void locate(int px, int py, int bounce, const SampleTable& t, int P, int& a, int& b, uint32_t& k, uint32_t& cell,
               unsigned& sym) const {
     int tx = floor_div(px, P), ty = floor_div(py, P);
-    uint64_t h = sample_stream(seed_, tx, ty, Family::Pixel, bounce);
+    uint64_t h = stream(tx, ty, Family::Pixel, bounce);
     k = pick(h, t.table_count());
     sym = unsigned(h) & 7u;
     a = px - tx * P, b = py - ty * P;

@@ -13,10 +13,10 @@ class RandomSampler final : public Sampler {
   explicit RandomSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "random"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
-    return to_unit(hash_combine(sample_stream(seed_, px, py, f, bounce), uint64_t(index)));
+    return to_unit(hash_combine(stream(px, py, f, bounce), uint64_t(index)));
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
-    uint64_t h = hash_combine(sample_stream(seed_, px, py, f, bounce), uint64_t(index));
+    uint64_t h = hash_combine(stream(px, py, f, bounce), uint64_t(index));
     return {to_unit(h), to_unit(mix64(h))};
   }
 };

@@ -43,13 +43,14 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   throw UsageError("sampler: unknown sampler '" + name + "' (known: " + known + ")");
 }
 
-uint64_t sample_stream(uint64_t seed, int px, int py, Family family, int bounce) {
+uint64_t sample_seed_hash(uint64_t seed) { return mix64(seed ^ 0x70647274ull); }
+
+uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce) {
   // One finaliser over odd-constant multiples of the coordinates: distinct inputs differ in
-  // the low bits of at least one product, and mix64 spreads that over all 64 bits. Two
-  // finalisers in all keep this cheap (it runs for every sample).
+  // the low bits of at least one product, and mix64 spreads that over all 64 bits.
   uint64_t k = uint64_t(uint32_t(px)) * 0x9e3779b97f4a7c15ull ^ uint64_t(uint32_t(py)) * 0xc2b2ae3d27d4eb4full ^
                (uint64_t(uint8_t(family)) << 56) ^ (uint64_t(uint32_t(bounce)) << 40);
-  return mix64(mix64(seed ^ 0x70647274ull) ^ k);
+  return mix64(seed_hash ^ k);
 }
 
 }  // namespace pdrt

@@ -18,6 +18,11 @@ const char* family_name(Family f);
 
 using Vec2 = std::array<double, 2>;
 
+// Hash of a sample's coordinates: the per-(pixel, family, bounce) stream every sampler uses,
+// in two steps so samplers mix their seed once.
+uint64_t sample_seed_hash(uint64_t seed);
+uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce);
+
 class Sampler {
  public:
   virtual ~Sampler() = default;
@@ -34,8 +39,13 @@ class Sampler {
   virtual int64_t samples_available(int px, int py) const;
 
  protected:
-  explicit Sampler(uint64_t seed) : seed_(seed) {}
+  explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_seed_hash(seed)) {}
+  // The hash of (pixel, family, bounce) every value of that stream derives from.
+  uint64_t stream(int px, int py, Family family, int bounce) const {
+    return sample_stream_from_hash(seed_hash_, px, py, family, bounce);
+  }
   uint64_t seed_;
+  uint64_t seed_hash_;  // mixed once here, not per sample
 };
 
 // pbrt-v4's interface on top of the pure functions: one per thread.
@@ -58,7 +68,6 @@ const std::vector<std::string>& sampler_names();
 // Throws UsageError naming the sampler for an unknown name.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed);
 
-// Hash of a sample's coordinates: the per-(pixel, family, bounce) stream every sampler uses.
-uint64_t sample_stream(uint64_t seed, int px, int py, Family family, int bounce);
+
 
 }  // namespace pdrt

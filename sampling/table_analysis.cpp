@@ -22,8 +22,8 @@ std::vector<PointSet> table_point_sets(const SampleTable& t) {
       ps.radius.assign(t.radius[k].begin(), t.radius[k].end());
       continue;
     }
-    // Pixel tables are stored per pixel; restore the tile's global rank order is not stored,
-    // so the set is in pixel order (spectra and min distance do not depend on order).
+    // Pixel tables are stored per pixel and the tile's global rank order is not kept, so the
+    // set comes out in pixel order (spectra and min distance do not depend on order).
     const uint32_t tile = t.params.tile;
     for (uint32_t cell = 0; cell < tile * tile; ++cell)
       for (uint32_t j = 0; j < t.cell_count[k][cell]; ++j) {

@@ -14,4 +14,9 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The user interrupted (Ctrl-C) after partial output was written: exit 130.
+struct InterruptedError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace pdrt

@@ -8,5 +8,6 @@ namespace pdrt::cli {
 void add_sample_command(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 void add_tables_command(CLI::App& app);
+void add_render_command(CLI::App& app);
 
 }  // namespace pdrt::cli

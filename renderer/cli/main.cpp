@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   } catch (const pdrt::UsageError& e) {
     std::fprintf(stderr, "pdrt: %s\n", e.what());
     return 2;
+  } catch (const pdrt::InterruptedError& e) {
+    std::fprintf(stderr, "pdrt: %s\n", e.what());
+    return 130;
   } catch (const pdrt::InputError& e) {
     std::fprintf(stderr, "pdrt: %s\n", e.what());
     return 1;

@@ -95,6 +95,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   Film film(desc.film.width, desc.film.height);
   PixelRenderer pr{camera, integrator, filter, sampler, desc.sampler.spp, desc.film.filter.rank_selection};
 
+  const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int tx = (desc.film.width + kTile - 1) / kTile, ty = (desc.film.height + kTile - 1) / kTile;
   tbb::enumerable_thread_specific<int64_t> rays(0);
   std::atomic<int> tiles_done{0};
@@ -120,6 +121,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   RenderResult res;
   res.image = film.image(desc.film.exposure);
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.stats.build_seconds = build_seconds;
   for (int64_t r : rays) res.stats.rays += r;
   for (float s : res.image.samples) res.stats.samples += int64_t(s);
   res.stats.spp_mean = double(res.stats.samples) / (double(desc.film.width) * desc.film.height);

@@ -19,7 +19,8 @@ struct RenderOptions {
 };
 
 struct RenderStats {
-  double seconds = 0;
+  double seconds = 0;          // total: scene build + rendering
+  double build_seconds = 0;    // Embree BVH build, lights, camera
   int64_t rays = 0;        // extension + shadow rays
   int64_t samples = 0;     // camera samples traced
   double spp_mean = 0;

@@ -1,5 +1,6 @@
 #include "film.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,7 +17,19 @@ void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n
   normal[0] += a * n.x, normal[1] += a * n.y, normal[2] += a * n.z;
   abs_w += a;
   if (std::isfinite(z)) depth += a * z, depth_w += a;
+  for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], L[k]), hi[k] = std::max(hi[k], L[k]);
   ++samples;
+}
+
+double PixelAccum::relative_error(double floor) const {
+  if (samples < 2 || w == 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(variance_of_mean()) / std::max(std::abs(lum / w), floor);
+}
+
+double PixelAccum::contrast(int k) const {
+  if (samples < 2) return std::numeric_limits<double>::infinity();
+  double s = double(hi[k]) + double(lo[k]);
+  return s > 0 ? (double(hi[k]) - double(lo[k])) / s : 0.0;
 }
 
 Vec3 PixelAccum::value() const {

@@ -17,10 +17,16 @@ struct PixelAccum {
   double abs_w = 0;              // sum |w|: AOV weights (filter weights may be negative: Mitchell)
   double depth_w = 0;            // sum |w| over samples that hit something
   int64_t samples = 0;           // samples traced for this pixel
+  int64_t prefix = 0;            // sample indices consumed (>= samples: rank selection skips some)
+  float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
 
   void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z);
   Vec3 value() const;            // normalised weighted mean (Cook §4.2)
   double variance_of_mean() const;  // of the luminance
+  // Relative standard error of the mean luminance, sqrt(var of mean) / max(mean, floor).
+  double relative_error(double floor = 1e-3) const;
+  // Mitchell (1987) contrast (max - min) / (max + min) of the samples, per channel.
+  double contrast(int channel) const;
 };
 
 // The finished image: linear RGB plus AOV planes, row-major from the top-left.

@@ -74,6 +74,7 @@ struct PixelRenderer {
       acc.add(L, w, pr.albedo, pr.normal, pr.depth);
       rays += pr.rays;
     }
+    acc.prefix = end;
     return rays;
   }
 };
@@ -93,29 +94,89 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);
   Film film(desc.film.width, desc.film.height);
-  PixelRenderer pr{camera, integrator, filter, sampler, desc.sampler.spp, desc.film.filter.rank_selection};
+  // Rank selection ranks against the full sample budget of a pixel (max_spp when adaptive).
+  const int rank_n = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
+  PixelRenderer pr{camera, integrator, filter, sampler, rank_n, desc.film.filter.rank_selection};
 
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const int tx = (desc.film.width + kTile - 1) / kTile, ty = (desc.film.height + kTile - 1) / kTile;
+  const int W = desc.film.width, H = desc.film.height;
+  const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
   tbb::enumerable_thread_specific<int64_t> rays(0);
-  std::atomic<int> tiles_done{0};
-  std::atomic<bool> stopped{false};
-  Progress progress("render", double(tx) * ty, opt.quiet);
-  tbb::parallel_for(tbb::blocked_range<int>(0, tx * ty, 1), [&](const tbb::blocked_range<int>& r) {
-    for (int t = r.begin(); t != r.end(); ++t) {
-      if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
-        stopped = true;
-        return;
+  bool stopped = false;
+
+  // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
+  auto pass = [&](const char* label, auto&& end_of) {
+    std::atomic<bool> cancelled{false};
+    Progress progress(label, double(tx) * ty, opt.quiet);
+    tbb::parallel_for(tbb::blocked_range<int>(0, tx * ty, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int t = r.begin(); t != r.end(); ++t) {
+        if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
+          cancelled = true;
+          return;
+        }
+        int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
+        int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
+        int64_t& local = rays.local();
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) {
+            PixelAccum& acc = film.at(x, y);
+            int64_t end = end_of(x, y);
+            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc);
+          }
+        progress.advance();
       }
-      int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
-      int x1 = std::min(x0 + kTile, desc.film.width), y1 = std::min(y0 + kTile, desc.film.height);
-      int64_t& local = rays.local();
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) local += pr.run(x, y, 0, desc.sampler.spp, film.at(x, y));
-      ++tiles_done;
-      progress.advance();
+    });
+    stopped = stopped || cancelled;
+    return !cancelled;
+  };
+
+  const AdaptiveDesc& ad = desc.sampler.adaptive;
+  int rounds = 0;
+  if (!ad.enabled) {
+    pass("render", [&](int, int) { return int64_t(desc.sampler.spp); });
+  } else if (pass("render (adaptive, round 0)", [&](int, int) { return int64_t(ad.min_spp); })) {
+    // McCool–Fiume §5.1 / Cook §6: refine by extending prefixes. A pixel whose error is above
+    // the threshold doubles its sample count; its 3x3 neighbours refine with it, so edges
+    // are not left blocky. Samples already taken are never moved or discarded.
+    const bool contrast = ad.metric == "contrast";
+    const double per_channel[3] = {ad.threshold, ad.threshold * 0.75, ad.threshold * 1.5};  // Mitchell 0.4/0.3/0.6
+    std::vector<uint8_t> bad(std::size_t(W) * H), active(std::size_t(W) * H);
+    for (;;) {
+      tbb::parallel_for(0, H, [&](int y) {
+        for (int x = 0; x < W; ++x) {
+          const PixelAccum& a = film.at(x, y);
+          bool b = false;
+          if (contrast) {
+            for (int k = 0; k < 3; ++k) b = b || a.contrast(k) > per_channel[k];
+          } else {
+            b = a.relative_error() > ad.threshold;
+          }
+          bad[std::size_t(y) * W + x] = b;
+        }
+      });
+      int64_t n_active = 0;
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          bool a = false;
+          for (int dy = -1; dy <= 1 && !a; ++dy)
+            for (int dx = -1; dx <= 1 && !a; ++dx) {
+              int xx = x + dx, yy = y + dy;
+              a = xx >= 0 && yy >= 0 && xx < W && yy < H && bad[std::size_t(yy) * W + xx];
+            }
+          a = a && film.at(x, y).prefix < ad.max_spp;
+          active[std::size_t(y) * W + x] = a;
+          n_active += a;
+        }
+      if (n_active == 0) break;
+      ++rounds;
+      std::string label = "render (adaptive, round " + std::to_string(rounds) + ")";
+      if (!pass(label.c_str(), [&](int x, int y) {
+            int64_t p = film.at(x, y).prefix;
+            return active[std::size_t(y) * W + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
+          }))
+        break;
     }
-  });
+  }
   device.check();
 
   RenderResult res;
@@ -125,7 +186,8 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   for (int64_t r : rays) res.stats.rays += r;
   for (float s : res.image.samples) res.stats.samples += int64_t(s);
   res.stats.spp_mean = double(res.stats.samples) / (double(desc.film.width) * desc.film.height);
-  res.stats.partial = stopped || tiles_done.load() < tx * ty;
+  res.stats.partial = stopped;
+  res.stats.adaptive_rounds = rounds;
   res.stats.triangles = scene.triangle_count();
   return res;
 }

@@ -25,6 +25,7 @@ struct RenderStats {
   int64_t samples = 0;     // camera samples traced
   double spp_mean = 0;
   bool partial = false;    // stopped before every pixel was done
+  int adaptive_rounds = 0; // refinement rounds after the first pass
   std::size_t triangles = 0;
 };
 

@@ -27,6 +27,7 @@ ThinLensCamera::ThinLensCamera(const CameraDesc& desc, int width, int height)
     : desc_(desc), width_(width), height_(height) {
   tan_half_ = std::tan(0.5f * desc.vfov_deg * kPi / 180.0f);
   aspect_ = float(width) / float(height);
+  if (desc_.focus_distance <= 0) desc_.focus_distance = length(desc.look_at - desc.position);
   static_pose_ = pose_at(0.0f);
 }
 

@@ -1,0 +1,74 @@
+// Adaptive refinement by prefix extension (McCool–Fiume §5.1, Cook §6).
+#include "render_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <map>
+
+using namespace pdrt;
+using namespace pdrt::test;
+
+namespace {
+
+// Left: a lit diffuse sphere (noisy); right: empty black background (noise-free).
+SceneDesc adaptive_scene(const char* metric, float threshold) {
+  SceneDesc s = base_scene(48, 32, 4);
+  s.camera.position = {0, 0, 6}, s.camera.look_at = {0, 0, 0}, s.camera.vfov_deg = 30;
+  s.shapes.push_back(sphere({-1.0f, 0, 0}, 0.9f, add_material(s, diffuse(0.7f))));
+  s.shapes.push_back(sphere({-1.0f, 3, 2}, 0.5f, add_material(s, emitter(8.0f))));
+  s.sampler.adaptive.enabled = true;
+  s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 64;
+  s.sampler.adaptive.metric = metric, s.sampler.adaptive.threshold = threshold;
+  return s;
+}
+
+}  // namespace
+
+TEST(Adaptive, SamplesGoWhereTheNoiseIs) {
+  RenderResult r = render_quietly(adaptive_scene("relative-error", 0.02f));
+  const Image& im = r.image;
+  double left = 0, right = 0;
+  int nl = 0, nr = 0;
+  for (int y = 0; y < im.height; ++y) {
+    for (int x = 14; x < 20; ++x) left += im.samples[y * im.width + x], ++nl;   // over the sphere
+    for (int x = 40; x < 48; ++x) right += im.samples[y * im.width + x], ++nr;  // empty background
+  }
+  EXPECT_DOUBLE_EQ(right / nr, 4.0) << "converged background keeps min_spp";
+  EXPECT_GT(left / nl, 16) << "the noisy sphere refines";
+  EXPECT_GT(r.stats.adaptive_rounds, 1);
+}
+
+// A pixel that ended with k samples holds exactly what a fixed render at k spp gives it:
+// refinement only appends to the prefix, in every family.
+TEST(Adaptive, RefinementOnlyExtendsPrefixes) {
+  SceneDesc s = adaptive_scene("relative-error", 0.02f);
+  s.camera.aperture_radius = 0.05f;  // the lens family must extend too
+  RenderResult a = render_quietly(s);
+  std::map<int, Image> fixed;
+  int checked = 0;
+  for (std::size_t i = 0; i < a.image.samples.size(); ++i) {
+    int k = int(a.image.samples[i]);
+    if (!fixed.count(k)) {
+      SceneDesc f = s;
+      f.sampler.adaptive.enabled = false;
+      f.sampler.spp = k;
+      fixed[k] = render_quietly(f).image;
+    }
+    ASSERT_EQ(0, std::memcmp(&a.image.rgb[3 * i], &fixed[k].rgb[3 * i], 3 * sizeof(float))) << "pixel " << i;
+    ++checked;
+  }
+  EXPECT_GE(fixed.size(), 3u) << "several sample counts occur";
+  EXPECT_EQ(checked, 48 * 32);
+}
+
+TEST(Adaptive, ContrastMetricRefinesEdgesAndIsDeterministicAcrossThreads) {
+  SceneDesc s = adaptive_scene("contrast", 0.4f);
+  RenderResult a = render_quietly(s, 1), b = render_quietly(s, 2);
+  ASSERT_EQ(0, std::memcmp(a.image.rgb.data(), b.image.rgb.data(), a.image.rgb.size() * sizeof(float)));
+  ASSERT_EQ(a.image.samples, b.image.samples);
+  double mx = 0, mn = 1e9;
+  for (float v : a.image.samples) mx = std::max<double>(mx, v), mn = std::min<double>(mn, v);
+  EXPECT_EQ(mn, 4);
+  EXPECT_EQ(mx, 64);
+}

@@ -75,6 +75,17 @@ void write_image(const std::filesystem::path& path, const Image& img, const Meta
   });
 }
 
+void write_display_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb) {
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  write_path_atomically(path, [&](const std::filesystem::path& tmp) {
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out || !out->open(tmp.string(), spec)) throw InputError(path.string() + ": cannot write PNG");
+    if (!out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
+      throw InputError(path.string() + ": " + out->geterror());
+  });
+}
+
 Image read_image_rgb(const std::filesystem::path& path) {
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());

@@ -18,6 +18,10 @@ void check_image_extension(const std::filesystem::path& path);
 
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata);
 
+// Writes an 8-bit PNG of values already in display space ([0,1], no transfer curve applied):
+// heat maps, crops, sample-count maps.
+void write_display_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb);
+
 // Reads the RGB channels of an image (linear for EXR/TIFF float, decoded sRGB for 8-bit).
 Image read_image_rgb(const std::filesystem::path& path);
 

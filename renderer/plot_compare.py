@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Plots and the HTML report of `pdrt compare`: reads DIR/results.json and writes
+rmse_vs_spp.png (log-log, fitted slopes), rmse_vs_time.png (equal-time view),
+error_spectra.png (radially averaged power of the error images) and index.html."""
+import html
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+COLORS = {"random": "#7f7f7f", "jitter": "#1f77b4", "poisson": "#d62728", "sobol": "#2ca02c"}
+
+
+def main(out):
+    with open(os.path.join(out, "results.json")) as f:
+        r = json.load(f)
+    runs = r["runs"]
+    samplers = r["samplers"]
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for s in samplers:
+        pts = sorted((u["spp"], u["rmse"]) for u in runs if u["sampler"] == s)
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=COLORS.get(s),
+                  label="%s (slope %.2f)" % (s, r["slopes"][s]))
+    ax.set_xlabel("samples per pixel")
+    ax.set_ylabel("RMSE vs reference")
+    ax.set_title("%s: convergence" % os.path.basename(r["scene"]))
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "rmse_vs_spp.png"), dpi=110)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for s in samplers:
+        pts = sorted((u["render_seconds"], u["rmse"]) for u in runs if u["sampler"] == s)
+        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=COLORS.get(s), label=s)
+    ax.set_xlabel("render time (s, excluding BVH build)")
+    ax.set_ylabel("RMSE vs reference")
+    ax.set_title("equal-time view")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "rmse_vs_time.png"), dpi=110)
+    plt.close(fig)
+
+    spps = r["spp"]
+    show = [spps[len(spps) // 2]] if len(spps) < 3 else [spps[1], spps[len(spps) // 2], spps[-1]]
+    fig, axes = plt.subplots(1, len(show), figsize=(5 * len(show), 4), squeeze=False)
+    for ax, n in zip(axes[0], show):
+        for s in samplers:
+            for u in runs:
+                if u["sampler"] == s and u["spp"] == n:
+                    fr, pw = u["spectrum"]["frequency"], u["spectrum"]["power"]
+                    ax.semilogy(fr, [max(p, 1e-30) for p in pw], color=COLORS.get(s), label=s, lw=1)
+        ax.set_title("error spectrum, %d spp" % n)
+        ax.set_xlabel("frequency (cycles / pixel)")
+        ax.set_ylabel("radially averaged power")
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "error_spectra.png"), dpi=110)
+    plt.close(fig)
+
+    write_html(out, r)
+
+
+def fmt(x):
+    return "n/a" if x is None or (isinstance(x, float) and math.isnan(x)) else "%.5f" % x
+
+
+def write_html(out, r):
+    e = html.escape
+    runs = r["runs"]
+    samplers, spps = r["samplers"], r["spp"]
+    p = []
+    p.append("<!doctype html><html><head><meta charset='utf-8'><title>pdrt compare: %s</title>" % e(r["scene"]))
+    p.append("<style>body{font-family:sans-serif;margin:1.5em;max-width:1400px}"
+             "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}"
+             "img{image-rendering:pixelated;max-width:100%}figure{display:inline-block;margin:4px;text-align:center}"
+             "figcaption{font-size:small}</style></head><body>")
+    p.append("<h1>pdrt compare: %s</h1>" % e(r["scene"]))
+    ref = r["reference"]
+    p.append("<p>%dx%d pixels, seed %s. Reference: %s at %d spp (seed %s%s).</p>" % (
+        r["width"], r["height"], r["seed"], e(ref["sampler"]), ref["spp"], ref["seed"],
+        ", cached" if ref["cached"] else ""))
+    p.append("<h2>Convergence</h2><img src='rmse_vs_spp.png'> <img src='rmse_vs_time.png'>")
+    p.append("<h3>RMSE at equal samples</h3><table><tr><th>spp</th>%s</tr>" %
+             "".join("<th>%s</th>" % e(s) for s in samplers))
+    for n in spps:
+        row = []
+        best = min(u["rmse"] for u in runs if u["spp"] == n)
+        for s in samplers:
+            u = [u for u in runs if u["spp"] == n and u["sampler"] == s][0]
+            b = "<b>%s</b>" if u["rmse"] == best else "%s"
+            row.append("<td>" + b % fmt(u["rmse"]) + "</td>")
+        p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(row)))
+    p.append("<tr><td>slope</td>%s</tr></table>" % "".join("<td>%.2f</td>" % r["slopes"][s] for s in samplers))
+    et = r["equal_time"]
+    if et["seconds"]:
+        p.append("<h3>RMSE at equal render time (log-log interpolation)</h3><table><tr><th>seconds</th>%s</tr>" %
+                 "".join("<th>%s</th>" % e(s) for s in samplers))
+        for i, t in enumerate(et["seconds"]):
+            p.append("<tr><td>%.3f</td>%s</tr>" % (t, "".join("<td>%s</td>" % fmt(et["rmse"][s][i]) for s in samplers)))
+        p.append("</table>")
+    p.append("<h2>Error spectra</h2><img src='error_spectra.png'>")
+    p.append("<h2>Crops (same region; last column: reference)</h2>")
+    for c in r["crops"]:
+        p.append("<figure><img src='%s'><figcaption>%d spp: %s | reference</figcaption></figure><br>" % (
+            e(c["file"]), c["spp"], " | ".join(e(s) for s in samplers)))
+    p.append("<h2>Images and error heat maps</h2><table><tr><th>spp</th>%s</tr>" %
+             "".join("<th>%s</th>" % e(s) for s in samplers))
+    for n in spps:
+        cells = []
+        for s in samplers:
+            u = [u for u in runs if u["spp"] == n and u["sampler"] == s][0]
+            cells.append("<td><img src='%s' width=200><br><img src='%s' width=200></td>" % (
+                e(u["image"]), e(u["error_map"])))
+        p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(cells)))
+    p.append("</table><p><img src='images/reference.png' width=300><br>reference</p>")
+    if r.get("adaptive"):
+        p.append("<h2>Adaptive refinement at equal total samples</h2><table><tr><th>sampler</th><th>metric</th>"
+                 "<th>threshold</th><th>mean spp</th><th>rounds</th><th>adaptive RMSE</th>"
+                 "<th>uniform RMSE at equal samples</th><th>image</th><th>sample counts</th></tr>")
+        for a in r["adaptive"]:
+            p.append("<tr><td>%s</td><td>%s</td><td>%g</td><td>%.1f</td><td>%d</td><td>%s</td><td>%s</td>"
+                     "<td><img src='%s' width=200></td><td><img src='%s' width=200></td></tr>" % (
+                         e(a["sampler"]), e(a["metric"]), a["threshold"], a["spp_mean"], a["rounds"], fmt(a["rmse"]),
+                         fmt(a["uniform_rmse_at_equal_samples"]), e(a["image"]), e(a["sample_map"])))
+        p.append("</table>")
+    p.append("<p>Numbers: <a href='results.json'>results.json</a>, <a href='results.csv'>results.csv</a>.</p>")
+    p.append("</body></html>")
+    tmp = os.path.join(out, "index.html.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(p))
+    os.replace(tmp, os.path.join(out, "index.html"))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

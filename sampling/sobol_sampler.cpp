@@ -25,18 +25,21 @@ uint32_t sobol_dim1(uint32_t i) {
   return x;
 }
 
-// Nested uniform scramble: bit b (from the top) flips by a hash of the bits above it, so
-// every elementary interval's sub-intervals are permuted independently (Owen 1995).
+uint32_t reverse_bits(uint32_t i) { return sobol_dim0(i); }
+
+// Hash-based Owen scramble (Burley 2020, after Laine & Karras 2011): in bit-reversed order,
+// adding a seed and xoring with products by even constants only lets a bit depend on the
+// bits below it, i.e. on the bits above it in the original order, which is exactly the
+// structure of a nested (Owen) scramble; four rounds make the flips look independent.
+// Two multiplies per round instead of one hash per bit.
 uint32_t owen_scramble(uint32_t x, uint64_t seed) {
-  uint32_t out = 0;
-  for (int b = 31; b >= 8; --b) {  // 24 bits: the precision of a float's mantissa
-    uint32_t prefix = b == 31 ? 0u : (x >> (b + 1));
-    uint64_t h = mix64(seed ^ (uint64_t(prefix) << 6) ^ uint64_t(31 - b));
-    out |= (((x >> b) & 1u) ^ uint32_t(h & 1u)) << b;
-  }
-  // Below float precision: random low bits so values are not on a 2^-24 lattice.
-  out |= uint32_t(mix64(seed ^ x) & 0xffu);
-  return out;
+  x = reverse_bits(x);
+  x += uint32_t(seed ^ (seed >> 32));
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return reverse_bits(x);
 }
 
 double to_unit(uint32_t bits) { return double(bits) * 0x1.0p-32; }

@@ -41,6 +41,7 @@ std::vector<std::string_view> split_ws(std::string_view line) {
 
 template <class T>
 bool parse_whole(std::string_view s, T& out) {
+  if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);  // from_chars rejects "+1", OBJ writers emit it
   auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && p == s.data() + s.size();
 }
@@ -114,6 +115,7 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         size_t s1 = t.find('/'), s2 = s1 == std::string_view::npos ? s1 : t.find('/', s1 + 1);
         std::string_view vpart = t.substr(0, s1);
         std::string_view npart = s2 == std::string_view::npos ? std::string_view() : t.substr(s2 + 1);
+        std::string_view tpart = s1 == std::string_view::npos ? std::string_view() : t.substr(s1 + 1, s2 - s1 - 1);
         auto check = [&](std::string_view part, long total, long seen, const char* what, const char* plural) {
           long idx = 0;
           if (!parse_whole(part, idx)) fail(at, "bad face vertex " + in_quotes(t));
@@ -125,6 +127,7 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         };
         check(vpart, total_v, seen_v, "", "vertices");
         if (!npart.empty()) check(npart, total_vn, seen_vn, "normal ", "normals");
+        if (long ti = 0; !tpart.empty() && (!parse_whole(tpart, ti) || ti == 0)) fail(at, "bad face vertex " + in_quotes(t));
       }
     } else if (kw == "mtllib") {
       size_t start = lines[li].find("mtllib") + 6;

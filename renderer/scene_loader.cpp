@@ -172,7 +172,7 @@ class Node {
 class Object {
  public:
   explicit Object(Node n) : node_(std::move(n)) {
-    if (!node_.value().is_object()) node_.fail_got("must be an object");
+    if (!node_.value().is_object()) node_.fail_got(node_.path().empty() ? "the scene must be a JSON object" : "must be an object");
   }
   const Node& node() const { return node_; }
   bool has(const std::string& key) const { return node_.value().contains(key); }

@@ -20,6 +20,7 @@ namespace {
 
 const fs::path kData = fs::path(PDRT_TEST_DATA_DIR) / "scenes";
 const fs::path kExamples = PDRT_EXAMPLES_DIR;
+const fs::path kDocs = PDRT_DOCS_DIR;
 
 // A fresh directory per test and process (the ASan and plain suites may run side by side).
 fs::path temp_dir() {
@@ -40,6 +41,11 @@ fs::path scene(const std::string& text, std::initializer_list<const char*> fixtu
   fs::path dir = temp_dir();
   for (const char* f : fixtures) fs::copy_file(kData / f, dir / f);
   return write(dir / "s.json", text);
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::string load_error(const fs::path& file) {
@@ -185,6 +191,17 @@ TEST_F(SceneLoader, ExampleMotionKeys) {
   EXPECT_FLOAT_EQ(m[2].rotate.z, q.z);
   expect_vec(m[0].scale, 1, 1, 1);  // keys default to identity
   ASSERT_EQ(s.shapes[11].motion.size(), 2u);
+}
+
+TEST_F(SceneLoader, DocumentedExampleMatchesTheExampleFile) {
+  std::string doc = read(kDocs / "scene-format.md");
+  const std::string fence = "```json\n";
+  size_t begin = doc.rfind(fence);
+  ASSERT_NE(begin, std::string::npos);
+  begin += fence.size();
+  size_t end = doc.find("```", begin);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(doc.substr(begin, end - begin), read(kExamples / "all-features.json"));
 }
 
 // --- defaults and geometry ----------------------------------------------------------------
@@ -482,6 +499,21 @@ TEST_F(SceneLoader, MeshIndexOutOfRange) {
 TEST_F(SceneLoader, MissingSceneFile) {
   fs::path f = temp_dir() / "nope.json";
   EXPECT_ERROR(f, "nope.json: cannot open: No such file or directory");
+}
+
+TEST_F(SceneLoader, EveryTruncationOfTheExampleIsAnInputError) {
+  // Exercises the syntax-error path (and, under ASan, the position scanner) on broken text.
+  std::string text = read(kExamples / "all-features.json");
+  ASSERT_GT(text.size(), 100u);
+  fs::path file = scene("");
+  for (size_t n = 0; n < text.size() - 2; n += 7) {
+    write(file, text.substr(0, n));
+    EXPECT_THROW(load_scene(file), InputError) << n;
+  }
+}
+
+TEST_F(SceneLoader, TopLevelMustBeAnObject) {
+  EXPECT_ERROR(scene("[1, 2]"), "s.json:1:1: the scene must be a JSON object, got [1,2]");
 }
 
 // --- bad input: OBJ / MTL -----------------------------------------------------------------

@@ -83,9 +83,11 @@ void SceneParser::camera(const JsonObject& o) {
   c.look_at = look.vec3();
   std::optional<JsonNode> up = o.get("up");
   if (up) c.up = up->nonzero_vec3();
+  if (up && !std::isfinite(length(c.up))) up->fail_got("is too long to normalise in float");
   auto check_view = [&](const Vec3& p, const Vec3& l, const JsonNode& at_look) {
-    if (is_black(l - p)) at_look.fail_got("must differ from the position");
     Vec3 d = l - p;
+    if (is_black(d)) at_look.fail_got("must differ from the position");
+    if (!std::isfinite(length(d))) at_look.fail_got("is too far from the position for float arithmetic");
     if (length(cross(normalize(c.up), normalize(d))) < 1e-6f) {
       if (up) up->fail_got("must not be parallel to look_at - position");
       at_look.fail_got("makes the view direction parallel to camera.up (set \"up\")");

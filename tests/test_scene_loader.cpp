@@ -572,6 +572,31 @@ TEST_F(SceneLoader, ObjFacesWithoutMaterialGetDefaultDiffuse) {
   EXPECT_EQ(material_of(s, s.shapes[0]).type, MaterialType::Diffuse);
 }
 
+TEST_F(SceneLoader, ObjRelativeIndicesAndNormals) {
+  // A quad through negative (relative) indices with per-corner normals: triangulated, normals kept.
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1 -1//-1\n");
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.shapes.size(), 1u);
+  const MeshData& m = s.shapes[0].mesh;
+  EXPECT_EQ(m.indices.size(), 6u);
+  ASSERT_EQ(m.normals.size(), m.positions.size());
+  expect_vec(m.normals[0], 0, 0, 1);
+}
+
+TEST_F(SceneLoader, ObjRelativeIndexBeforeFirstVertex) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n");
+  EXPECT_ERROR(f, "q.obj:3: face index -3 out of range (2 vertices)");
+}
+
+TEST_F(SceneLoader, ByteOrderMarkIgnored) {
+  fs::path f = scene("\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+                     " \"film\": {\"width\": 8, \"height\": 0}}");
+  EXPECT_ERROR(f, "s.json:2:33: film.height must be an integer >= 1, got 0");
+}
+
 TEST_F(SceneLoader, AllDegenerateObjIsError) {
   fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"all-degenerate.obj\"}]\n}\n",
                      {"all-degenerate.obj"});

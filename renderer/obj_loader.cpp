@@ -5,6 +5,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -46,14 +47,14 @@ bool parse_whole(std::string_view s, T& out) {
   return ec == std::errc() && p == s.data() + s.size();
 }
 
-// mtllib file names as tinyobjloader splits them: on spaces, "\ " escaping a space.
+// mtllib file names as tinyobjloader splits them: on spaces only, "\ " escaping a space.
 std::vector<std::string> mtllib_names(std::string_view rest) {
   std::vector<std::string> names;
   std::string cur;
   for (size_t i = 0; i < rest.size(); ++i) {
     if (rest[i] == '\\' && i + 1 < rest.size() && rest[i + 1] == ' ') {
       cur += ' ', ++i;
-    } else if (rest[i] == ' ' || rest[i] == '\t') {
+    } else if (rest[i] == ' ') {
       if (!cur.empty()) names.push_back(cur), cur.clear();
     } else {
       cur += rest[i];
@@ -110,12 +111,19 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
     } else if (kw == "f") {
       if (tok.size() < 4) ++short_faces;
       for (size_t k = 1; k < tok.size(); ++k) {
-        // v, v/t, v//n or v/t/n; OBJ indices are 1-based, negative ones count back from here.
+        // v, v/t, v//n or v/t/n (t is required after one slash, n after two). OBJ indices
+        // are 1-based; negative ones count back from the last vertex read.
         std::string_view t = tok[k];
-        size_t s1 = t.find('/'), s2 = s1 == std::string_view::npos ? s1 : t.find('/', s1 + 1);
-        std::string_view vpart = t.substr(0, s1);
-        std::string_view npart = s2 == std::string_view::npos ? std::string_view() : t.substr(s2 + 1);
-        std::string_view tpart = s1 == std::string_view::npos ? std::string_view() : t.substr(s1 + 1, s2 - s1 - 1);
+        std::vector<std::string_view> parts;
+        for (size_t b = 0;;) {
+          size_t e = t.find('/', b);
+          parts.push_back(t.substr(b, e == std::string_view::npos ? e : e - b));
+          if (e == std::string_view::npos) break;
+          b = e + 1;
+        }
+        bool shape_ok = parts.size() <= 3 && (parts.size() != 2 || !parts[1].empty()) &&
+                        (parts.size() != 3 || !parts[2].empty());
+        if (!shape_ok) fail(at, "bad face vertex " + in_quotes(t));
         auto check = [&](std::string_view part, long total, long seen, const char* what, const char* plural) {
           long idx = 0;
           if (!parse_whole(part, idx)) fail(at, "bad face vertex " + in_quotes(t));
@@ -125,12 +133,15 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
             fail(at, std::string("face ") + what + "index " + std::to_string(idx) + " out of range (" +
                          std::to_string(idx > 0 ? total : seen) + " " + plural + ")");
         };
-        check(vpart, total_v, seen_v, "", "vertices");
-        if (!npart.empty()) check(npart, total_vn, seen_vn, "normal ", "normals");
-        if (long ti = 0; !tpart.empty() && (!parse_whole(tpart, ti) || ti == 0)) fail(at, "bad face vertex " + in_quotes(t));
+        check(parts[0], total_v, seen_v, "", "vertices");
+        if (parts.size() == 3) check(parts[2], total_vn, seen_vn, "normal ", "normals");
+        // Texture coordinates are not used; tinyobjloader still rejects malformed ones.
+        if (long ti = 0; parts.size() >= 2 && !parts[1].empty() && (!parse_whole(parts[1], ti) || ti == 0))
+          fail(at, "bad face vertex " + in_quotes(t));
       }
     } else if (kw == "mtllib") {
-      size_t start = lines[li].find("mtllib") + 6;
+      // tinyobjloader skips one separator after the keyword, then splits on spaces.
+      size_t start = std::min(lines[li].find("mtllib") + 7, lines[li].size());
       auto files = mtllib_names(lines[li].substr(start));
       if (files.empty()) fail(at, "mtllib names no file");
       for (const std::string& f : files) {

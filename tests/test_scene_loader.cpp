@@ -591,6 +591,13 @@ TEST_F(SceneLoader, ObjRelativeIndexBeforeFirstVertex) {
   EXPECT_ERROR(f, "q.obj:3: face index -3 out of range (2 vertices)");
 }
 
+TEST_F(SceneLoader, ObjMalformedFaceVertex) {
+  // tinyobjloader would fail with a generic message; the check names the line and the token.
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/ 3\n");
+  EXPECT_ERROR(f, "q.obj:4: bad face vertex \"2/\"");
+}
+
 TEST_F(SceneLoader, ByteOrderMarkIgnored) {
   fs::path f = scene("\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
                      " \"film\": {\"width\": 8, \"height\": 0}}");

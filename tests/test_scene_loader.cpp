@@ -21,6 +21,7 @@ namespace {
 const fs::path kData = fs::path(PDRT_TEST_DATA_DIR) / "scenes";
 const fs::path kExamples = PDRT_EXAMPLES_DIR;
 const fs::path kDocs = PDRT_DOCS_DIR;
+const fs::path kScenes = PDRT_SCENES_DIR;
 
 // A fresh directory per test and process (the ASan and plain suites may run side by side).
 fs::path temp_dir() {
@@ -202,6 +203,16 @@ TEST_F(SceneLoader, DocumentedExampleMatchesTheExampleFile) {
   size_t end = doc.find("```", begin);
   ASSERT_NE(end, std::string::npos);
   EXPECT_EQ(doc.substr(begin, end - begin), read(kExamples / "all-features.json"));
+}
+
+TEST_F(SceneLoader, EverySceneInTheRepositoryLoads) {
+  int count = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    EXPECT_NO_THROW(load_scene(entry.path())) << entry.path();
+  }
+  EXPECT_GT(count, 0);
 }
 
 // --- defaults and geometry ----------------------------------------------------------------

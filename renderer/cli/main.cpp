@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   pdrt::cli::add_sample_command(app);
   pdrt::cli::add_analyze_command(app);
   pdrt::cli::add_tables_command(app);
+  pdrt::cli::add_render_command(app);
+  pdrt::cli::add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -211,6 +211,8 @@ std::vector<FitCase> fit_cases() {
   return cases;
 }
 
+void PrintTo(const FitCase& c, std::ostream* os) { *os << c.name; }
+
 class SampleMatchesPdf : public ::testing::TestWithParam<FitCase> {};
 
 TEST_P(SampleMatchesPdf, ChiSquareAndTotalProbability) {
@@ -525,6 +527,24 @@ TEST(Bsdf, SmoothDielectricFresnelAtNormalIncidence) {
   }
 }
 
+TEST(Fresnel, BrewsterAngleReflectsOnlyTheSPolarisation) {
+  // At tan(theta) = eta, r_p = 0 and r_s = (1 - eta^2) / (1 + eta^2), so F = r_s^2 / 2.
+  for (double eta : {1.33, 1.5, 2.4}) {
+    double rs = (1 - eta * eta) / (1 + eta * eta);
+    EXPECT_NEAR(fresnel_dielectric(1.0 / std::sqrt(1 + eta * eta), eta), 0.5 * rs * rs, 1e-12) << "eta " << eta;
+  }
+}
+
+TEST(Fresnel, SameReflectanceFromBothSides) {
+  // Stokes relations: F(theta_i, eta) = F(theta_t, 1 / eta) for Snell-related angles.
+  for (double eta : {1.33, 1.5, 2.4})
+    for (double ti : {0.0, 0.3, 0.8, 1.2, 1.5}) {
+      double tt = std::asin(std::sin(ti) / eta);
+      EXPECT_NEAR(fresnel_dielectric(std::cos(ti), eta), fresnel_dielectric(std::cos(tt), 1.0 / eta), 1e-12);
+    }
+  EXPECT_EQ(fresnel_dielectric(std::cos(0.8), 1.0 / 1.5), 1.0);  // beyond the critical angle (0.73)
+}
+
 TEST(Bsdf, SmoothDielectricTotalInternalReflectionBeyondCriticalAngle) {
   Bsdf bsdf(dielectric(0.0f, 1.5f));
   float critical = std::asin(1.0f / 1.5f) * 180.0f / kPi;  // 41.81 deg
@@ -571,6 +591,28 @@ TEST(Bsdf, SmoothDielectricRefractionObeysSnell) {
 }
 
 // ---- Degenerate inputs and the emitter.
+
+TEST(Bsdf, SamplesAreFiniteAtTheCornersOfTheUnitSquare) {
+  const float one_minus = 0x1.fffffep-1f;
+  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.0f), ggx(0.2f), ggx(1.0f), phong(0), phong(1000),
+                                     mirror(Vec3(0.9f)), dielectric(0.0f), dielectric(0.001f), dielectric(1.0f)};
+  for (const Material& m : materials) {
+    Bsdf bsdf(m);
+    for (float t : {0.0f, 45.0f, 89.9f})
+      for (float z : {1.0f, -1.0f})
+        for (float u1 : {0.0f, 0.5f, one_minus})
+          for (float u2 : {0.0f, 0.5f, one_minus})
+            for (float uc : {0.0f, one_minus}) {
+              Vec3 wo = direction(t) * Vec3(1, 1, z);
+              BsdfSample s;
+              if (!bsdf.sample(wo, u1, u2, uc, &s)) continue;
+              ASSERT_TRUE(is_finite(s.wi) && is_finite(s.weight) && std::isfinite(s.pdf));
+              ASSERT_GT(s.pdf, 0.0f);
+              ASSERT_NEAR(length(s.wi), 1.0f, 1e-5f);
+              ASSERT_TRUE(is_finite(bsdf.eval(wo, s.wi)) && std::isfinite(bsdf.pdf(wo, s.wi)));
+            }
+  }
+}
 
 TEST(Bsdf, OpaqueMaterialsIgnoreDirectionsBelowTheSurface) {
   for (const Material& m : {diffuse(Vec3(0.5f)), ggx(0.5f), phong(10), mirror(Vec3(1.0f))}) {

@@ -3,6 +3,13 @@
 // from the surface, toward the viewer; wi toward the light. Opaque materials reflect only when
 // wo.z > 0 and wi.z > 0; dielectrics treat wo.z > 0 as outside and scale transmitted radiance by
 // 1/eta^2 (camera-path radiance transport, as pbrt-v4's TransportMode::Radiance).
+//   Diffuse     Lambert, cosine-weighted sampling.
+//   Glossy      GGX: Schlick Fresnel with F0 = albedo, alpha = roughness^2, height-correlated
+//               Smith G2, visible-normal sampling. Phong: normalised modified Phong about the
+//               mirror direction, exponent as given (no mapping from roughness).
+//   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
+//   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
+//               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
 #include "material.h"
 #include "vec3.h"
 
@@ -40,7 +47,7 @@ class Bsdf {
 
   Kind kind_ = Kind::Black;
   Vec3 albedo_{0.0f};
-  float alpha_ = 1.0f;     // GGX roughness, alpha = roughness^2 clamped to >= kMinAlpha
+  float alpha_ = 1.0f;     // GGX roughness, alpha = roughness^2 clamped to >= kMinGgxAlpha
   float exponent_ = 0.0f;  // Phong
   float ior_ = 1.5f;       // inside / outside
 };

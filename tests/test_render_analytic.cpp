@@ -257,3 +257,24 @@ TEST(RenderAnalytic, RankSelectedFilterMatchesWeightsWithFewerSamples) {
   EXPECT_NEAR(sr / n, 0.5, 0.01);
   EXPECT_NEAR(sw / n, 0.5, 0.01);
 }
+
+// A white glossy sphere in a white furnace never shows more than 1 (GGX and Phong lobes).
+TEST(RenderAnalytic, FurnaceGlossyLobeNeverCreatesEnergy) {
+  for (bool phong : {false, true}) {
+    SceneDesc s = base_scene(32, 32, 64);
+    s.camera.position = {0, 0, 4}, s.camera.look_at = {0, 0, 0}, s.camera.vfov_deg = 30;
+    s.environment.radiance = Vec3(1.0f);
+    Material m;
+    m.type = MaterialType::Glossy, m.albedo = Vec3(1.0f);
+    if (phong) m.lobe = GlossLobe::Phong, m.exponent = 20;
+    else m.roughness = 0.5f;
+    s.shapes.push_back(sphere({0, 0, 0}, 1, add_material(s, m)));
+    Image im = render_quietly(s).image;
+    double sum = 0;
+    int n = 0;
+    for (int y = 10; y < 22; ++y)
+      for (int x = 10; x < 22; ++x) sum += mean_rgb(im, x, y), ++n;
+    EXPECT_LE(sum / n, 1.0 + 0.01) << (phong ? "phong" : "ggx");  // mean over 144 pixels x 64 spp
+    EXPECT_GT(sum / n, 0.8) << (phong ? "phong" : "ggx");
+  }
+}

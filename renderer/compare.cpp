@@ -320,7 +320,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       RenderResult r = render_with(s, o);
       std::vector<double> x, y;
       for (const Run& u : runs)
-        if (u.sampler == name) x.push_back(u.spp), y.push_back(u.rmse);
+        if (u.sampler == name) x.push_back(u.spp_mean), y.push_back(u.rmse);  // traced, like the adaptive mean
       double e = rmse(r.image, ref);
       std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
       write_display_png(o.out / img, W, H, display_rgb(r.image));

@@ -50,7 +50,7 @@ def main(out):
     plt.close(fig)
 
     spps = r["spp"]
-    show = [spps[len(spps) // 2]] if len(spps) < 3 else [spps[1], spps[len(spps) // 2], spps[-1]]
+    show = sorted(set([spps[0], spps[len(spps) // 2], spps[-1]]))
     fig, axes = plt.subplots(1, len(show), figsize=(5 * len(show), 4), squeeze=False)
     for ax, n in zip(axes[0], show):
         for s in samplers:

@@ -144,3 +144,18 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   }
   EXPECT_FALSE(fs::exists(d / "r" / "results.json"));
 }
+
+// Ctrl-C: the render stops, the image so far is written and marked partial, exit 130.
+TEST(CliRender, InterruptWritesPartialImage) {
+  fs::path d = scratch_dir("render_int");
+  fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
+  fs::path out = d / "out.exr";
+  std::string cmd = "timeout --preserve-status -s INT 1 '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
+                    out.string() + " --spp 4096 --quiet 2>/dev/null";
+  int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in) << "the partial image must be written";
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
+}

@@ -72,3 +72,31 @@ TEST(Adaptive, ContrastMetricRefinesEdgesAndIsDeterministicAcrossThreads) {
   EXPECT_EQ(mn, 4);
   EXPECT_EQ(mx, 64);
 }
+
+// Every pixel's sample count is its prefix length: min_spp doubled some number of times,
+// capped at max_spp (box filter: every sample of the prefix is traced).
+TEST(Adaptive, SampleCountEqualsPrefixLength) {
+  RenderResult r = render_quietly(adaptive_scene("relative-error", 0.02f));
+  int64_t total = 0;
+  for (float s : r.image.samples) {
+    int n = int(s);
+    bool ok = n == 64;
+    for (int p = 4; p < 64; p *= 2) ok = ok || n == p;
+    EXPECT_TRUE(ok) << n;
+    total += n;
+  }
+  EXPECT_EQ(total, r.stats.samples);
+}
+
+TEST(Adaptive, ConstantColourPixelsStopAtMinSpp) {
+  SceneDesc s = base_scene(16, 16, 4);
+  s.environment.radiance = Vec3(0.7f);  // nothing but a constant environment
+  s.sampler.adaptive.enabled = true;
+  s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 64, s.sampler.adaptive.threshold = 1e-4f;
+  for (const char* metric : {"relative-error", "contrast"}) {
+    s.sampler.adaptive.metric = metric;
+    RenderResult r = render_quietly(s);
+    for (float n : r.image.samples) ASSERT_EQ(n, 4.0f) << metric;
+    EXPECT_EQ(r.stats.adaptive_rounds, 0) << metric;
+  }
+}

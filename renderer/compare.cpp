@@ -132,6 +132,9 @@ void validate_compare_options(const CompareOptions& o) {
     if (o.spp[i] < 1) throw UsageError("--spp: sample counts must be >= 1, got " + std::to_string(o.spp[i]));
     if (i && o.spp[i] <= o.spp[i - 1]) throw UsageError("--spp: sample counts must increase");
   }
+  if (!o.adaptive_metric.empty() && o.adaptive_metric != "relative-error" && o.adaptive_metric != "contrast")
+    throw UsageError("--adaptive-metric must be relative-error or contrast, got \"" + o.adaptive_metric + "\"");
+  if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
   if (o.reference_spp < 1) throw UsageError("--reference-spp must be >= 1, got " + std::to_string(o.reference_spp));
   if (o.reference_spp < 4 * o.spp.back())
     throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(4 * o.spp.back()) +
@@ -317,6 +320,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
       ad.min_spp = std::max(2, o.spp.front());
       ad.max_spp = std::max(ad.min_spp, o.spp.back());
+      if (o.adaptive_threshold > 0) ad.threshold = float(o.adaptive_threshold);
+      if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
       RenderResult r = render_with(s, o);
       std::vector<double> x, y;
       for (const Run& u : runs)

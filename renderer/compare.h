@@ -14,6 +14,8 @@ struct CompareOptions {
   std::vector<std::string> samplers{"random", "jitter", "poisson", "sobol"};
   std::vector<int> spp{1, 4, 16, 64, 256};
   bool adaptive = false;
+  double adaptive_threshold = 0;    // > 0 overrides the scene's (or the default) threshold
+  std::string adaptive_metric;      // non-empty overrides the metric
   int reference_spp = 4096;
   std::string reference_sampler = "sobol";
   int threads = 0;

@@ -52,10 +52,12 @@ class JitterSampler final : public Sampler {
   explicit JitterSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "jitter"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
-    return pj_1d(uint64_t(index), stream(px, py, f, bounce));
+    uint64_t s = stream(px, py, f, bounce);
+    return pj_1d(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)), s);
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
-    return pj_2d(uint64_t(index), stream(px, py, f, bounce));
+    uint64_t s = stream(px, py, f, bounce);
+    return pj_2d(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)), s);
   }
 };
 

@@ -53,4 +53,15 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
   return mix64(seed_hash ^ k);
 }
 
+uint64_t shuffle_index(uint64_t index, uint64_t stream) {
+  if (index < 2) return index;
+  const int top = 63 - __builtin_clzll(index);  // the leading bit never flips
+  uint64_t out = index;
+  for (int c = 0; c < top; ++c) {
+    uint64_t above = index >> (c + 1);  // non-zero: contains the leading bit
+    out ^= (mix64(stream ^ (above * 0x9e3779b97f4a7c15ull) ^ uint64_t(c)) & 1u) << c;
+  }
+  return out;
+}
+
 }  // namespace pdrt

@@ -20,6 +20,8 @@ void add_compare_command(CLI::App& app) {
     std::string scene, out, samplers = "random,jitter,poisson,sobol", spp = "1,4,16,64,256", cache;
     std::optional<int> width, height;
     int reference_spp = 4096, threads = 0;
+    double adaptive_threshold = 0;
+    std::string adaptive_metric;
     bool adaptive = false, quiet = false, no_plots = false;
   };
   auto o = std::make_shared<Opts>();
@@ -29,6 +31,8 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
   cmd->add_flag("--adaptive", o->adaptive, "Also compare adaptive refinement at equal total samples");
+  cmd->add_option("--adaptive-threshold", o->adaptive_threshold, "Adaptive threshold (default: the scene's, else 0.01)");
+  cmd->add_option("--adaptive-metric", o->adaptive_metric, "relative-error | contrast (default: the scene's)");
   cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")->default_val(4096);
   cmd->add_option("--cache-dir", o->cache, "Reference cache directory (default ~/.cache/pdrt/references)");
   cmd->add_option("--width", o->width, "Image width (overrides film.width)");
@@ -53,6 +57,8 @@ void add_compare_command(CLI::App& app) {
       c.spp.push_back(int(v));
     }
     c.adaptive = o->adaptive;
+    c.adaptive_threshold = o->adaptive_threshold;
+    c.adaptive_metric = o->adaptive_metric;
     c.reference_spp = o->reference_spp;
     c.threads = o->threads;
     c.quiet = o->quiet;

@@ -162,7 +162,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   rs.sampler.adaptive.enabled = false;
   std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
-                         std::to_string(rs.sampler.seed) + "|" + PDRT_VERSION;
+                         std::to_string(rs.sampler.seed) + "|" + PDRT_VERSION + "|samplers-v2";  // bump when sampler output changes
   char key[32];
   std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text));
   fs::path cache = (o.cache_dir.empty() ? default_cache_dir() : o.cache_dir) / (std::string("ref-") + key + ".exr");

@@ -53,6 +53,16 @@ LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
   if (!cdf_.empty()) cdf_.back() = 1.0;
 }
 
+void LightSampler::triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const {
+  const auto& pos = scene_.positions(shape);
+  const uint32_t* t = &scene_.indices(shape)[3 * std::size_t(prim)];
+  *a = pos[t[0]], *b = pos[t[1]], *c = pos[t[2]];
+  if (scene_.moving(shape)) {
+    Affine m = scene_.transform(shape, time);
+    *a = m.point(*a), *b = m.point(*b), *c = m.point(*c);
+  }
+}
+
 float LightSampler::select_pdf(std::size_t e) const {
   return float(cdf_[e] - (e ? cdf_[e - 1] : 0.0));
 }
@@ -84,13 +94,8 @@ bool LightSampler::sample(const Vec3& ref, float time, float u_pick, std::array<
 
 bool LightSampler::sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u,
                                    LightSample* out) const {
-  const auto& pos = scene_.positions(e.shape);
-  const uint32_t* t = &scene_.indices(e.shape)[3 * std::size_t(e.prim)];
-  Vec3 a = pos[t[0]], b = pos[t[1]], c = pos[t[2]];
-  if (scene_.moving(e.shape)) {
-    Affine m = scene_.transform(e.shape, time);
-    a = m.point(a), b = m.point(b), c = m.point(c);
-  }
+  Vec3 a, b, c;
+  triangle_at(e.shape, e.prim, time, &a, &b, &c);
   // Uniform barycentrics (square-root map).
   float su = std::sqrt(float(u[0])), b0 = 1 - su, b1 = float(u[1]) * su;
   Vec3 p = a * b0 + b * b1 + c * (1 - b0 - b1);
@@ -173,13 +178,8 @@ float LightSampler::pdf(const Vec3& ref, const SurfaceHit& hit, float time) cons
   const ShapeDesc& s = scene_.desc().shapes[hit.shape];
   if (s.kind == ShapeDesc::Kind::Sphere) return select_pdf(first) * sphere_pdf(hit.shape, ref, hit.p, hit.ng, time);
   std::size_t e = std::size_t(first + hit.prim);
-  const auto& pos = scene_.positions(hit.shape);
-  const uint32_t* t = &scene_.indices(hit.shape)[3 * std::size_t(hit.prim)];
-  Vec3 a = pos[t[0]], b = pos[t[1]], c = pos[t[2]];
-  if (scene_.moving(hit.shape)) {
-    Affine m = scene_.transform(hit.shape, time);
-    a = m.point(a), b = m.point(b), c = m.point(c);
-  }
+  Vec3 a, b, c;
+  triangle_at(hit.shape, hit.prim, time, &a, &b, &c);
   float area = 0.5f * length(cross(b - a, c - a));
   Vec3 d = hit.p - ref;
   float d2 = dot(d, d);

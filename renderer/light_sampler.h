@@ -41,6 +41,8 @@ class LightSampler {
     int prim;   // triangle index, -1 for spheres
   };
   float select_pdf(std::size_t entry) const;
+  // World-space corners of a triangle of `shape` at the normalised shutter time.
+  void triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const;
   bool sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
   bool sample_sphere(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
   float sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const Vec3& n, float time) const;

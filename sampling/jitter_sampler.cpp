@@ -53,11 +53,11 @@ class JitterSampler final : public Sampler {
   std::string name() const override { return "jitter"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
-    return pj_1d(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)), s);
+    return pj_1d(shuffle_index(uint64_t(index), s), s);
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
-    return pj_2d(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)), s);
+    return pj_2d(shuffle_index(uint64_t(index), s), s);
   }
 };
 

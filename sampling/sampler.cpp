@@ -56,10 +56,11 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 uint64_t shuffle_index(uint64_t index, uint64_t stream) {
   if (index < 2) return index;
   const int top = 63 - __builtin_clzll(index);  // the leading bit never flips
+  const uint64_t key = mix64(stream ^ 0x5f);      // decorrelated from the stream's other uses
   uint64_t out = index;
   for (int c = 0; c < top; ++c) {
     uint64_t above = index >> (c + 1);  // non-zero: contains the leading bit
-    out ^= (mix64(stream ^ (above * 0x9e3779b97f4a7c15ull) ^ uint64_t(c)) & 1u) << c;
+    out ^= (mix64(key ^ (above * 0x9e3779b97f4a7c15ull) ^ uint64_t(c)) & 1u) << c;
   }
   return out;
 }

@@ -50,12 +50,12 @@ class SobolSampler final : public Sampler {
   std::string name() const override { return "sobol"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
-    index = int64_t(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)));
+    index = int64_t(shuffle_index(uint64_t(index), s));
     return to_unit(owen_scramble(sobol_dim0(uint32_t(index)), s));
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
-    index = int64_t(shuffle_index(uint64_t(index), mix64(s ^ 0x5f)));
+    index = int64_t(shuffle_index(uint64_t(index), s));
     return {to_unit(owen_scramble(sobol_dim0(uint32_t(index)), s)),
             to_unit(owen_scramble(sobol_dim1(uint32_t(index)), mix64(s)))};
   }

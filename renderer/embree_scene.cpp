@@ -178,8 +178,8 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit* hit) const {
     }
   }
   if (inst) {
-    Affine m = transform(shape, ray.time);
-    ng = m.normal(ng), ns = m.normal(ns);
+    Affine inv = transform(shape, ray.time).inverse();  // once for both normals
+    ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
   }
   ng = normalize(ng), ns = normalize(ns);
   if (!is_finite(ns) || dot(ns, ns) == 0) ns = ng;

@@ -59,11 +59,12 @@ Affine Affine::inverse() const {
   return r;
 }
 
-Vec3 Affine::normal(const Vec3& n) const {
-  Affine i = inverse();  // n' = (M^-1)^T n
-  return {i.m[0][0] * n.x + i.m[1][0] * n.y + i.m[2][0] * n.z, i.m[0][1] * n.x + i.m[1][1] * n.y + i.m[2][1] * n.z,
-          i.m[0][2] * n.x + i.m[1][2] * n.y + i.m[2][2] * n.z};
+Vec3 Affine::transpose_vector(const Vec3& v) const {
+  return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+          m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
 }
+
+Vec3 Affine::normal(const Vec3& n) const { return inverse().transpose_vector(n); }  // n' = (M^-1)^T n
 
 Affine operator*(const Affine& a, const Affine& b) {
   Affine r;

@@ -49,8 +49,7 @@ struct PixelRenderer {
   bool rank_selection;
 
   // Samples [begin, end) of pixel (x, y); returns rays traced.
-  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc) const {
-    PixelSample ps(sampler);
+  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSample& ps) const {
     const float r = filter.radius(), fmin = filter.min_value(), fmax = filter.max_value();
     int64_t rays = 0;
     for (int64_t i = begin; i < end; ++i) {
@@ -117,11 +116,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
         int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
         int64_t& local = rays.local();
+        PixelSample ps(sampler);
         for (int y = y0; y < y1; ++y)
           for (int x = x0; x < x1; ++x) {
             PixelAccum& acc = film.at(x, y);
             int64_t end = end_of(x, y);
-            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc);
+            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc, ps);
           }
         progress.advance();
       }

@@ -77,6 +77,42 @@ class PoissonSampler final : public Sampler {
     return unit_clamp(x);
   }
 
+  // The same arithmetic as get_2d/get_1d/pixel_sample, with the per-stream part done once.
+  void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
+    if (opt_.toroidal_shift && f != Family::Pixel) {
+      out->coords = nullptr;
+      return;
+    }
+    const SampleTable& t = *tables_.family[int(f)];
+    out->dim = uint8_t(t.dim);
+    unsigned sym;
+    if (f == Family::Pixel) {
+      const int P = int(t.params.tile);
+      int a, b, oa, ob;
+      uint32_t k, cell;
+      locate(px, py, bounce, t, P, a, b, k, cell, sym);
+      oa = a, ob = b;
+      inverse_symmetry_pixel(sym, P, oa, ob);
+      out->coords = &t.coords[k][std::size_t(t.cell_start[k][cell]) * 2];
+      out->count = t.cell_count[k][cell];
+      out->base[0] = oa, out->base[1] = ob;
+      out->size = double(P);
+      out->origin[0] = a, out->origin[1] = b;
+    } else {
+      uint64_t h = stream(px, py, f, bounce);
+      out->coords = t.coords[pick(h, t.table_count())].data();
+      out->count = t.params.points;
+      out->base[0] = out->base[1] = 0.0;
+      out->size = 1.0;
+      out->origin[0] = out->origin[1] = 0.0;
+      sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
+    }
+    const bool swap = sym & 1;
+    out->src[0] = swap ? 1 : 0, out->src[1] = swap ? 0 : 1;
+    if (swap) std::swap(out->base[0], out->base[1]);
+    out->flip[0] = sym & 2, out->flip[1] = sym & 4;
+  }
+
   int64_t samples_available(int px, int py) const override {
     const SampleTable& t = *tables_.family[int(Family::Pixel)];
     int P = int(t.params.tile), a, b;

@@ -23,6 +23,8 @@ const char* family_name(Family f) {
   }
 }
 
+void Sampler::prepare(int, int, Family, int, PreparedStream* out) const { out->coords = nullptr; }
+
 int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
 
 const std::vector<std::string>& sampler_names() {

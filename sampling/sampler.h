@@ -3,6 +3,7 @@
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -32,6 +33,28 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 // stratification and prefix extension are unchanged.
 uint64_t shuffle_index(uint64_t index, uint64_t stream);
 
+// What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
+// one table read and a symmetry (pbrt-v4 does such per-pixel work in StartPixelSample).
+// Axis k of value i: v = base[k] + coords[i * dim + src[k]] * 2^-32, then size - v when
+// flip[k], then v - origin[k], clamped to [0, 1). Fields are left uninitialised on purpose:
+// PixelSample keeps 160 of them per thread and fills one only when its stream is first used.
+struct PreparedStream {
+  const uint32_t* coords;  // null: nothing prepared, ask the sampler
+  uint32_t count;          // indices below count are stored
+  uint8_t dim;
+  uint8_t src[2];
+  bool flip[2];
+  double base[2], size, origin[2];
+
+  double value(int64_t index, int k) const {
+    constexpr double kFixed = 0x1.0p-32, kBelowOne = 0x1.fffffffffffffp-1;
+    double v = base[k] + coords[std::size_t(index) * dim + src[k]] * kFixed;
+    v = flip[k] ? size - v : v;
+    v -= origin[k];
+    return v < 0.0 ? 0.0 : v < 1.0 ? v : kBelowOne;
+  }
+};
+
 class Sampler {
  public:
   virtual ~Sampler() = default;
@@ -42,6 +65,11 @@ class Sampler {
   // Pixel-family values are offsets within the pixel, in [0,1)^2.
   virtual double get_1d(int px, int py, int64_t index, Family family, int bounce) const = 0;
   virtual Vec2 get_2d(int px, int py, int64_t index, Family family, int bounce) const = 0;
+
+  // Fills `out` so that out->value(i, k) equals get_2d(px, py, i, family, bounce)[k] (or
+  // get_1d for k = 0) bit for bit for every i < out->count; sets out->coords = nullptr
+  // when the sampler has no such form (the default).
+  virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
 
   // How many samples pixel (px, py) can take before values stop being well distributed
   // (prefix extension is exact below this); unlimited samplers return INT64_MAX.
@@ -57,18 +85,44 @@ class Sampler {
   uint64_t seed_hash_;  // mixed once here, not per sample
 };
 
-// pbrt-v4's interface on top of the pure functions: one per thread.
+// pbrt-v4's interface on top of the pure functions: one per thread, reused across pixels.
+// The streams of the current pixel are prepared once, on first use, so the values of a
+// pixel's later samples cost a table read (values are identical to the Sampler's).
 class PixelSample {
  public:
-  PixelSample(const Sampler& s) : s_(&s) {}
-  void start_pixel_sample(int px, int py, int64_t index) { px_ = px, py_ = py, index_ = index; }
-  double get_1d(Family f, int bounce = 0) const { return s_->get_1d(px_, py_, index_, f, bounce); }
-  Vec2 get_2d(Family f, int bounce = 0) const { return s_->get_2d(px_, py_, index_, f, bounce); }
+  explicit PixelSample(const Sampler& s) : s_(&s) {}
+  void start_pixel_sample(int px, int py, int64_t index) {
+    if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
+    index_ = index;
+  }
+  double get_1d(Family f, int bounce = 0) const {
+    const PreparedStream* p = prepared(f, bounce);
+    if (p && uint64_t(index_) < p->count) return p->value(index_, 0);
+    return s_->get_1d(px_, py_, index_, f, bounce);
+  }
+  Vec2 get_2d(Family f, int bounce = 0) const {
+    const PreparedStream* p = prepared(f, bounce);
+    if (p && uint64_t(index_) < p->count) return {p->value(index_, 0), p->value(index_, 1)};
+    return s_->get_2d(px_, py_, index_, f, bounce);
+  }
 
  private:
+  static constexpr int kSlots = 32;  // bounce salts cached per family (deeper ones ask the sampler)
+  const PreparedStream* prepared(Family f, int bounce) const {
+    if (unsigned(bounce) >= unsigned(kSlots)) return nullptr;
+    const int k = int(f) * kSlots + bounce;
+    if (epoch_of_[k] != epoch_) {
+      epoch_of_[k] = epoch_;
+      s_->prepare(px_, py_, f, bounce, &slot_[k]);
+    }
+    return slot_[k].coords ? &slot_[k] : nullptr;
+  }
   const Sampler* s_;
-  int px_ = 0, py_ = 0;
+  int px_ = INT32_MIN, py_ = INT32_MIN;
   int64_t index_ = 0;
+  uint32_t epoch_ = 1;  // differs from the slots' initial 0 even before the first pixel
+  mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{};
+  mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
 // The sampler names `make_sampler` accepts.

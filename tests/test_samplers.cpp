@@ -36,6 +36,31 @@ TEST_P(EverySampler, ReplaysInAnyOrderAndFromAnyThread) {
   EXPECT_EQ(forward, threaded);
 }
 
+// PixelSample prepares each stream once per pixel; its values must equal the pure
+// functions bit for bit, in any pixel order, for every family and bounce salt (including
+// salts past its cache and indices past a table's length).
+TEST_P(EverySampler, PixelSampleMatchesTheSamplerBitForBit) {
+  PixelSample ps(*s);
+  const int pixels[][2] = {{0, 0}, {5, 3}, {-7, 2}, {300, -41}, {5, 3}, {63, 64}};
+  int64_t compared = 0;
+  for (const auto& p : pixels)
+    for (int64_t i : {0, 1, 2, 15, 16, 63, 255, 1023, 1024, 1500, 5000}) {
+      ps.start_pixel_sample(p[0], p[1], i);
+      for (int f = 0; f < kFamilyCount; ++f)
+        for (int bounce : {0, 1, 7, 31, 32, 40}) {
+          Family fam = Family(f);
+          if (fam == Family::Time) {
+            ASSERT_EQ(s->get_1d(p[0], p[1], i, fam, bounce), ps.get_1d(fam, bounce)) << f << " " << bounce << " " << i;
+          } else {
+            ASSERT_EQ(s->get_2d(p[0], p[1], i, fam, bounce), ps.get_2d(fam, bounce)) << f << " " << bounce << " " << i;
+            ASSERT_EQ(s->get_1d(p[0], p[1], i, fam, bounce), ps.get_1d(fam, bounce)) << f << " " << bounce << " " << i;
+          }
+          ++compared;
+        }
+    }
+  EXPECT_EQ(compared, 6 * 11 * 5 * 6);
+}
+
 TEST_P(EverySampler, BouncesAndSeedsDrawDifferentValues) {
   auto other_seed = make_sampler(GetParam(), 43);
   int same_bounce = 0, same_seed = 0;

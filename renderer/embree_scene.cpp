@@ -155,24 +155,54 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit* hit) const {
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  finish_hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
+             Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), rh.ray.tfar, hit);
+  return true;
+}
 
-  const bool inst = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-  const int shape = int(inst ? rh.hit.instID[0] : rh.hit.geomID);
+void EmbreeScene::intersect4(const Ray* rays, const bool* live, SurfaceHit* hits, bool* found) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // camera rays of one pixel
+  alignas(16) RTCRayHit4 rh;
+  alignas(16) int valid[4];
+  for (int k = 0; k < 4; ++k) {
+    const Ray& r = rays[k];
+    valid[k] = live[k] ? -1 : 0;
+    rh.ray.org_x[k] = r.org.x, rh.ray.org_y[k] = r.org.y, rh.ray.org_z[k] = r.org.z;
+    rh.ray.dir_x[k] = r.dir.x, rh.ray.dir_y[k] = r.dir.y, rh.ray.dir_z[k] = r.dir.z;
+    rh.ray.tnear[k] = r.tmin, rh.ray.tfar[k] = r.tmax, rh.ray.time[k] = r.time;
+    rh.ray.mask[k] = ~0u, rh.ray.flags[k] = 0, rh.ray.id[k] = unsigned(k);
+    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect4(valid, scene_, &ctx, &rh);
+  for (int k = 0; k < 4; ++k) {
+    found[k] = live[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+    if (found[k])
+      finish_hit(rays[k], rh.hit.instID[0][k], rh.hit.geomID[k], rh.hit.primID[k], rh.hit.u[k], rh.hit.v[k],
+                 Vec3(rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]), rh.ray.tfar[k], &hits[k]);
+  }
+}
+
+void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim_id, float u, float v,
+                             const Vec3& embree_ng, float t, SurfaceHit* hit) const {
+  const bool inst = inst_id != RTC_INVALID_GEOMETRY_ID;
+  const int shape = int(inst ? inst_id : geom_id);
   const Shape& s = shapes_[shape];
-  hit->t = rh.ray.tfar;
-  hit->p = ray.org + ray.dir * rh.ray.tfar;
+  hit->t = t;
+  hit->p = ray.org + ray.dir * t;
   hit->shape = shape;
-  hit->prim = int(rh.hit.primID);
+  hit->prim = int(prim_id);
   Vec3 ng, ns;
   if (s.sphere) {
-    ng = ns = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);  // centre to hit, instance space
+    ng = ns = embree_ng;  // centre to hit, instance space
   } else {
-    const uint32_t* t = &s.indices[3 * std::size_t(hit->prim)];
-    const Vec3 &a = s.positions[t[0]], &b = s.positions[t[1]], &c = s.positions[t[2]];
+    const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
+    const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
     ng = cross(b - a, c - a);  // counter-clockwise winding is the front face
     if (!s.normals.empty()) {
-      float u = rh.hit.u, v = rh.hit.v;
-      ns = s.normals[t[0]] * (1 - u - v) + s.normals[t[1]] * u + s.normals[t[2]] * v;
+      ns = s.normals[tri[0]] * (1 - u - v) + s.normals[tri[1]] * u + s.normals[tri[2]] * v;
     } else {
       ns = ng;
     }
@@ -186,7 +216,6 @@ bool EmbreeScene::intersect(const Ray& ray, SurfaceHit* hit) const {
   hit->ng = ng;
   hit->ns = dot(ns, ng) < 0 ? -ns : ns;
   hit->front = dot(ray.dir, ng) < 0;
-  return true;
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -33,6 +33,11 @@ class EmbreeScene {
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const;
   bool occluded(const Ray& ray) const;
+  // Four camera rays of one pixel as an Embree packet (much cheaper per ray when they are
+  // coherent); lanes with live[k] false are not traced. found[k] says whether hits[k] is set.
+  // Packet and single-ray kernels may differ in the last bit of t, u, v, so a caller that
+  // needs replayable images must always trace the same rays the same way.
+  void intersect4(const Ray* rays, const bool* live, SurfaceHit* hits, bool* found) const;
 
   // Object-to-world transform of `shape` at normalised shutter time (identity for static
   // shapes, whose geometry is stored in world space).
@@ -54,6 +59,9 @@ class EmbreeScene {
   RTCScene rtc_scene() const { return scene_; }
 
  private:
+  void finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim_id, float u, float v,
+                  const Vec3& embree_ng, float t, SurfaceHit* hit) const;
+
   struct Shape {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;

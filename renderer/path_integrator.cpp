@@ -19,7 +19,13 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lig
   for (const Material& m : scene.desc().materials) bsdfs_.emplace_back(m);
 }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const {
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const { return trace(ray, ps, nullptr, false); }
+
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit& first, bool found) const {
+  return trace(ray, ps, &first, found);
+}
+
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit* first, bool first_found) const {
   PathResult res;
   res.depth = std::numeric_limits<float>::infinity();
   Vec3 beta(1.0f);
@@ -30,7 +36,14 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const {
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
     ++res.rays;
-    if (!scene_.intersect(ray, &hit)) {
+    bool found;
+    if (depth == 0 && first) {
+      found = first_found;
+      if (found) hit = *first;
+    } else {
+      found = scene_.intersect(ray, &hit);
+    }
+    if (!found) {
       const Vec3& env = lights_.environment();
       if (!is_black(env)) {
         float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf());

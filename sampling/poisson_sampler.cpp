@@ -148,7 +148,8 @@ class PoissonSampler final : public Sampler {
     unsigned sym;
     locate(px, py, bounce, t, P, a, b, k, cell, sym);
     uint32_t count = t.cell_count[k][cell];
-    uint64_t i = uint64_t(index) % count;  // past the prefix: repeat (samples_available says where)
+    uint64_t i = uint64_t(index);
+    if (i >= count) i %= count;  // past the prefix: repeat (samples_available says where)
     const uint32_t* c = &t.coords[k][std::size_t(t.cell_start[k][cell] + i) * 2];
     int oa = a, ob = b;
     inverse_symmetry_pixel(sym, P, oa, ob);

@@ -150,7 +150,7 @@ TEST(CliRender, InterruptWritesPartialImage) {
   fs::path d = scratch_dir("render_int");
   fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
   fs::path out = d / "out.exr";
-  std::string cmd = "timeout --preserve-status -s INT 1 '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
+  std::string cmd = "timeout --preserve-status -s INT 3 '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
                     out.string() + " --spp 4096 --quiet 2>/dev/null";
   int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -77,15 +77,18 @@ class PoissonSampler final : public Sampler {
     return unit_clamp(x);
   }
 
-  // The same arithmetic as get_2d/get_1d/pixel_sample, with the per-stream part done once.
+  // get_2d/get_1d/pixel_sample with the per-stream part done once. Their steps (offset,
+  // flip, subtract the pixel) are exact in double for 32-bit fixed point and tiles below
+  // 2^20 pixels, so one multiply-add by +-2^-32 gives the same bits.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     if (opt_.toroidal_shift && f != Family::Pixel) {
       out->coords = nullptr;
       return;
     }
     const SampleTable& t = *tables_.family[int(f)];
-    out->dim = uint8_t(t.dim);
+    out->shift = t.dim == 2 ? 1 : 0;
     unsigned sym;
+    double base[2] = {0, 0}, origin[2] = {0, 0}, size = 1.0;
     if (f == Family::Pixel) {
       const int P = int(t.params.tile);
       int a, b, oa, ob;
@@ -95,22 +98,21 @@ class PoissonSampler final : public Sampler {
       inverse_symmetry_pixel(sym, P, oa, ob);
       out->coords = &t.coords[k][std::size_t(t.cell_start[k][cell]) * 2];
       out->count = t.cell_count[k][cell];
-      out->base[0] = oa, out->base[1] = ob;
-      out->size = double(P);
-      out->origin[0] = a, out->origin[1] = b;
+      base[0] = oa, base[1] = ob, origin[0] = a, origin[1] = b, size = double(P);
     } else {
       uint64_t h = stream(px, py, f, bounce);
       out->coords = t.coords[pick(h, t.table_count())].data();
       out->count = t.params.points;
-      out->base[0] = out->base[1] = 0.0;
-      out->size = 1.0;
-      out->origin[0] = out->origin[1] = 0.0;
       sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
     }
     const bool swap = sym & 1;
-    out->src[0] = swap ? 1 : 0, out->src[1] = swap ? 0 : 1;
-    if (swap) std::swap(out->base[0], out->base[1]);
-    out->flip[0] = sym & 2, out->flip[1] = sym & 4;
+    if (swap) std::swap(base[0], base[1]);
+    for (int k = 0; k < 2; ++k) {
+      const bool flip = sym & (2u << k);
+      out->src[k] = uint8_t(swap ? 1 - k : k);
+      out->off[k] = (flip ? size - base[k] : base[k]) - origin[k];
+      out->mul[k] = flip ? -kFixed : kFixed;
+    }
   }
 
   int64_t samples_available(int px, int py) const override {

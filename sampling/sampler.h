@@ -34,23 +34,20 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 uint64_t shuffle_index(uint64_t index, uint64_t stream);
 
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
-// one table read and a symmetry (pbrt-v4 does such per-pixel work in StartPixelSample).
-// Axis k of value i: v = base[k] + coords[i * dim + src[k]] * 2^-32, then size - v when
-// flip[k], then v - origin[k], clamped to [0, 1). Fields are left uninitialised on purpose:
-// PixelSample keeps 160 of them per thread and fills one only when its stream is first used.
+// one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
+// Axis k of value i: off[k] + mul[k] * coords[(i << shift) + src[k]], clamped to [0, 1).
+// Fields are left uninitialised on purpose: PixelSample keeps 160 of them per thread and
+// fills one only when its stream is first used.
 struct PreparedStream {
   const uint32_t* coords;  // null: nothing prepared, ask the sampler
   uint32_t count;          // indices below count are stored
-  uint8_t dim;
+  uint8_t shift;           // log2 of the values per point
   uint8_t src[2];
-  bool flip[2];
-  double base[2], size, origin[2];
+  double off[2], mul[2];
 
   double value(int64_t index, int k) const {
-    constexpr double kFixed = 0x1.0p-32, kBelowOne = 0x1.fffffffffffffp-1;
-    double v = base[k] + coords[std::size_t(index) * dim + src[k]] * kFixed;
-    v = flip[k] ? size - v : v;
-    v -= origin[k];
+    constexpr double kBelowOne = 0x1.fffffffffffffp-1;
+    double v = off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]);
     return v < 0.0 ? 0.0 : v < 1.0 ? v : kBelowOne;
   }
 };

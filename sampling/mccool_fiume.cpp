@@ -13,6 +13,7 @@
 // only saved darts; with bulk skipping it is not needed.)
 #include "generator.h"
 #include "neighbor_grid.h"
+#include "point_grid_2d.h"
 #include "rng.h"
 
 #include <algorithm>
@@ -30,7 +31,7 @@ class Relaxation {
  public:
   Relaxation(const GeneratorParams& p)
       : p_(p), dim_(p.dim), n_(*p.count), grid_(p.dim, p.periodic, 1.0, std::size_t(*p.count)),
-        rng_(p.seed, 0x6d63636f), attempts_(double(p.attempts.value_or(30))),
+        grid2_(p.periodic), rng_(p.seed, 0x6d63636f), attempts_(double(p.attempts.value_or(30))),
         magnification_(p.magnification.value_or(128.0)) {
     ps_.dim = dim_;
     ps_.coords.reserve(std::size_t(n_) * dim_);
@@ -65,7 +66,8 @@ class Relaxation {
   }
 
   void place(const double* x, double r) {
-    grid_.insert(uint32_t(ps_.size()), x);
+    if (dim_ == 2) grid2_.insert(x[0], x[1]);
+    else grid_.insert(uint32_t(ps_.size()), x);
     ps_.coords.insert(ps_.coords.end(), x, x + dim_);
     ps_.radius.push_back(r);
     misses_ = 0;
@@ -88,7 +90,10 @@ class Relaxation {
 
   // Adds points at minimum distance r until the domain is full (or count is reached).
   void fill(double r) {
-    if (r < 0.8 * grid_.reach() || grid_.reach() < r) {
+    if (dim_ == 2 && grid2_.resolution() != PointGrid2D::cells_for(r)) {
+      grid2_.reset(r);  // cells as small as r allows: fewer points per query
+      for (std::size_t i = 0; i < ps_.size(); ++i) grid2_.insert(ps_.coords[2 * i], ps_.coords[2 * i + 1]);
+    } else if (dim_ != 2 && (r < 0.8 * grid_.reach() || grid_.reach() < r)) {
       grid_.reset(r, std::size_t(n_));
       for (std::size_t i = 0; i < ps_.size(); ++i) grid_.insert(uint32_t(i), ps_.coords.data() + i * dim_);
     }
@@ -105,7 +110,7 @@ class Relaxation {
       double x[kMaxDim];
       while (!done() && misses_ < budget()) {
         for (int k = 0; k < dim_; ++k) x[k] = rng_.uniform();
-        if (grid_.any_closer(x, r2)) ++misses_;
+        if (any_closer(x, r2)) ++misses_;
         else place(x, r);
       }
       return;
@@ -139,7 +144,7 @@ class Relaxation {
         if (misses_ >= budget()) return;  // McCool §4: no space found in time, shrink the radius
         std::size_t a = rng_.below(active.size());
         for (int k = 0; k < dim_; ++k) x[k] = (active[a].idx[k] + rng_.uniform()) * side;
-        if (grid_.any_closer(x, r2)) {
+        if (any_closer(x, r2)) {
           ++fails;
           if (++misses_ >= budget()) return;
           continue;
@@ -169,10 +174,46 @@ class Relaxation {
     return idx;
   }
 
+  // True when a point is closer than sqrt(r2) to x (McCool §4's dart test).
+  bool any_closer(const double* x, double r2) const {
+    if (dim_ != 2) return grid_.any_closer(x, r2);
+    return any_near_2d(x[0], x[1], [&](double ex, double ey, const double*) { return ex * ex + ey * ey < r2; });
+  }
+
+  // PointGrid2D::any_near, or a scan of every point while the grid is too coarse for it
+  // (the first few dozen points). Same differences as axis_delta either way.
+  template <class F>
+  [[gnu::always_inline]] bool any_near_2d(double x, double y, F&& f) const {
+    if (grid2_.resolution() >= PointGrid2D::kMinCells) return grid2_.any_near(x, y, f);
+    for (std::size_t i = 0; i < ps_.size(); ++i) {
+      const double* q = ps_.coords.data() + 2 * i;
+      if (f(axis_delta(x, q[0], p_.periodic), axis_delta(y, q[1], p_.periodic), q)) return true;
+    }
+    return false;
+  }
+
+  // covered() in 2-D: the same tests on the flat grid; the hint is the covering point's
+  // coordinates.
+  bool covered_2d(const Cell& c, double side, double r2) {
+    const double x = (c.idx[0] + 0.5) * side, y = (c.idx[1] + 0.5) * side, h = side / 2.0;
+    // |x - q| = |q - x| bit for bit, so the grid's differences serve covers() too.
+    auto covers = [&](double ex, double ey) {
+      const double dx = std::abs(ex) + h, dy = std::abs(ey) + h;
+      return dx * dx + dy * dy < r2;
+    };
+    if (has_hint_ && covers(axis_delta(hint_xy_[0], x, p_.periodic), axis_delta(hint_xy_[1], y, p_.periodic))) return true;
+    return any_near_2d(x, y, [&](double ex, double ey, const double* q) {
+      if (ex * ex + ey * ey >= r2 || !covers(ex, ey)) return false;
+      hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
+      return true;
+    });
+  }
+
   // True when one point's disk contains the whole cell (its farthest corner is within r).
   // Neighbouring cells are usually covered by the same point, so the last one found is
   // tried first.
   bool covered(const Cell& c, double side, double r2) {
+    if (dim_ == 2) return covered_2d(c, side, r2);
     double centre[kMaxDim];
     for (int k = 0; k < dim_; ++k) centre[k] = (c.idx[k] + 0.5) * side;
     auto covers = [&](const double* q) {
@@ -194,7 +235,8 @@ class Relaxation {
   const GeneratorParams& p_;
   int dim_;
   int64_t n_;
-  NeighborGrid grid_;
+  NeighborGrid grid_;    // neighbour search in 1-D and 3-D and up
+  PointGrid2D grid2_;    // and in 2-D
   Rng rng_;
   PointSet ps_;
   double attempts_, magnification_;
@@ -202,6 +244,8 @@ class Relaxation {
   std::size_t log_cells_ = 0;
   double log_volume_ = 0.0, log_miss_ = 0.0;  // darts_to_hit's cache of log(1 - v)
   std::size_t hint_ = 0;  // index of the point that covered the last cell
+  double hint_xy_[2] = {0.0, 0.0};  // 2-D: coordinates of that point
+  bool has_hint_ = false;
 };
 
 }  // namespace

@@ -121,6 +121,7 @@ class Relaxation {
     if (fine)
       for (std::size_t i = 0; i < ps_.size(); ++i) occupied[flat(ps_.coords.data() + i * dim_, m)] = 1;
     double side = 1.0 / m;
+    if (dim_ == 2) mark_covered_2d(occupied, m, r2);
     for (std::size_t c = 0; c < occupied.size(); ++c) {
       if (occupied[c]) continue;
       Cell cell;
@@ -128,7 +129,7 @@ class Relaxation {
       for (int k = 0; k < dim_; ++k) cell.idx[k] = uint32_t(rest % m), rest /= m;
       // The domain was full at the previous radius, so most cells are still covered. Above
       // 3-D the 3^n-cell coverage query costs more than the darts it saves.
-      if (dim_ > 3 || !covered(cell, side, r2)) active.push_back(cell);
+      if (dim_ == 2 || dim_ > 3 || !covered(cell, side, r2)) active.push_back(cell);
     }
     // Refinement shrinks the free area geometrically per level (Ebeida et al. 2011); seven
     // levels in 2-D leave only slivers, which the next, slightly smaller radius picks up.
@@ -157,6 +158,12 @@ class Relaxation {
       std::vector<Cell> next;
       double half = side / 2.0;
       for (const Cell& c : active) {
+        if (dim_ == 2) {
+          const unsigned kept = ~covered_quad(c.idx[0] * 2, c.idx[1] * 2, half, 0xfu, r2);
+          for (unsigned b = 0; b < 4; ++b)
+            if (kept >> b & 1) next.push_back(Cell{{2 * c.idx[0] + (b & 1), 2 * c.idx[1] + (b >> 1)}});
+          continue;
+        }
         for (int child = 0; child < (1 << dim_); ++child) {
           Cell ch;
           for (int k = 0; k < dim_; ++k) ch.idx[k] = 2 * c.idx[k] + ((child >> k) & 1);
@@ -207,6 +214,67 @@ class Relaxation {
       hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
       return true;
     });
+  }
+
+  // 2-D level 0: marks the free cells (0 in `state`, m x m of side 1/m) that one disk
+  // covers, 2x2 cells at a time, so that the caller lists the rest in raster order.
+  void mark_covered_2d(std::vector<char>& state, int m, double r2) {
+    const double side = 1.0 / m;
+    for (int y = 0; y < m; y += 2)
+      for (int x = 0; x < m; x += 2) {
+        unsigned want = 0;
+        for (unsigned b = 0; b < 4; ++b) {
+          const int cx = x + int(b & 1), cy = y + int(b >> 1);
+          if (cx < m && cy < m && !state[std::size_t(cy) * m + cx]) want |= 1u << b;
+        }
+        if (!want) continue;
+        const unsigned got = covered_quad(uint32_t(x), uint32_t(y), side, want, r2);
+        for (unsigned b = 0; b < 4; ++b)
+          if (got >> b & 1) state[std::size_t(y + (b >> 1)) * m + x + (b & 1)] = 2;
+      }
+  }
+
+  // covered_2d for the 2x2 cells of side `side` with corner cell (ix, iy), only those in
+  // `want`: bit bx + 2 by set when cell (ix + bx, iy + by) is covered. The cells are
+  // smaller than the grid's, so one walk over the (at most 4x4) union of their centres'
+  // blocks tests all four (the same tests, in another order).
+  unsigned covered_quad(uint32_t ix, uint32_t iy, double side, unsigned want, double r2) {
+    const double xs[2] = {(ix + 0.5) * side, (ix + 1 + 0.5) * side}, ys[2] = {(iy + 0.5) * side, (iy + 1 + 0.5) * side};
+    const double h = side / 2.0;
+    auto covers = [&](double ex, double ey) {
+      const double dx = std::abs(ex) + h, dy = std::abs(ey) + h;
+      return dx * dx + dy * dy < r2;
+    };
+    unsigned got = 0;
+    if (has_hint_)
+      for (unsigned b = 0; b < 4; ++b)
+        if ((want >> b & 1) && covers(axis_delta(hint_xy_[0], xs[b & 1], p_.periodic), axis_delta(hint_xy_[1], ys[b >> 1], p_.periodic)))
+          got |= 1u << b;
+    if (got == want) return got;
+    if (grid2_.resolution() < PointGrid2D::kMinCells) {
+      for (unsigned b = 0; b < 4; ++b)
+        if ((want & ~got) >> b & 1 && covered_2d(Cell{{ix + (b & 1), iy + (b >> 1)}}, side, r2)) got |= 1u << b;
+      return got;
+    }
+    // A point whose disk holds a cell is within r - h of its centre (the far corner is at
+    // least h farther), so within r - h + h sqrt(2) < r + h/2 of the quad's centre: one
+    // cheap test drops most of the block.
+    const double px = (ix + 1) * side, py = (iy + 1) * side, lim2 = (r2 > 0 ? (std::sqrt(r2) + h / 2) : 0.0);
+    const double near2 = lim2 * lim2;
+    grid2_.any_in_block(grid2_.cell(xs[0]), grid2_.cell(xs[1]), grid2_.cell(ys[0]), grid2_.cell(ys[1]), [&](const double* q, double sx, double sy) {
+      const double gx = (px - q[0]) + sx, gy = (py - q[1]) + sy;
+      if (gx * gx + gy * gy > near2) return false;
+      const double ex[2] = {(xs[0] - q[0]) + sx, (xs[1] - q[0]) + sx}, ey[2] = {(ys[0] - q[1]) + sy, (ys[1] - q[1]) + sy};
+      for (unsigned b = 0; b < 4; ++b) {
+        if (!((want & ~got) >> b & 1)) continue;
+        const double e = ex[b & 1], f = ey[b >> 1];
+        if (e * e + f * f >= r2 || !covers(e, f)) continue;
+        got |= 1u << b;
+        hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
+      }
+      return got == want;
+    });
+    return got;
   }
 
   // True when one point's disk contains the whole cell (its farthest corner is within r).

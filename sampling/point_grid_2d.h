@@ -52,30 +52,49 @@ class PointGrid2D {
   template <class F>
   [[gnu::always_inline]] bool any_near(double x, double y, F&& f) const {
     const int cx = cell(x), cy = cell(y);
-    int col[3] = {cx, cx + 1, cx + 2}, row[3] = {cy, cy + 1, cy + 2};  // border-padded indices
-    double sx[3] = {0.0, 0.0, 0.0}, sy[3] = {0.0, 0.0, 0.0};
-    if (periodic_) {
-      if (cx == 0) col[0] = res_, sx[0] = 1.0;
-      if (cx == res_ - 1) col[2] = 1, sx[2] = -1.0;
-      if (cy == 0) row[0] = res_, sy[0] = 1.0;
-      if (cy == res_ - 1) row[2] = 1, sy[2] = -1.0;
-    }
-    for (int j = 0; j < 3; ++j) {
+    return any_in_block(cx, cx, cy, cy, [&](const double* q, double sx, double sy) {
+      return f((x - q[0]) + sx, (y - q[1]) + sy, q);
+    });
+  }
+
+  // The walk behind any_near, for the block of cells within one of columns cx0..cx1 and
+  // rows cy0..cy1 (cx1 - cx0 and cy1 - cy0 are 0 or 1, so with kMinCells no cell comes
+  // twice): f(q, sx, sy) gets each point and the period shifts that make
+  // (x - q[0]) + sx, (y - q[1]) + sy the wrapped differences for (x, y) in those columns
+  // and rows (wrong only for pairs at least a quarter period apart, beyond any reach).
+  template <class F>
+  [[gnu::always_inline]] bool any_in_block(int cx0, int cx1, int cy0, int cy1, F&& f) const {
+    int col[4], row[4];
+    double sx[4], sy[4];
+    const int nx = span(cx0, cx1, col, sx), ny = span(cy0, cy1, row, sy);
+    for (int j = 0; j < ny; ++j) {
       const std::size_t base = std::size_t(row[j]) * std::size_t(stride_);
-      for (int i = 0; i < 3; ++i) {
+      for (int i = 0; i < nx; ++i) {
         const std::size_t c = base + std::size_t(col[i]);
         const double* q = &xy_[c * slots_ * 2];
-        for (int n = count_[c]; n > 0; --n, q += 2) {
-          const double ey = (y - q[1]) + sy[j], ex = (x - q[0]) + sx[i];
-          if (f(ex, ey, q)) return true;
-        }
+        for (int n = count_[c]; n > 0; --n, q += 2)
+          if (f(q, sx[i], sy[j])) return true;
       }
     }
     return false;
   }
 
- private:
+  // Column (row) of a coordinate.
   int cell(double x) const { return std::min(int(x * res_), res_ - 1); }
+
+ private:
+  // Border-padded indices of cells c0 - 1 .. c1 + 1 along one axis and their period shifts;
+  // returns how many.
+  [[gnu::always_inline]] int span(int c0, int c1, int* idx, double* shift) const {
+    const int n = c1 - c0 + 3;
+    for (int i = 0; i < n; ++i) {
+      const int c = c0 - 1 + i;
+      idx[i] = c + 1, shift[i] = 0.0;
+      if (periodic_ && c < 0) idx[i] += res_, shift[i] = 1.0;
+      if (periodic_ && c >= res_) idx[i] -= res_, shift[i] = -1.0;
+    }
+    return n;
+  }
   std::size_t index(int cx, int cy) const { return std::size_t(cy + 1) * std::size_t(stride_) + std::size_t(cx + 1); }
 
   // A cell is full: double every cell's slots (only if the caller's spacing is smaller

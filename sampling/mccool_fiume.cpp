@@ -98,6 +98,7 @@ class Relaxation {
       for (std::size_t i = 0; i < ps_.size(); ++i) grid_.insert(uint32_t(i), ps_.coords.data() + i * dim_);
     }
     const double r2 = r * r;
+    r_ = r;
     // In 1-D/2-D, cells of side r/sqrt(n) hold at most one point and an occupied cell is
     // covered. Above that such cells outnumber the points (54 per point in 5-D), so start
     // from cells of side r and let refinement do the rest.
@@ -184,14 +185,19 @@ class Relaxation {
   // True when a point is closer than sqrt(r2) to x (McCool §4's dart test).
   bool any_closer(const double* x, double r2) const {
     if (dim_ != 2) return grid_.any_closer(x, r2);
-    return any_near_2d(x[0], x[1], [&](double ex, double ey, const double*) { return ex * ex + ey * ey < r2; });
+    return any_near_2d(x[0], x[1], r_, [&](double ex, double ey, const double*) { return ex * ex + ey * ey < r2; });
   }
 
-  // PointGrid2D::any_near, or a scan of every point while the grid is too coarse for it
-  // (the first few dozen points). Same differences as axis_delta either way.
+  // f(ex, ey, q) with (ex, ey) = (x, y) - q wrapped, for every point q within `reach` (and
+  // some farther, and sentinels) until f returns true: the grid's box, or a scan of every
+  // point while the grid is too coarse for it (the first few dozen points). The
+  // differences are axis_delta's either way.
   template <class F>
-  [[gnu::always_inline]] bool any_near_2d(double x, double y, F&& f) const {
-    if (grid2_.resolution() >= PointGrid2D::kMinCells) return grid2_.any_near(x, y, f);
+  [[gnu::always_inline]] bool any_near_2d(double x, double y, double reach, F&& f) const {
+    if (grid2_.resolution() >= PointGrid2D::kMinCells)
+      return grid2_.any_in_box(x - reach, x + reach, y - reach, y + reach, [&](const double* q, double sx, double sy) {
+        return f((x - q[0]) + sx, (y - q[1]) + sy, q);
+      });
     for (std::size_t i = 0; i < ps_.size(); ++i) {
       const double* q = ps_.coords.data() + 2 * i;
       if (f(axis_delta(x, q[0], p_.periodic), axis_delta(y, q[1], p_.periodic), q)) return true;
@@ -209,7 +215,7 @@ class Relaxation {
       return dx * dx + dy * dy < r2;
     };
     if (has_hint_ && covers(axis_delta(hint_xy_[0], x, p_.periodic), axis_delta(hint_xy_[1], y, p_.periodic))) return true;
-    return any_near_2d(x, y, [&](double ex, double ey, const double* q) {
+    return any_near_2d(x, y, r_, [&](double ex, double ey, const double* q) {
       if (ex * ex + ey * ey >= r2 || !covers(ex, ey)) return false;
       hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
       return true;
@@ -235,9 +241,8 @@ class Relaxation {
   }
 
   // covered_2d for the 2x2 cells of side `side` with corner cell (ix, iy), only those in
-  // `want`: bit bx + 2 by set when cell (ix + bx, iy + by) is covered. The cells are
-  // smaller than the grid's, so one walk over the (at most 4x4) union of their centres'
-  // blocks tests all four (the same tests, in another order).
+  // `want`: bit bx + 2 by set when cell (ix + bx, iy + by) is covered. One walk over the
+  // grid cells near the quad tests all four (the same tests, in another order).
   unsigned covered_quad(uint32_t ix, uint32_t iy, double side, unsigned want, double r2) {
     const double xs[2] = {(ix + 0.5) * side, (ix + 1 + 0.5) * side}, ys[2] = {(iy + 0.5) * side, (iy + 1 + 0.5) * side};
     const double h = side / 2.0;
@@ -259,9 +264,8 @@ class Relaxation {
     // A point whose disk holds a cell is within r - h of its centre (the far corner is at
     // least h farther), so within r - h + h sqrt(2) < r + h/2 of the quad's centre: one
     // cheap test drops most of the block.
-    const double px = (ix + 1) * side, py = (iy + 1) * side, lim2 = (r2 > 0 ? (std::sqrt(r2) + h / 2) : 0.0);
-    const double near2 = lim2 * lim2;
-    grid2_.any_in_block(grid2_.cell(xs[0]), grid2_.cell(xs[1]), grid2_.cell(ys[0]), grid2_.cell(ys[1]), [&](const double* q, double sx, double sy) {
+    const double px = (ix + 1) * side, py = (iy + 1) * side, lim = r_ + h / 2, near2 = lim * lim;
+    grid2_.any_in_box(px - lim, px + lim, py - lim, py + lim, [&](const double* q, double sx, double sy) {
       const double gx = (px - q[0]) + sx, gy = (py - q[1]) + sy;
       if (gx * gx + gy * gy > near2) return false;
       const double ex[2] = {(xs[0] - q[0]) + sx, (xs[1] - q[0]) + sx}, ey[2] = {(ys[0] - q[1]) + sy, (ys[1] - q[1]) + sy};
@@ -311,6 +315,7 @@ class Relaxation {
   double misses_ = 0;      // consecutive missed darts at the current radius
   std::size_t log_cells_ = 0;
   double log_volume_ = 0.0, log_miss_ = 0.0;  // darts_to_hit's cache of log(1 - v)
+  double r_ = 0.0;        // the radius of the current step
   std::size_t hint_ = 0;  // index of the point that covered the last cell
   double hint_xy_[2] = {0.0, 0.0};  // 2-D: coordinates of that point
   bool has_hint_ = false;

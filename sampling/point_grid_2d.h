@@ -1,19 +1,20 @@
 #pragma once
-// Flat uniform 2-D grid for minimum-distance queries at one radius: the "grid-accelerated
-// neighbour search" of McCool–Fiume §4 (Bridson 2007 step 0), specialised for 2-D. Cells
-// are at least `reach` wide, so every point within `reach` of a query lies in the 3x3 block
-// around its cell. Each cell keeps its points' coordinates in one contiguous run of slots;
-// a cell narrower than sqrt(2) times the points' spacing holds at most 4 of them (5 points
-// in a square of side s are within s/sqrt(2) of each other), more grow the slots.
+// Flat uniform 2-D grid for minimum-distance queries: the "grid-accelerated neighbour
+// search" of McCool–Fiume §4 with Bridson 2007's background grid (step 0), specialised for
+// 2-D. Cells are narrower than r / sqrt(2) for the spacing r of the stored points, so a
+// cell holds at most one point, stored in place (two doubles); empty cells hold a sentinel
+// far from the domain, so a query walks a fixed block of cells with no per-cell counts or
+// bounds checks. A border of padding cells holds, when periodic, copies of the cells
+// across the torus edge.
 //
-// Per-axis differences are the floating-point operations of axis_delta(): x - q, plus one
-// period when the neighbour cell lies across the torus edge. With at least 4 cells per axis
-// that is axis_delta's wrap for every pair within one cell width (wider pairs differ only
-// when both are at least half a period apart), so query results are bit-identical to the
-// per-point modulo.
+// Queries hand out each point with the period shift of the cell it was found in: the
+// difference (x - q) + shift is the same floating-point operation as axis_delta()'s
+// per-point wrap for every pair within a quarter period, and every query here reaches
+// less than that (kMinCells), so results are bit-identical to the per-point modulo.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace pdrt {
@@ -22,96 +23,71 @@ class PointGrid2D {
  public:
   explicit PointGrid2D(bool periodic) : periodic_(periodic) {}
 
-  // Cells per axis for a reach: the most whose side is still >= reach (a hair of slack so
-  // rounding in the cell index never puts a point within reach two cells away).
-  static int cells_for(double reach) { return std::max(1, int(std::floor(1.0 / (reach * (1.0 + 1e-9))))); }
-  // Below this many cells per axis the 3x3 block wraps onto itself; callers scan instead.
-  static constexpr int kMinCells = 4;
+  // Cells per axis for points spaced at least r apart: the fewest whose side is below
+  // r / sqrt(2) (with a hair of slack for rounding).
+  static int cells_for(double r) { return int(std::floor(std::sqrt(2.0) / r * (1.0 + 1e-9))) + 1; }
+  // Below this the padding or a quarter period is narrower than a query; callers scan.
+  static constexpr int kMinCells = 16;
 
-  // Empties the grid and sizes its cells for `reach`.
-  void reset(double reach) {
-    res_ = cells_for(reach);
-    stride_ = res_ + 2;  // one empty border cell on each side: no bounds checks
-    count_.assign(std::size_t(stride_) * std::size_t(stride_), 0);
-    slots_ = 4;
-    xy_.assign(count_.size() * 2 * slots_, 0.0);
+  // Empties the grid and sizes its cells for spacing r.
+  void reset(double r) {
+    res_ = cells_for(r);
+    stride_ = res_ + 2 * kPad;
+    xy_.assign(std::size_t(stride_) * std::size_t(stride_) * 2, kEmpty);
+    shift_.assign(std::size_t(stride_), 0.0);
+    if (periodic_)
+      for (int c = 0; c < kPad; ++c) shift_[std::size_t(c)] = 1.0, shift_[std::size_t(res_ + kPad + c)] = -1.0;
   }
 
   int resolution() const { return res_; }
 
+  // Adds a point at least r (of the last reset) from every stored one.
   void insert(double x, double y) {
-    std::size_t c = index(cell(x), cell(y));
-    if (count_[c] == slots_) grow();
-    double* q = &xy_[(c * slots_ + count_[c]++) * 2];
-    q[0] = x, q[1] = y;
-  }
-
-  // Calls f(ex, ey, q) with (ex, ey) the wrapped difference (x, y) - q for every stored point
-  // q in the 3x3 block around (x, y); stops at the first call that returns true and says
-  // whether one did. Needs resolution() >= kMinCells.
-  template <class F>
-  [[gnu::always_inline]] bool any_near(double x, double y, F&& f) const {
-    const int cx = cell(x), cy = cell(y);
-    return any_in_block(cx, cx, cy, cy, [&](const double* q, double sx, double sy) {
-      return f((x - q[0]) + sx, (y - q[1]) + sy, q);
-    });
-  }
-
-  // The walk behind any_near, for the block of cells within one of columns cx0..cx1 and
-  // rows cy0..cy1 (cx1 - cx0 and cy1 - cy0 are 0 or 1, so with kMinCells no cell comes
-  // twice): f(q, sx, sy) gets each point and the period shifts that make
-  // (x - q[0]) + sx, (y - q[1]) + sy the wrapped differences for (x, y) in those columns
-  // and rows (wrong only for pairs at least a quarter period apart, beyond any reach).
-  template <class F>
-  [[gnu::always_inline]] bool any_in_block(int cx0, int cx1, int cy0, int cy1, F&& f) const {
-    int col[4], row[4];
-    double sx[4], sy[4];
-    const int nx = span(cx0, cx1, col, sx), ny = span(cy0, cy1, row, sy);
-    for (int j = 0; j < ny; ++j) {
-      const std::size_t base = std::size_t(row[j]) * std::size_t(stride_);
-      for (int i = 0; i < nx; ++i) {
-        const std::size_t c = base + std::size_t(col[i]);
-        const double* q = &xy_[c * slots_ * 2];
-        for (int n = count_[c]; n > 0; --n, q += 2)
-          if (f(q, sx[i], sy[j])) return true;
+    const int cx = std::min(int(x * res_), res_ - 1), cy = std::min(int(y * res_), res_ - 1);
+    put(cx, cy, x, y, true);
+    if (!periodic_) return;
+    // Ghost copies in the padding across each edge the cell is near.
+    for (int oy = -1; oy <= 1; ++oy)
+      for (int ox = -1; ox <= 1; ++ox) {
+        const int gx = cx + ox * res_, gy = cy + oy * res_;
+        if ((ox || oy) && gx >= -kPad && gx < res_ + kPad && gy >= -kPad && gy < res_ + kPad) put(gx, gy, x, y, false);
       }
+  }
+
+  // Calls f(q, sx, sy) for the point or sentinel q of every cell meeting the square
+  // [x0, x1] x [y0, y1] (extending at most a quarter period past the domain), with sx, sy
+  // the period shifts that make (x - q[0]) + sx, (y - q[1]) + sy the wrapped differences
+  // for (x, y) in that square. Stops at the first call that returns true and says whether
+  // one did. Sentinels are > 10^6 away: a distance test rejects them.
+  template <class F>
+  [[gnu::always_inline]] bool any_in_box(double x0, double x1, double y0, double y1, F&& f) const {
+    const int c0 = col(x0), c1 = col(x1), r0 = col(y0), r1 = col(y1);
+    for (int j = r0; j <= r1; ++j) {
+      const double* row = &xy_[std::size_t(j) * std::size_t(stride_) * 2];
+      const double sy = shift_[std::size_t(j)];
+      for (int i = c0; i <= c1; ++i)
+        if (f(row + 2 * i, shift_[std::size_t(i)], sy)) return true;
     }
     return false;
   }
 
-  // Column (row) of a coordinate.
-  int cell(double x) const { return std::min(int(x * res_), res_ - 1); }
-
  private:
-  // Border-padded indices of cells c0 - 1 .. c1 + 1 along one axis and their period shifts;
-  // returns how many.
-  [[gnu::always_inline]] int span(int c0, int c1, int* idx, double* shift) const {
-    const int n = c1 - c0 + 3;
-    for (int i = 0; i < n; ++i) {
-      const int c = c0 - 1 + i;
-      idx[i] = c + 1, shift[i] = 0.0;
-      if (periodic_ && c < 0) idx[i] += res_, shift[i] = 1.0;
-      if (periodic_ && c >= res_) idx[i] -= res_, shift[i] = -1.0;
-    }
-    return n;
-  }
-  std::size_t index(int cx, int cy) const { return std::size_t(cy + 1) * std::size_t(stride_) + std::size_t(cx + 1); }
+  static constexpr int kPad = 4;
+  static constexpr double kEmpty = 1e7;
 
-  // A cell is full: double every cell's slots (only if the caller's spacing is smaller
-  // than the cells assume).
-  [[gnu::noinline]] void grow() {
-    std::vector<double> wide(xy_.size() * 2, 0.0);
-    for (std::size_t c = 0; c < count_.size(); ++c)
-      for (unsigned k = 0; k < 2u * count_[c]; ++k) wide[c * slots_ * 4 + k] = xy_[c * slots_ * 2 + k];
-    xy_.swap(wide);
-    slots_ *= 2;
+  // Padded column (row) of a coordinate in [-kPad / res, 1 + kPad / res).
+  int col(double x) const { return int(x * res_ + kPad); }
+
+  void put(int cx, int cy, double x, double y, bool own) {
+    double* q = &xy_[(std::size_t(cy + kPad) * std::size_t(stride_) + std::size_t(cx + kPad)) * 2];
+    if (own && q[0] != kEmpty) throw std::logic_error("PointGrid2D: two points in one cell (closer than the grid's spacing)");
+    q[0] = x, q[1] = y;
   }
 
   bool periodic_;
   int res_ = 0, stride_ = 0;
-  unsigned slots_ = 4;
-  std::vector<uint16_t> count_;  // points per cell
-  std::vector<double> xy_;      // cell c's points at [c * slots_ * 2, ...), x then y
+  std::vector<double> xy_;     // (x, y) of each padded cell's point, or kEmpty
+  std::vector<double> shift_;  // period shift of each padded column (= row)
 };
 
 }  // namespace pdrt

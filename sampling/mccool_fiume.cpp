@@ -117,8 +117,11 @@ class Relaxation {
       return;
     }
     // Level-0 cells: every cell not already holding a point (cell diagonal <= r).
-    std::vector<Cell> active;
-    std::vector<char> occupied(std::size_t(cells), 0);
+    // Member buffers, reused across radius steps (no reallocation per step).
+    std::vector<Cell>& active = active_;
+    std::vector<char>& occupied = occupied_;
+    active.clear();
+    occupied.assign(std::size_t(cells), 0);
     if (fine)
       for (std::size_t i = 0; i < ps_.size(); ++i) occupied[flat(ps_.coords.data() + i * dim_, m)] = 1;
     double side = 1.0 / m;
@@ -156,7 +159,8 @@ class Relaxation {
         active.pop_back();
       }
       // Halve every remaining cell; keep children no disk covers entirely.
-      std::vector<Cell> next;
+      std::vector<Cell>& next = next_;
+      next.clear();
       double half = side / 2.0;
       for (const Cell& c : active) {
         if (dim_ == 2) {
@@ -316,6 +320,8 @@ class Relaxation {
   std::size_t log_cells_ = 0;
   double log_volume_ = 0.0, log_miss_ = 0.0;  // darts_to_hit's cache of log(1 - v)
   double r_ = 0.0;        // the radius of the current step
+  std::vector<Cell> active_, next_;  // fill()'s free cells at this and the next level
+  std::vector<char> occupied_;       // fill()'s level-0 cells: 1 holds a point, 2 covered
   std::size_t hint_ = 0;  // index of the point that covered the last cell
   double hint_xy_[2] = {0.0, 0.0};  // 2-D: coordinates of that point
   bool has_hint_ = false;

@@ -209,21 +209,19 @@ class Relaxation {
     return false;
   }
 
-  // covered() in 2-D: the same tests on the flat grid; the hint is the covering point's
-  // coordinates.
+  // covered()'s test in 2-D for a point at difference (ex, ey) from the centre of a cell of
+  // half-side h: the same expression (|x - q| = |q - x| bit for bit, so the grid's
+  // differences serve), after the cheaper centre-distance test.
+  static bool covers_2d(double ex, double ey, double h, double r2) {
+    if (ex * ex + ey * ey >= r2) return false;
+    const double dx = std::abs(ex) + h, dy = std::abs(ey) + h;
+    return dx * dx + dy * dy < r2;
+  }
+
+  // covered() in 2-D, one cell.
   bool covered_2d(const Cell& c, double side, double r2) {
     const double x = (c.idx[0] + 0.5) * side, y = (c.idx[1] + 0.5) * side, h = side / 2.0;
-    // |x - q| = |q - x| bit for bit, so the grid's differences serve covers() too.
-    auto covers = [&](double ex, double ey) {
-      const double dx = std::abs(ex) + h, dy = std::abs(ey) + h;
-      return dx * dx + dy * dy < r2;
-    };
-    if (has_hint_ && covers(axis_delta(hint_xy_[0], x, p_.periodic), axis_delta(hint_xy_[1], y, p_.periodic))) return true;
-    return any_near_2d(x, y, r_, [&](double ex, double ey, const double* q) {
-      if (ex * ex + ey * ey >= r2 || !covers(ex, ey)) return false;
-      hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
-      return true;
-    });
+    return any_near_2d(x, y, r_, [&](double ex, double ey, const double*) { return covers_2d(ex, ey, h, r2); });
   }
 
   // 2-D level 0: marks the free cells (0 in `state`, m x m of side 1/m) that one disk
@@ -250,35 +248,23 @@ class Relaxation {
   unsigned covered_quad(uint32_t ix, uint32_t iy, double side, unsigned want, double r2) {
     const double xs[2] = {(ix + 0.5) * side, (ix + 1 + 0.5) * side}, ys[2] = {(iy + 0.5) * side, (iy + 1 + 0.5) * side};
     const double h = side / 2.0;
-    auto covers = [&](double ex, double ey) {
-      const double dx = std::abs(ex) + h, dy = std::abs(ey) + h;
-      return dx * dx + dy * dy < r2;
-    };
     unsigned got = 0;
-    if (has_hint_)
-      for (unsigned b = 0; b < 4; ++b)
-        if ((want >> b & 1) && covers(axis_delta(hint_xy_[0], xs[b & 1], p_.periodic), axis_delta(hint_xy_[1], ys[b >> 1], p_.periodic)))
-          got |= 1u << b;
-    if (got == want) return got;
     if (grid2_.resolution() < PointGrid2D::kMinCells) {
       for (unsigned b = 0; b < 4; ++b)
         if ((want & ~got) >> b & 1 && covered_2d(Cell{{ix + (b & 1), iy + (b >> 1)}}, side, r2)) got |= 1u << b;
       return got;
     }
     // A point whose disk holds a cell is within r - h of its centre (the far corner is at
-    // least h farther), so within r - h + h sqrt(2) < r + h/2 of the quad's centre: one
-    // cheap test drops most of the block.
+    // least h farther): within r of the quad's centre (px, py) on each axis, and within
+    // r - h + h sqrt(2) < r + h/2 of it, a cheap test that drops most of the box.
     const double px = (ix + 1) * side, py = (iy + 1) * side, lim = r_ + h / 2, near2 = lim * lim;
-    grid2_.any_in_box(px - lim, px + lim, py - lim, py + lim, [&](const double* q, double sx, double sy) {
+    grid2_.any_in_box(px - r_, px + r_, py - r_, py + r_, [&](const double* q, double sx, double sy) {
       const double gx = (px - q[0]) + sx, gy = (py - q[1]) + sy;
       if (gx * gx + gy * gy > near2) return false;
       const double ex[2] = {(xs[0] - q[0]) + sx, (xs[1] - q[0]) + sx}, ey[2] = {(ys[0] - q[1]) + sy, (ys[1] - q[1]) + sy};
       for (unsigned b = 0; b < 4; ++b) {
         if (!((want & ~got) >> b & 1)) continue;
-        const double e = ex[b & 1], f = ey[b >> 1];
-        if (e * e + f * f >= r2 || !covers(e, f)) continue;
-        got |= 1u << b;
-        hint_xy_[0] = q[0], hint_xy_[1] = q[1], has_hint_ = true;
+        if (covers_2d(ex[b & 1], ey[b >> 1], h, r2)) got |= 1u << b;
       }
       return got == want;
     });
@@ -323,8 +309,6 @@ class Relaxation {
   std::vector<Cell> active_, next_;  // fill()'s free cells at this and the next level
   std::vector<char> occupied_;       // fill()'s level-0 cells: 1 holds a point, 2 covered
   std::size_t hint_ = 0;  // index of the point that covered the last cell
-  double hint_xy_[2] = {0.0, 0.0};  // 2-D: coordinates of that point
-  bool has_hint_ = false;
 };
 
 }  // namespace

@@ -10,7 +10,9 @@
 // darts up to the first one inside those cells is geometric in their total volume, and that
 // dart is uniform inside them. So each step costs O(free cells), not O(attempts), and the
 // paper's large attempt counts stay cheap. (The paper's "best-fitting rejected dart" shortcut
-// only saved darts; with bulk skipping it is not needed.)
+// only saved darts; with bulk skipping it is not needed.) 2-D, the tables' case, has its own
+// flat grid (point_grid_2d.h) and tests sibling cells four at a time, with the same
+// floating-point tests, so its output is bit-identical to the generic path's.
 #include "generator.h"
 #include "neighbor_grid.h"
 #include "point_grid_2d.h"
@@ -193,9 +195,9 @@ class Relaxation {
   }
 
   // f(ex, ey, q) with (ex, ey) = (x, y) - q wrapped, for every point q within `reach` (and
-  // some farther, and sentinels) until f returns true: the grid's box, or a scan of every
-  // point while the grid is too coarse for it (the first few dozen points). The
-  // differences are axis_delta's either way.
+  // some farther) until f returns true: the grid's box, or a scan of every point while the
+  // grid is too coarse for it (the first few dozen points). The differences are
+  // axis_delta's either way.
   template <class F>
   [[gnu::always_inline]] bool any_near_2d(double x, double y, double reach, F&& f) const {
     if (grid2_.resolution() >= PointGrid2D::kMinCells)
@@ -273,9 +275,8 @@ class Relaxation {
 
   // True when one point's disk contains the whole cell (its farthest corner is within r).
   // Neighbouring cells are usually covered by the same point, so the last one found is
-  // tried first.
+  // tried first. (2-D has covered_quad.)
   bool covered(const Cell& c, double side, double r2) {
-    if (dim_ == 2) return covered_2d(c, side, r2);
     double centre[kMaxDim];
     for (int k = 0; k < dim_; ++k) centre[k] = (c.idx[k] + 0.5) * side;
     auto covers = [&](const double* q) {

@@ -28,7 +28,8 @@ class PointGrid2D {
   // Cells per axis for points spaced at least r apart: the fewest whose side is below
   // r / sqrt(2) (with a hair of slack for rounding).
   static int cells_for(double r) { return int(std::floor(std::sqrt(2.0) / r * (1.0 + 1e-9))) + 1; }
-  // Below this the padding or a quarter period is narrower than a query; callers scan.
+  // Below this a query's reach (a radius plus a cell, under 3 cells) is not within a
+  // quarter period, nor kPad cells within the padding; callers scan.
   static constexpr int kMinCells = 16;
 
   // Empties the grid and sizes its cells for spacing r.
@@ -59,7 +60,7 @@ class PointGrid2D {
   }
 
   // Calls f(q, sx, sy) for the point q of every cell meeting the square [x0, x1] x [y0, y1]
-  // (extending at most a quarter period past the domain, at most 57 cells wide), with
+  // (reaching less than kPad cells past the domain, at most 57 cells wide), with
   // sx, sy the period shifts that make (x - q[0]) + sx, (y - q[1]) + sy the wrapped
   // differences for (x, y) in that square. Stops at the first call that returns true and
   // says whether one did.

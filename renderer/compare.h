@@ -16,6 +16,8 @@ struct CompareOptions {
   bool adaptive = false;
   double adaptive_threshold = 0;    // > 0 overrides the scene's (or the default) threshold
   std::string adaptive_metric;      // non-empty overrides the metric
+  std::string adaptive_variance;    // non-empty overrides the variance estimator
+  int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
   int reference_spp = 4096;
   std::string reference_sampler = "sobol";
   int threads = 0;

@@ -257,6 +257,25 @@ TEST_F(SceneLoader, MaterialTypeDefaults) {
   EXPECT_FLOAT_EQ(s.materials[3].roughness, 0);
 }
 
+TEST_F(SceneLoader, AdaptiveDefaultsLeaveTheThresholdToTheMetric) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"metric\": \"contrast\"}}\n}\n"));
+  EXPECT_TRUE(s.sampler.adaptive.enabled);
+  EXPECT_EQ(s.sampler.adaptive.threshold, 0) << "unset: the renderer uses the metric's default";
+  EXPECT_EQ(s.sampler.adaptive.variance, "samples");
+  SceneDesc d = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {}}\n}\n"));
+  EXPECT_EQ(d.sampler.adaptive.metric, "error-per-sample");
+}
+
+TEST_F(SceneLoader, AdaptiveVarianceHalves) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"halves\"}}\n}\n"));
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
+}
+
+TEST_F(SceneLoader, UnknownAdaptiveVariance) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"pixels\"}}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.variance must be one of samples, halves, got \"pixels\"");
+}
+
 TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {
   SceneDesc s = load_scene(scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
   "objects": [{"type": "quad", "material": "grey", "corner": [1, 2, 3], "edge1": [2, 0, 0], "edge2": [0, 3, 0]}]

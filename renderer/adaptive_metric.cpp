@@ -8,7 +8,7 @@ namespace pdrt {
 
 namespace {
 
-// Floors that keep a black pixel (mean 0) from demanding an error of 0.
+// Floors that keep a black pixel (or image) from demanding an error of 0.
 constexpr double kRelativeFloor = 1e-3;
 constexpr double kImageMeanFloor = 1e-4;
 
@@ -42,13 +42,17 @@ bool AdaptiveMetric::converged(const PixelAccum& p) const {
       if (p.contrast(k) > threshold_ * scale[k]) return false;
     return true;
   }
-  const double standard_error = std::sqrt(halves_ ? p.half_variance_of_mean() : p.variance_of_mean());
-  const double mean = std::abs(p.mean_luminance());
-  if (kind_ == Kind::RelativeError) return standard_error <= threshold_ * std::max(mean, kRelativeFloor);
-  // error-per-sample: relative to the pixel where it is brighter than the image's mean, else
-  // absolute at the image-mean level: a dark pixel's error is as visible (after tone mapping
-  // to the image's exposure) as it is against the mean, and it cannot run forever.
-  return standard_error <= threshold_ * std::max({mean, image_mean_, kImageMeanFloor});
+  const double var_of_mean = halves_ ? p.half_variance_of_mean() : p.variance_of_mean();
+  if (kind_ == Kind::RelativeError)
+    return std::sqrt(var_of_mean) <= threshold_ * std::max(std::abs(p.mean_luminance()), kRelativeFloor);
+  // error-per-sample: sqrt(V/n) with V the variance of the mean, i.e. sigma / n. One more
+  // sample lowers the pixel's squared error by about sigma^2 / n^2, so stopping every pixel at
+  // the same sigma / n spends the budget where it buys the most (n ~ sigma, the allocation
+  // that minimises the image's MSE). The reference is the image's mean brightness, so the
+  // threshold means the same at any exposure; a pixel's own mean is not used, because that
+  // would starve bright, noisy pixels that dominate the error (measured in docs/renderer.md).
+  const double n = p.w * p.w / p.w2;
+  return std::sqrt(var_of_mean / n) <= threshold_ * std::max(image_mean_, kImageMeanFloor);
 }
 
 }  // namespace pdrt

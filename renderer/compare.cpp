@@ -325,12 +325,13 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         }
       std::vector<double> cost, err;
       for (int k = -4; k <= 4; ++k) {
-        ad.threshold = float(std::ldexp(base_threshold, k));
+        const double threshold = std::ldexp(base_threshold, k);
+        ad.threshold = float(threshold);
         RenderResult r = render_with(s, o);
         const double e = rmse(r.image, ref), uniform = loglog_interp(x, y, r.stats.spp_mean);
         cost.push_back(double(r.stats.samples)), err.push_back(e);
         sweep.push_back({{"sampler", name},
-                         {"threshold", ad.threshold},
+                         {"threshold", threshold},
                          {"samples", r.stats.samples},
                          {"spp_mean", r.stats.spp_mean},
                          {"rmse", e},
@@ -338,12 +339,12 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                          {"seconds", r.stats.seconds}});
         char row[200];
         std::snprintf(row, sizeof row, "%s,%s,%s,%.9g,%lld,%.6g,%.9g,%d,%.4g", name.c_str(), ad.metric.c_str(),
-                      ad.variance.c_str(), double(ad.threshold), (long long)r.stats.samples, r.stats.spp_mean, e,
+                      ad.variance.c_str(), threshold, (long long)r.stats.samples, r.stats.spp_mean, e,
                       r.stats.adaptive_rounds, r.stats.seconds);
         csv.push_back(row);
         char buf[200];
         std::snprintf(buf, sizeof buf, "%-8s adaptive t=%.5g: %.1f spp mean, rmse %.5f (uniform at equal samples %.5f)",
-                      name.c_str(), double(ad.threshold), r.stats.spp_mean, e, uniform);
+                      name.c_str(), threshold, r.stats.spp_mean, e, uniform);
         say(buf);
         if (k != 0) continue;
         std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
@@ -358,7 +359,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         ja.push_back({{"sampler", name},
                       {"metric", ad.metric},
                       {"variance", ad.variance},
-                      {"threshold", ad.threshold},
+                      {"threshold", threshold},
                       {"min_spp", ad.min_spp},
                       {"max_spp", ad.max_spp},
                       {"rounds", r.stats.adaptive_rounds},

@@ -118,6 +118,7 @@ TEST_F(SceneLoader, ExampleFilmSamplerIntegratorValues) {
   EXPECT_TRUE(s.sampler.adaptive.enabled);
   EXPECT_EQ(s.sampler.adaptive.max_spp, 128);
   EXPECT_EQ(s.sampler.adaptive.metric, "contrast");
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
   EXPECT_EQ(s.integrator.max_depth, 6);
   EXPECT_EQ(s.integrator.rr_depth, 2);
 }

@@ -324,7 +324,10 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
           if (u.spp == o.adaptive_target_spp) at_target = &u;
         }
       std::vector<double> cost, err;
-      for (int k = -4; k <= 4; ++k) {
+      // k = -4..4, and on (up to 8) while even the cheapest run reaches the target, so that
+      // the crossing is interpolated rather than only bounded.
+      for (int k = -4; k <= 8; ++k) {
+        if (k > 4 && !cost_to_reach(cost, err, at_target->rmse).upper_bound) break;
         const double threshold = std::ldexp(base_threshold, k);
         ad.threshold = float(threshold);
         RenderResult r = render_with(s, o);

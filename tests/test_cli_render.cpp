@@ -142,7 +142,8 @@ TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
                     " --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
-  ASSERT_EQ(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4";
+  ASSERT_GE(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4 (more while the target is not crossed)";
+  ASSERT_LE(j["adaptive_sweep"].size(), 13u);
   EXPECT_DOUBLE_EQ(j["adaptive_sweep"][4]["threshold"].get<double>(), 1.0 / 16) << "the metric's default in the middle";
   EXPECT_EQ(j["adaptive_target"]["spp"], 8);
   const auto& t = j["adaptive_target"]["samplers"]["poisson"];
@@ -150,7 +151,7 @@ TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
   EXPECT_GT(t["ratio"].get<double>(), 0);
   std::stringstream csv;
   csv << std::ifstream(d / "report" / "adaptive.csv").rdbuf();
-  EXPECT_EQ(pdrt::test::line_count(csv.str()), 10) << "a header and one row per run";
+  EXPECT_EQ(pdrt::test::line_count(csv.str()), int(j["adaptive_sweep"].size()) + 1) << "a header and one row per run";
 }
 
 TEST(CliCompare, BadOptionsAreUsageErrors) {

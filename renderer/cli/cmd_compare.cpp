@@ -32,7 +32,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
   cmd->add_flag("--adaptive", o->adaptive,
-                "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4) against uniform sampling");
+                "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4, more while needed) against uniform sampling");
   cmd->add_option("--adaptive-threshold", o->adaptive_threshold,
                   "Centre of the sweep (default: the scene's, else the metric's default)");
   cmd->add_option("--adaptive-metric", o->adaptive_metric,

@@ -181,3 +181,12 @@ TEST(Adaptive, ContrastWithoutThresholdRendersAsMitchellsDefault) {
   double background = sphere_and_background_spp(a.image).second;
   EXPECT_DOUBLE_EQ(background, 4.0) << "the black background has no contrast";
 }
+
+// Two samples, 1 and 3: the half buffers' (1 - 3)^2 / 4 equals the sample estimate s^2 / n = 2 / 2.
+TEST(Adaptive, HalvesVarianceIsTheHalfMeansDifference) {
+  PixelAccum p;
+  p.add(Vec3(1.0f), 1.0f, Vec3(0.0f), Vec3(0.0f), 1.0f, 0);
+  p.add(Vec3(3.0f), 1.0f, Vec3(0.0f), Vec3(0.0f), 1.0f, 1);
+  EXPECT_NEAR(p.half_variance_of_mean(), 1.0, 1e-6);
+  EXPECT_NEAR(p.variance_of_mean(), 1.0, 1e-6);
+}

@@ -78,6 +78,11 @@ TEST(CliRender, BadArgumentsAreRefusedBeforeRendering) {
       {"--sampler halton", "halton", 2},
       {"--width -3", "--width", 2},
       {"--threads -1", "--threads", 2},
+      {"--min-spp 0", "--min-spp", 2},
+      {"--adaptive-threshold -1", "--adaptive-threshold", 2},
+      {"--adaptive-metric foo", "foo", 2},
+      {"--adaptive-variance foo", "foo", 2},
+      {"--min-spp 8 --max-spp 4", "min_spp", 2},
   };
   for (const auto& c : cases) {
     auto r = run_pdrt("render " + scene.string() + " -o " + out + " " + c.args);
@@ -94,6 +99,27 @@ TEST(CliRender, BadArgumentsAreRefusedBeforeRendering) {
   r = run_pdrt("render " + (d / "nope.json").string() + " -o " + out);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliRender, AdaptiveFlagsRefineAndStatsReportTheSppDistribution) {
+  fs::path d = scratch_dir("render_adaptive");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() +
+                    " --min-spp 2 --max-spp 16 --adaptive-metric contrast --stats " + (d / "stats.json").string() +
+                    " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  ASSERT_TRUE(j.contains("adaptive")) << j.dump();
+  EXPECT_EQ(j["adaptive"]["min_spp"], 2);
+  EXPECT_EQ(j["adaptive"]["max_spp"], 16);
+  EXPECT_EQ(j["adaptive"]["metric"], "contrast");
+  EXPECT_DOUBLE_EQ(j["adaptive"]["threshold"].get<double>(), 0.4);  // the metric's own default
+  const auto& dist = j["spp_distribution"];
+  EXPECT_LE(dist["max"].get<double>(), 16.0);
+  EXPECT_LE(dist["min"].get<double>(), dist["p50"].get<double>());
+  int64_t pixels = 0;
+  for (const auto& b : dist["histogram"]) pixels += b["pixels"].get<int64_t>();
+  EXPECT_EQ(pixels, j["width"].get<int64_t>() * j["height"].get<int64_t>());
 }
 
 TEST(CliRender, FramebufferTooLargeForMemoryIsRefused) {

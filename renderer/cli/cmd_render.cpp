@@ -1,4 +1,5 @@
 // `pdrt render`: the main job — render a scene file to an image (plus AOVs and stats).
+#include "adaptive_metric.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "errors.h"
@@ -8,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +24,43 @@ namespace {
 std::atomic<bool> g_cancel{false};
 extern "C" void on_sigint(int) { g_cancel.store(true); }
 
+bool one_of(const std::string& v, std::initializer_list<const char*> names) {
+  for (const char* n : names)
+    if (v == n) return true;
+  return false;
+}
+
+std::string joined(std::initializer_list<const char*> names) {
+  std::string s;
+  for (const char* n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+  return s;
+}
+
+// Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
+// power-of-two bins [2^k, 2^(k+1)).
+nlohmann::json spp_distribution(const std::vector<float>& samples) {
+  std::vector<float> s = samples;
+  std::sort(s.begin(), s.end());
+  nlohmann::json j;
+  if (s.empty()) return j;
+  auto q = [&](double f) { return s[std::min(s.size() - 1, std::size_t(f * double(s.size())))]; };
+  j["min"] = s.front();
+  j["p50"] = q(0.5);
+  j["p90"] = q(0.9);
+  j["p99"] = q(0.99);
+  j["max"] = s.back();
+  nlohmann::json bins = nlohmann::json::array();
+  std::size_t i = 0;
+  for (int k = 0; i < s.size(); ++k) {
+    const double lo = std::ldexp(1.0, k), hi = 2 * lo;
+    std::size_t n = 0;
+    for (; i < s.size() && s[i] < hi; ++i) n += s[i] >= lo || k == 0;  // k = 0 also holds 0-sample pixels
+    if (n) bins.push_back({{"from", lo}, {"below", hi}, {"pixels", n}});
+  }
+  j["histogram"] = bins;
+  return j;
+}
+
 }  // namespace
 
 void add_render_command(CLI::App& app) {
@@ -28,8 +68,11 @@ void add_render_command(CLI::App& app) {
     std::string scene, out, stats, sampler;
     std::optional<int> spp, width, height;
     std::optional<uint64_t> seed;
+    std::optional<int> min_spp, max_spp;
+    std::optional<double> threshold;
+    std::string metric, variance;
     int threads = 0;
-    bool quiet = false;
+    bool quiet = false, adaptive = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
@@ -42,6 +85,14 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--width", o->width, "Image width in pixels (overrides film.width)");
   cmd->add_option("--height", o->height, "Image height in pixels (overrides film.height)");
   cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
+  cmd->add_flag("--adaptive", o->adaptive,
+                "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
+                "--max-spp option turns it on too)");
+  cmd->add_option("--min-spp", o->min_spp, "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
+  cmd->add_option("--max-spp", o->max_spp, "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
+  cmd->add_option("--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
+  cmd->add_option("--adaptive-metric", o->metric, "Adaptive: " + joined(kAdaptiveMetrics));
+  cmd->add_option("--adaptive-variance", o->variance, "Adaptive: " + joined(kAdaptiveVariances));
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
     // Validate every argument before loading or rendering anything.
@@ -56,9 +107,29 @@ void add_render_command(CLI::App& app) {
       for (const auto& n : sampler_names()) known = known || n == o->sampler;
       if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (random, jitter, poisson, sobol)");
     }
+    if (o->min_spp && *o->min_spp < 1) throw UsageError("--min-spp must be >= 1, got " + std::to_string(*o->min_spp));
+    if (o->max_spp && *o->max_spp < 1) throw UsageError("--max-spp must be >= 1, got " + std::to_string(*o->max_spp));
+    if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
+      throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
+    if (!o->metric.empty() && !one_of(o->metric, kAdaptiveMetrics))
+      throw UsageError("--adaptive-metric: unknown metric \"" + o->metric + "\" (" + joined(kAdaptiveMetrics) + ")");
+    if (!o->variance.empty() && !one_of(o->variance, kAdaptiveVariances))
+      throw UsageError("--adaptive-variance: unknown estimator \"" + o->variance + "\" (" +
+                       joined(kAdaptiveVariances) + ")");
     check_image_extension(o->out);
 
     SceneDesc scene = load_scene(o->scene);
+    AdaptiveDesc& ad = scene.sampler.adaptive;
+    ad.enabled = ad.enabled || o->adaptive || o->min_spp || o->max_spp || o->threshold || !o->metric.empty() ||
+                 !o->variance.empty();
+    if (o->min_spp) ad.min_spp = *o->min_spp;
+    if (o->max_spp) ad.max_spp = *o->max_spp;
+    if (o->threshold) ad.threshold = *o->threshold;
+    if (!o->metric.empty()) ad.metric = o->metric;
+    if (!o->variance.empty()) ad.variance = o->variance;
+    if (ad.enabled && ad.min_spp > ad.max_spp)
+      throw UsageError("adaptive: min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" +
+                       std::to_string(ad.max_spp) + ")");
     if (o->spp) scene.sampler.spp = *o->spp;
     if (!o->sampler.empty()) scene.sampler.type = o->sampler;
     if (o->seed) scene.sampler.seed = *o->seed;
@@ -85,6 +156,9 @@ void add_render_command(CLI::App& app) {
                    {"pdrt:seed", std::to_string(scene.sampler.seed)},
                    {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
                    {"pdrt:partial", r.stats.partial ? "true" : "false"}};
+    if (ad.enabled)
+      md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
+                                         ", " + ad.metric + " " + std::to_string(effective_threshold(ad))});
     write_image(o->out, r.image, md);
     if (!o->stats.empty()) {
       nlohmann::json j;
@@ -99,6 +173,11 @@ void add_render_command(CLI::App& app) {
       j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
       j["samples"] = r.stats.samples;
       j["spp_mean"] = r.stats.spp_mean;
+      j["spp_distribution"] = spp_distribution(r.image.samples);
+      if (ad.enabled)
+        j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
+                         {"metric", ad.metric},       {"threshold", effective_threshold(ad)},
+                         {"variance", ad.variance},   {"rounds", r.stats.adaptive_rounds}};
       j["triangles"] = r.stats.triangles;
       j["threads"] = o->threads;
       j["partial"] = r.stats.partial;

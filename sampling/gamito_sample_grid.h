@@ -1,0 +1,136 @@
+#pragma once
+// The accepted samples of the Gamito–Maddock sampler bucketed on a uniform background grid,
+// coordinates stored in the cells so a range query reads a few contiguous rows. It replaces
+// the paper's per-leaf sample lists (§4.1, §4.2): "which disks can reach this cell" is a
+// range query here. Up to 2-D the cells are at most d / sqrt(n) wide and so hold one sample
+// each; in higher dimensions that grid would dwarf the point set, so cells are about d wide
+// and chain further samples.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+namespace pdrt {
+
+template <int N>
+class GamitoSampleGrid {
+ public:
+  GamitoSampleGrid(double dist, std::size_t expected, bool periodic) : periodic_(periodic) {
+    double m = std::ceil((kChained ? 1.0 : std::sqrt(double(N))) / dist);
+    if (kChained) m = std::min(m, std::floor(std::pow(8.0 * double(expected), 1.0 / N)));
+    res_ = std::max(1, int(m));
+    std::size_t cells = 1;
+    for (int k = 0; k < N; ++k) cells *= std::size_t(res_);
+    cells_.assign(cells, Cell{});
+  }
+
+  void insert(const double* p) {
+    Cell& c = cells_[index(p)];
+    if constexpr (kChained) {
+      if (c.x[0] >= 0.0) {
+        Cell extra = c;
+        c.more = int32_t(overflow_.size());
+        overflow_.push_back(extra);
+      }
+    }
+    std::copy(p, p + N, c.x);
+  }
+
+  // Calls f(q) for every sample within `reach` of p on every axis (and possibly a few
+  // more) until f returns true; returns whether it did. When periodic, q is each of the
+  // sample's images (shifts in {-1, 0, 1} per axis) that lies in that range, so callers
+  // measure plain Euclidean distances.
+  template <class F>
+  bool visit(const double* p, double reach, F&& f) const {
+    int lo[N], hi[N], cur[N];
+    int lowest = periodic_ ? -res_ : 0, highest = periodic_ ? 2 * res_ - 1 : res_ - 1;
+    for (int k = 0; k < N; ++k) {
+      lo[k] = std::max(int(std::floor((p[k] - reach) * res_)), lowest);
+      hi[k] = std::min(int(std::floor((p[k] + reach) * res_)), highest);
+      if (lo[k] > hi[k]) return false;
+      cur[k] = lo[k];
+    }
+    double shift[N], image[N];
+    for (;;) {
+      // Axis 0 runs along a row of contiguous cells.
+      std::size_t row = 0;
+      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(unwrap(cur[k], shift[k]));
+      row *= std::size_t(res_);
+      // Along the row, images to the left, in and to the right of the cube in turn.
+      for (int part = periodic_ ? -1 : 0; part <= (periodic_ ? 1 : 0); ++part) {
+        int first = std::max(lo[0], part * res_), last = std::min(hi[0], part * res_ + res_ - 1);
+        shift[0] = double(part);
+        for (int x = first; x <= last; ++x) {
+          for (const Cell* c = &cells_[row + std::size_t(x - part * res_)]; c->x[0] >= 0.0;) {
+            if (periodic_) {
+              for (int k = 0; k < N; ++k) image[k] = c->x[k] + shift[k];
+              if (f(static_cast<const double*>(image))) return true;
+            } else if (f(static_cast<const double*>(c->x))) {
+              return true;
+            }
+            if constexpr (!kChained) break;
+            else if (c->more < 0) break;
+            else c = &overflow_[std::size_t(c->more)];
+          }
+        }
+      }
+      int k = 1;
+      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
+      if (k >= N) return false;
+      ++cur[k];
+    }
+  }
+
+  // Starts loading the rows visit(p, reach) will read.
+  void prefetch(const double* p, double reach) const {
+    int lo[N], hi[N], cur[N];
+    for (int k = 0; k < N; ++k) {
+      lo[k] = int(std::floor((p[k] - reach) * res_));
+      hi[k] = int(std::floor((p[k] + reach) * res_));
+      cur[k] = lo[k];
+    }
+    for (int rows = 0; rows < 32; ++rows) {
+      std::size_t row = 0;
+      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(std::clamp(cur[k], 0, res_ - 1));
+      row *= std::size_t(res_);
+      const char* first = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(lo[0], 0, res_ - 1))]);
+      const char* last = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(hi[0], 0, res_ - 1))]);
+      for (const char* line = first; line <= last + sizeof(Cell) - 1; line += 64) __builtin_prefetch(line);
+      int k = 1;
+      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
+      if (k >= N) return;
+      ++cur[k];
+    }
+  }
+
+ private:
+  static constexpr bool kChained = N > 2;
+  struct Single {
+    double x[N] = {-1.0};  // x[0] < 0: empty
+  };
+  struct Chained {
+    double x[N] = {-1.0};
+    int32_t more = -1;  // the cell's previous sample in overflow_
+  };
+  using Cell = std::conditional_t<kChained, Chained, Single>;
+
+  // Cell index along an axis for an unwrapped index in [-res, 2 res), with the coordinate
+  // shift of the periodic image it stands for.
+  int unwrap(int c, double& shift) const {
+    shift = c < 0 ? -1.0 : c >= res_ ? 1.0 : 0.0;
+    return c < 0 ? c + res_ : c >= res_ ? c - res_ : c;
+  }
+  std::size_t index(const double* p) const {
+    std::size_t i = 0;
+    for (int k = N - 1; k >= 0; --k) i = i * std::size_t(res_) + std::size_t(std::min(int(p[k] * res_), res_ - 1));
+    return i;
+  }
+
+  int res_;
+  bool periodic_;
+  std::vector<Cell> cells_;
+  std::vector<Cell> overflow_;
+};
+
+}  // namespace pdrt

@@ -1,10 +1,16 @@
 #pragma once
 // The leaves of the Gamito–Maddock tree that may still receive a sample, kept as one flat
 // array of cells that all sit at the same subdivision level (see gamito_maddock.cpp for why
-// the level is shared). All cells then have the same volume, 1 unit of (1/res)^n, so the
-// allowable volume is exactly size() units and an index drawn uniformly below size() is the
-// paper's volume-weighted descent (§4.1, Appendix A) without rounding. Dead cells are
-// swap-removed; a subdivision replaces every cell by its surviving 2^n children (§4.2).
+// the level is shared). All cells have the same volume, 1 unit of (1/res)^n, so the
+// allowable volume is exactly live() units and a uniform index is the paper's
+// volume-weighted descent (§4.1, Appendix A) without rounding.
+//
+// Dead cells stay in place as tombstones until compact(), which keeps the order: cells are
+// grouped by their level-0 ancestor in scanline order, so a subdivision sweeps the sample
+// grid in order and shares one neighbour query per level-0 cell. pick() skips tombstones
+// by drawing again, which is still uniform over the live cells.
+#include "rng.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -12,7 +18,8 @@ namespace pdrt {
 
 template <int N>
 struct GamitoCell {
-  uint32_t c[N];  // integer coordinates at the current level
+  static constexpr uint32_t kDead = UINT32_MAX;
+  uint32_t c[N];  // integer coordinates at the current level; c[0] == kDead: a tombstone
   bool operator==(const GamitoCell&) const = default;
 };
 
@@ -22,7 +29,7 @@ class GamitoActiveCells {
   using Cell = GamitoCell<N>;
   static constexpr int kKids = 1 << N;
 
-  // Every cell of the res^n grid (level 0).
+  // Every cell of the res^n grid (level 0), in scanline order.
   void fill(uint32_t res) {
     std::size_t total = 1;
     for (int k = 0; k < N; ++k) total *= res;
@@ -32,28 +39,45 @@ class GamitoActiveCells {
       c = cur;
       for (int k = 0; k < N && ++cur.c[k] == res; ++k) cur.c[k] = 0;
     }
+    live_ = total;
   }
 
-  std::size_t size() const { return cells_.size(); }
-  bool empty() const { return cells_.empty(); }
+  std::size_t live() const { return live_; }
+  std::size_t slots() const { return cells_.size(); }
   const Cell& operator[](std::size_t i) const { return cells_[i]; }
   const Cell* data() const { return cells_.data(); }
 
-  // Removes `cell` if it is still at index i (a batch of darts may have moved it since it
-  // was drawn; a cell left behind is dead space that later darts reject, which is harmless).
-  void remove_if_at(std::size_t i, const Cell& cell) {
-    if (i >= cells_.size() || !(cells_[i] == cell)) return;
-    cells_[i] = cells_.back();
-    cells_.pop_back();
+  // A uniform live cell (live() > 0).
+  std::size_t pick(Rng& rng) const {
+    for (;;) {
+      std::size_t i = std::size_t(rng.below(cells_.size()));
+      if (cells_[i].c[0] != Cell::kDead) return i;
+    }
   }
 
-  // Replaces every cell by those of its children whose bit is set in alive(cell), a mask of
-  // 2^n bits (child j has bit k of j as its offset along axis k).
+  void kill(std::size_t i) {
+    if (cells_[i].c[0] == Cell::kDead) return;
+    cells_[i].c[0] = Cell::kDead;
+    --live_;
+  }
+
+  // Drops the tombstones once they are most of the array (pick() would draw too often).
+  void compact_if_sparse() {
+    if (live_ * 4 > cells_.size()) return;
+    std::size_t n = 0;
+    for (const Cell& c : cells_)
+      if (c.c[0] != Cell::kDead) cells_[n++] = c;
+    cells_.resize(n);
+  }
+
+  // Replaces every live cell by those of its children whose bit is set in alive(cell), a
+  // mask of 2^n bits (child j has bit k of j as its offset along axis k).
   template <class Alive>
   void subdivide(Alive&& alive) {
     next_.clear();
-    next_.reserve(cells_.size() * 2);
+    next_.reserve(live_ * 2);
     for (const Cell& parent : cells_) {
+      if (parent.c[0] == Cell::kDead) continue;
       uint32_t mask = alive(parent);
       for (; mask != 0; mask &= mask - 1) {
         int j = __builtin_ctz(mask);
@@ -63,12 +87,14 @@ class GamitoActiveCells {
       }
     }
     cells_.swap(next_);
+    live_ = cells_.size();
     next_.clear();
     next_.shrink_to_fit();
   }
 
  private:
   std::vector<Cell> cells_, next_;
+  std::size_t live_ = 0;
 };
 
 }  // namespace pdrt

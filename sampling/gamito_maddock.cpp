@@ -21,6 +21,7 @@
 #include "generator.h"
 #include "rng.h"
 
+#include <cstdio>
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -59,14 +60,19 @@ class GamitoSampler {
     std::vector<double> out;
     out.reserve(expected * N + N);
     cells_.fill(res_);
-    while (!cells_.empty()) {
-      std::size_t darts = std::max<std::size_t>(std::size_t(double(cells_.size()) * kDartsPerCell), 1), thrown = 0,
+    while (cells_.live() > 0) {
+      std::size_t darts = std::max<std::size_t>(std::size_t(double(cells_.live()) * kDartsPerCell), 1), thrown = 0,
                   hits = 0;
-      while (thrown < darts && !cells_.empty()) {
+      while (thrown < darts && cells_.live() > 0) {
         int batch = int(std::min<std::size_t>(kBatch, darts - thrown));
         hits += throw_batch(batch, out);
         thrown += std::size_t(batch);
+        cells_.compact_if_sparse();
       }
+#ifdef GAMITO_TRACE
+      fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), thrown, hits,
+              out.size() / N);
+#endif
       if (level_ < last_ && double(hits) < kRefineBelow * double(thrown)) subdivide();
     }
     return out;
@@ -80,18 +86,19 @@ class GamitoSampler {
   static constexpr double kRefineBelow = 0.25;
   // Darts in flight at once: their cache misses overlap.
   static constexpr int kBatch = 16;
+  // Samples that may reach one level-0 cell: a few in 2-D, more above (chained grid).
+  static constexpr int kMaxNear = 1024;
 
   double width() const { return 1.0 / double(uint64_t(res_) << level_); }
 
-  // §4.1 Generate for `count` darts: a uniform cell each (the volume-weighted descent) and a
-  // uniform point in it, all drawn before any is tested. The cells only ever shrink, so a
-  // dart drawn from the earlier cells that lands in S_i is still uniform over S_i.
+  // §4.1 Generate for `count` darts: a uniform live cell each (the volume-weighted descent)
+  // and a uniform point in it, all drawn before any is tested. The cells only ever shrink,
+  // so a dart drawn from the earlier cells that lands in S_i is still uniform over S_i.
   std::size_t throw_batch(int count, std::vector<double>& out) {
     std::size_t idx[kBatch];
-    Cell cell[kBatch];
     double p[kBatch][N];
     for (int j = 0; j < count; ++j) {
-      idx[j] = std::size_t(rng_.below(cells_.size()));
+      idx[j] = cells_.pick(rng_);
       __builtin_prefetch(cells_.data() + idx[j]);
     }
     const double res = double(uint64_t(res_) << level_);
@@ -99,9 +106,9 @@ class GamitoSampler {
     const int frac = 53 - int(std::bit_width(uint64_t(res_) << level_));
     const double unit = std::ldexp(1.0, -frac);
     for (int j = 0; j < count; ++j) {
-      cell[j] = cells_[idx[j]];
+      const Cell& cell = cells_[idx[j]];
       for (int k = 0; k < N; ++k)
-        p[j][k] = (double(cell[j].c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
+        p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
       grid_.prefetch(p[j], d_);
     }
     std::size_t hits = 0;
@@ -118,7 +125,9 @@ class GamitoSampler {
         out.insert(out.end(), p[j], p[j] + N);
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
-      if (level_ == last_ || covered(cell[j], conflict ? q : p[j])) cells_.remove_if_at(idx[j], cell[j]);
+      // (An earlier dart of the batch may have killed it already; kill() ignores that.)
+      const Cell& cell = cells_[idx[j]];
+      if (cell.c[0] != Cell::kDead && (level_ == last_ || covered(cell, conflict ? q : p[j]))) cells_.kill(idx[j]);
     }
     return hits;
   }
@@ -130,52 +139,81 @@ class GamitoSampler {
     return s;
   }
 
-  // Appendix B: the cell is inside the disk of s when its farthest corner is, with a relative
-  // margin of 1e-9 over rounding (a covered cell is dropped for good).
-  bool covered(const Cell& cell, const double* s) const {
-    double w = width(), far2 = 0.0;
+  // Appendix B: squared distance from s to the farthest point of the box [lo, lo + w]^n.
+  static double far2(const double* lo, double w, const double* s) {
+    double f = 0.0;
     for (int k = 0; k < N; ++k) {
-      double lo = double(cell.c[k]) * w, a = std::max(std::abs(s[k] - lo), std::abs(lo + w - s[k]));
-      far2 += a * a;
+      double a = std::max(std::abs(s[k] - lo[k]), std::abs(lo[k] + w - s[k]));
+      f += a * a;
     }
-    return far2 < in2_;
+    return f;
+  }
+
+  // ... and to its nearest point.
+  static double near2(const double* lo, double w, const double* s) {
+    double f = 0.0;
+    for (int k = 0; k < N; ++k) {
+      double a = std::max(std::max(lo[k] - s[k], s[k] - lo[k] - w), 0.0);
+      f += a * a;
+    }
+    return f;
+  }
+
+  // The cell is inside the disk of s when its farthest corner is, with a relative margin of
+  // 1e-9 over rounding (a covered cell is dropped for good).
+  bool covered(const Cell& cell, const double* s) const {
+    double w = width(), lo[N];
+    for (int k = 0; k < N; ++k) lo[k] = double(cell.c[k]) * w;
+    return far2(lo, w, s) < in2_;
   }
 
   // §4.2 Subdivide for every cell at once: children inside the disk of a sample that reaches
   // the parent (Appendix B, farthest corner) are pruned, the others become the new cells.
+  // The samples that reach a level-0 cell are gathered once for all its descendants (they
+  // are contiguous), then narrowed to those that reach each parent.
   void subdivide() {
-    const double w = width(), h = 0.5 * w;
+    const double w = width(), h = 0.5 * w, base_w = 1.0 / double(res_);
+    uint32_t base[N] = {Cell::kDead};
+    int base_count = 0;
     cells_.subdivide([&](const Cell& parent) {
-      double lo[N], centre[N];
-      for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w, centre[k] = lo[k] + h;
-      near_.clear();
-      grid_.visit(centre, d_ + h, [&](const double* s) {
-        double near2 = 0.0;
+      bool same = true;
+      for (int k = 0; k < N; ++k) same &= (parent.c[k] >> level_) == base[k];
+      if (!same) {
+        double lo[N], centre[N];
         for (int k = 0; k < N; ++k) {
-          double a = std::max(std::abs(s[k] - centre[k]) - h, 0.0);
-          near2 += a * a;
+          base[k] = parent.c[k] >> level_;
+          lo[k] = double(base[k]) * base_w;
+          centre[k] = lo[k] + 0.5 * base_w;
         }
-        if (near2 < d2_) near_.insert(near_.end(), s, s + N);
-        return false;
-      });
+        base_count = 0;
+        grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s) {
+          if (near2(lo, base_w, s) < d2_ && base_count < kMaxNear) std::copy(s, s + N, base_near_[base_count++]);
+          return false;
+        });
+      }
+      double lo[N];
+      for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
+      int count = 0;
+      for (int i = 0; i < base_count; ++i) {
+        const double* s = base_near_[i];
+        if (near2(lo, w, s) >= d2_) continue;
+        if (far2(lo, w, s) < in2_) return 0u;  // the whole parent is covered
+        std::copy(s, s + N, near_[count++]);
+      }
       uint32_t alive = 0;
       for (int j = 0; j < Cells::kKids; ++j) {
         double klo[N];
         for (int k = 0; k < N; ++k) klo[k] = lo[k] + ((j >> k) & 1) * h;
         bool in = false;
-        for (std::size_t i = 0; i < near_.size() && !in; i += N) {
-          double far2 = 0.0;
-          for (int k = 0; k < N; ++k) {
-            double a = std::max(std::abs(near_[i + k] - klo[k]), std::abs(klo[k] + h - near_[i + k]));
-            far2 += a * a;
-          }
-          in = far2 < in2_;
-        }
+        for (int i = 0; i < count && !in; ++i) in = far2(klo, h, near_[i]) < in2_;
         alive |= uint32_t(!in) << j;
       }
       return alive;
     });
     ++level_;
+#ifdef GAMITO_TRACE
+    fprintf(stderr, "  subdivided to %zu\n", cells_.live());
+#endif
   }
 
   double d_, d2_, in2_;
@@ -185,7 +223,9 @@ class GamitoSampler {
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
-  std::vector<double> near_;  // samples that reach the cell being subdivided
+  using Point = double[N];
+  std::vector<Point> base_near_ = std::vector<Point>(kMaxNear);  // samples reaching the level-0 cell
+  std::vector<Point> near_ = std::vector<Point>(kMaxNear);       // ... and the parent being subdivided
 };
 
 template <int N>

@@ -46,8 +46,8 @@ class GamitoSampleGrid {
     int lo[N], hi[N], cur[N];
     int lowest = periodic_ ? -res_ : 0, highest = periodic_ ? 2 * res_ - 1 : res_ - 1;
     for (int k = 0; k < N; ++k) {
-      lo[k] = std::max(int(std::floor((p[k] - reach) * res_)), lowest);
-      hi[k] = std::min(int(std::floor((p[k] + reach) * res_)), highest);
+      lo[k] = std::max(floor_int((p[k] - reach) * res_), lowest);
+      hi[k] = std::min(floor_int((p[k] + reach) * res_), highest);
       if (lo[k] > hi[k]) return false;
       cur[k] = lo[k];
     }
@@ -86,8 +86,8 @@ class GamitoSampleGrid {
   void prefetch(const double* p, double reach) const {
     int lo[N], hi[N], cur[N];
     for (int k = 0; k < N; ++k) {
-      lo[k] = int(std::floor((p[k] - reach) * res_));
-      hi[k] = int(std::floor((p[k] + reach) * res_));
+      lo[k] = floor_int((p[k] - reach) * res_);
+      hi[k] = floor_int((p[k] + reach) * res_);
       cur[k] = lo[k];
     }
     for (int rows = 0; rows < 32; ++rows) {
@@ -106,6 +106,12 @@ class GamitoSampleGrid {
 
  private:
   static constexpr bool kChained = N > 2;
+
+  // floor() as an int without a libm call (x is a few cells around the unit cube).
+  static int floor_int(double x) {
+    int i = int(x);
+    return i - int(x < double(i));
+  }
   struct Single {
     double x[N] = {-1.0};  // x[0] < 0: empty
   };

@@ -21,7 +21,7 @@ class GamitoSampleGrid {
     if (kChained) m = std::min(m, std::floor(std::pow(8.0 * double(expected), 1.0 / N)));
     res_ = std::max(1, int(m));
     std::size_t cells = 1;
-    for (int k = 0; k < N; ++k) cells *= std::size_t(res_);
+    for (int k = 0; k < N; ++k) stride_[k] = cells, cells *= std::size_t(res_);
     cells_.assign(cells, Cell{});
   }
 
@@ -43,40 +43,51 @@ class GamitoSampleGrid {
   // measure plain Euclidean distances.
   template <class F>
   bool visit(const double* p, double reach, F&& f) const {
-    int lo[N], hi[N], cur[N];
+    // Per axis: the cells in range (unwrapped index in [-res, 2 res) when periodic) as
+    // wrapped offsets and image shifts, so the loops below only read.
+    int span[N], cur[N];
     int lowest = periodic_ ? -res_ : 0, highest = periodic_ ? 2 * res_ - 1 : res_ - 1;
     for (int k = 0; k < N; ++k) {
-      lo[k] = std::max(floor_int((p[k] - reach) * res_), lowest);
-      hi[k] = std::min(floor_int((p[k] + reach) * res_), highest);
-      if (lo[k] > hi[k]) return false;
-      cur[k] = lo[k];
+      int lo = std::max(floor_int((p[k] - reach) * res_), lowest);
+      int hi = std::min(floor_int((p[k] + reach) * res_), highest);
+      span[k] = hi - lo + 1;
+      if (span[k] <= 0) return false;
+      if (axes_[k].size() < std::size_t(span[k])) axes_[k].resize(std::size_t(span[k]));
+      for (int i = 0; i < span[k]; ++i) {
+        int c = lo + i;
+        Axis& a = axes_[k][std::size_t(i)];
+        a.shift = c < 0 ? -1.0 : c >= res_ ? 1.0 : 0.0;
+        a.offset = std::size_t(c < 0 ? c + res_ : c >= res_ ? c - res_ : c) * stride_[k];
+      }
+      cur[k] = 0;
     }
-    double shift[N], image[N];
+    const Axis* row0 = axes_[0].data();
+    double image[N];
     for (;;) {
       // Axis 0 runs along a row of contiguous cells.
       std::size_t row = 0;
-      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(unwrap(cur[k], shift[k]));
-      row *= std::size_t(res_);
-      // Along the row, images to the left, in and to the right of the cube in turn.
-      for (int part = periodic_ ? -1 : 0; part <= (periodic_ ? 1 : 0); ++part) {
-        int first = std::max(lo[0], part * res_), last = std::min(hi[0], part * res_ + res_ - 1);
-        shift[0] = double(part);
-        for (int x = first; x <= last; ++x) {
-          for (const Cell* c = &cells_[row + std::size_t(x - part * res_)]; c->x[0] >= 0.0;) {
-            if (periodic_) {
-              for (int k = 0; k < N; ++k) image[k] = c->x[k] + shift[k];
-              if (f(static_cast<const double*>(image))) return true;
-            } else if (f(static_cast<const double*>(c->x))) {
-              return true;
-            }
-            if constexpr (!kChained) break;
-            else if (c->more < 0) break;
-            else c = &overflow_[std::size_t(c->more)];
+      for (int k = 1; k < N; ++k) {
+        const Axis& a = axes_[k][std::size_t(cur[k])];
+        row += a.offset;
+        image[k] = a.shift;
+      }
+      for (int i = 0; i < span[0]; ++i) {
+        for (const Cell* c = &cells_[row + row0[i].offset]; c->x[0] >= 0.0;) {
+          if (periodic_) {
+            double shifted[N];
+            shifted[0] = c->x[0] + row0[i].shift;
+            for (int k = 1; k < N; ++k) shifted[k] = c->x[k] + image[k];
+            if (f(static_cast<const double*>(shifted))) return true;
+          } else if (f(static_cast<const double*>(c->x))) {
+            return true;
           }
+          if constexpr (!kChained) break;
+          else if (c->more < 0) break;
+          else c = &overflow_[std::size_t(c->more)];
         }
       }
       int k = 1;
-      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
+      while (k < N && cur[k] == span[k] - 1) cur[k] = 0, ++k;
       if (k >= N) return false;
       ++cur[k];
     }
@@ -121,12 +132,10 @@ class GamitoSampleGrid {
   };
   using Cell = std::conditional_t<kChained, Chained, Single>;
 
-  // Cell index along an axis for an unwrapped index in [-res, 2 res), with the coordinate
-  // shift of the periodic image it stands for.
-  int unwrap(int c, double& shift) const {
-    shift = c < 0 ? -1.0 : c >= res_ ? 1.0 : 0.0;
-    return c < 0 ? c + res_ : c >= res_ ? c - res_ : c;
-  }
+  struct Axis {
+    std::size_t offset;  // the wrapped cell's index step along the axis
+    double shift;        // the periodic image it stands for
+  };
   std::size_t index(const double* p) const {
     std::size_t i = 0;
     for (int k = N - 1; k >= 0; --k) i = i * std::size_t(res_) + std::size_t(std::min(int(p[k] * res_), res_ - 1));
@@ -135,6 +144,8 @@ class GamitoSampleGrid {
 
   int res_;
   bool periodic_;
+  std::size_t stride_[N];
+  mutable std::vector<Axis> axes_[N];  // visit()'s per-axis ranges
   std::vector<Cell> cells_;
   std::vector<Cell> overflow_;
 };

@@ -55,19 +55,23 @@ class GamitoActiveCells {
     }
   }
 
+  bool dead(std::size_t i) const { return cells_[i].c[0] == Cell::kDead; }
+
   void kill(std::size_t i) {
     if (cells_[i].c[0] == Cell::kDead) return;
     cells_[i].c[0] = Cell::kDead;
     --live_;
   }
 
-  // Drops the tombstones once they are most of the array (pick() would draw too often).
-  void compact_if_sparse() {
-    if (live_ * 4 > cells_.size()) return;
+  // Drops the tombstones once they are most of the array (pick() would draw too often);
+  // returns whether it did (indices change).
+  bool compact_if_sparse() {
+    if (live_ * 4 > cells_.size()) return false;
     std::size_t n = 0;
     for (const Cell& c : cells_)
       if (c.c[0] != Cell::kDead) cells_[n++] = c;
     cells_.resize(n);
+    return true;
   }
 
   // Replaces every live cell by those of its children whose bit is set in alive(cell), a

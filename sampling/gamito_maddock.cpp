@@ -67,7 +67,7 @@ class GamitoSampler {
         int batch = int(std::min<std::size_t>(kBatch, darts - thrown));
         hits += throw_batch(batch, out);
         thrown += std::size_t(batch);
-        cells_.compact_if_sparse();
+        if (cells_.compact_if_sparse()) scanline_ = false;
       }
 #ifdef GAMITO_TRACE
       fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), thrown, hits,
@@ -123,6 +123,7 @@ class GamitoSampler {
         ++hits;
         grid_.insert(p[j]);
         out.insert(out.end(), p[j], p[j] + N);
+        if (scanline_) prune_neighbours(p[j]);
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
       // (An earlier dart of the batch may have killed it already; kill() ignores that.)
@@ -130,6 +131,37 @@ class GamitoSampler {
       if (cell.c[0] != Cell::kDead && (level_ == last_ || covered(cell, conflict ? q : p[j]))) cells_.kill(idx[j]);
     }
     return hits;
+  }
+
+  // §4.3 Update while the cells are still the level-0 grid at their scanline index: the
+  // cells around a new sample that its disk covers are pruned right away, so darts and the
+  // next subdivision do not spend time on them. (Later levels leave that to subdivide().)
+  void prune_neighbours(const double* p) {
+    const double w = 1.0 / double(res_);
+    int home[N], off[N];
+    for (int k = 0; k < N; ++k) home[k] = std::min(int(p[k] * res_), int(res_) - 1), off[k] = -1;
+    for (;;) {
+      std::size_t idx = 0, stride = 1;
+      double s[N], lo[N];
+      bool inside = true;
+      for (int k = 0; k < N; ++k) {
+        int c = home[k] + off[k];
+        s[k] = p[k];
+        if (c < 0 || c >= int(res_)) {  // across a wall, or the nearest image when periodic
+          inside &= periodic_;
+          s[k] += c < 0 ? 1.0 : -1.0;
+          c += c < 0 ? int(res_) : -int(res_);
+        }
+        idx += std::size_t(c) * stride;
+        stride *= res_;
+        lo[k] = double(c) * w;
+      }
+      if (inside && !cells_.dead(idx) && far2(lo, w, s) < in2_) cells_.kill(idx);
+      int k = 0;
+      while (k < N && off[k] == 1) off[k] = -1, ++k;
+      if (k == N) return;
+      ++off[k];
+    }
   }
 
   // Plain Euclidean: the grid hands out periodic images.
@@ -211,6 +243,7 @@ class GamitoSampler {
       return alive;
     });
     ++level_;
+    scanline_ = false;
 #ifdef GAMITO_TRACE
     fprintf(stderr, "  subdivided to %zu\n", cells_.live());
 #endif
@@ -223,6 +256,7 @@ class GamitoSampler {
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
+  bool scanline_ = true;  // cells_[i] is still level-0 cell i (no subdivision or compaction yet)
   using Point = double[N];
   std::vector<Point> base_near_ = std::vector<Point>(kMaxNear);  // samples reaching the level-0 cell
   std::vector<Point> near_ = std::vector<Point>(kMaxNear);       // ... and the parent being subdivided

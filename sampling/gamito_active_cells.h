@@ -7,10 +7,8 @@
 //
 // Dead cells stay in place as tombstones until compact(), which keeps the order: cells are
 // grouped by their level-0 ancestor in scanline order, so a subdivision sweeps the sample
-// grid in order and shares one neighbour query per level-0 cell. pick() skips tombstones
-// by drawing again, which is still uniform over the live cells.
-#include "rng.h"
-
+// grid in order and shares one neighbour query per level-0 cell. A uniform slot that holds
+// a tombstone is a rejected draw, which leaves the others uniform over the live cells.
 #include <cstdint>
 #include <vector>
 
@@ -46,14 +44,6 @@ class GamitoActiveCells {
   std::size_t slots() const { return cells_.size(); }
   const Cell& operator[](std::size_t i) const { return cells_[i]; }
   const Cell* data() const { return cells_.data(); }
-
-  // A uniform live cell (live() > 0).
-  std::size_t pick(Rng& rng) const {
-    for (;;) {
-      std::size_t i = std::size_t(rng.below(cells_.size()));
-      if (cells_[i].c[0] != Cell::kDead) return i;
-    }
-  }
 
   bool dead(std::size_t i) const { return cells_[i].c[0] == Cell::kDead; }
 

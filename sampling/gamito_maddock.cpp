@@ -61,19 +61,23 @@ class GamitoSampler {
     out.reserve(expected * N + N);
     cells_.fill(res_);
     while (cells_.live() > 0) {
-      std::size_t darts = std::max<std::size_t>(std::size_t(double(cells_.live()) * kDartsPerCell), 1), thrown = 0,
-                  hits = 0;
-      while (thrown < darts && cells_.live() > 0) {
-        int batch = int(std::min<std::size_t>(kBatch, darts - thrown));
-        hits += throw_batch(batch, out);
-        thrown += std::size_t(batch);
-        if (cells_.compact_if_sparse()) scanline_ = false;
+      std::size_t darts = std::size_t(double(cells_.live()) * kDartsPerCell), thrown = 0, tried = 0, hits = 0;
+      // Three batches in flight: cells drawn, points made, darts tested. Darts still in
+      // flight when the round ends are dropped, as if never thrown.
+      Batch batch[3];
+      draw(batch[0]), draw(batch[1]), make(batch[0]);
+      for (int cur = 0; thrown < darts && cells_.live() > 0; cur = (cur + 1) % 3) {
+        draw(batch[(cur + 2) % 3]);
+        make(batch[(cur + 1) % 3]);
+        hits += test(batch[cur], out, tried);
+        thrown += kBatch;
       }
 #ifdef GAMITO_TRACE
-      fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), thrown, hits,
+      fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), tried, hits,
               out.size() / N);
 #endif
-      if (level_ < last_ && double(hits) < kRefineBelow * double(thrown)) subdivide();
+      if (cells_.compact_if_sparse()) scanline_ = false;
+      if (level_ < last_ && double(hits) < kRefineBelow * double(tried)) subdivide();
     }
     return out;
   }
@@ -84,51 +88,66 @@ class GamitoSampler {
   // kRefineBelow of them succeed.
   static constexpr double kDartsPerCell = 1.0;
   static constexpr double kRefineBelow = 0.25;
-  // Darts in flight at once: their cache misses overlap.
+  // Darts per batch (see run()).
   static constexpr int kBatch = 16;
   // Samples that may reach one level-0 cell: a few in 2-D, more above (chained grid).
   static constexpr int kMaxNear = 1024;
 
+  struct Batch {
+    std::size_t idx[kBatch];
+    bool live[kBatch];
+    double p[kBatch][N];
+  };
+
   double width() const { return 1.0 / double(uint64_t(res_) << level_); }
 
-  // §4.1 Generate for `count` darts: a uniform live cell each (the volume-weighted descent)
-  // and a uniform point in it, all drawn before any is tested. The cells only ever shrink,
-  // so a dart drawn from the earlier cells that lands in S_i is still uniform over S_i.
-  std::size_t throw_batch(int count, std::vector<double>& out) {
-    std::size_t idx[kBatch];
-    double p[kBatch][N];
-    for (int j = 0; j < count; ++j) {
-      idx[j] = cells_.pick(rng_);
-      __builtin_prefetch(cells_.data() + idx[j]);
+  // §4.1 Generate, descent: a uniform slot each (the volume-weighted descent; a tombstone
+  // is a rejected draw, which leaves the others uniform over the live cells).
+  void draw(Batch& b) {
+    for (int j = 0; j < kBatch; ++j) {
+      b.idx[j] = std::size_t(rng_.below(cells_.slots()));
+      __builtin_prefetch(cells_.data() + b.idx[j]);
     }
+  }
+
+  // ... and a uniform point in the cell. Fixed point: c + u is exact with 53 - bits(res)
+  // bits of u, and (c + u) / res < 1.
+  void make(Batch& b) {
     const double res = double(uint64_t(res_) << level_);
-    // Fixed point: c + u is exact with 53 - bits(res) bits of u, and (c + u) / res < 1.
     const int frac = 53 - int(std::bit_width(uint64_t(res_) << level_));
     const double unit = std::ldexp(1.0, -frac);
-    for (int j = 0; j < count; ++j) {
-      const Cell& cell = cells_[idx[j]];
-      for (int k = 0; k < N; ++k)
-        p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
-      grid_.prefetch(p[j], d_);
+    for (int j = 0; j < kBatch; ++j) {
+      const Cell& cell = cells_[b.idx[j]];
+      b.live[j] = cell.c[0] != Cell::kDead;
+      if (!b.live[j]) continue;
+      for (int k = 0; k < N; ++k) b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
+      grid_.prefetch(b.p[j], d_);
     }
+  }
+
+  // ... and the test against the samples near the point. The cells only ever shrink, so a
+  // dart drawn from earlier cells that lands in S_i is still uniform over S_i.
+  std::size_t test(const Batch& b, std::vector<double>& out, std::size_t& tried) {
     std::size_t hits = 0;
-    for (int j = 0; j < count; ++j) {
+    for (int j = 0; j < kBatch; ++j) {
+      if (!b.live[j]) continue;
+      ++tried;
+      const double* p = b.p[j];
       double q[N];
-      bool conflict = grid_.visit(p[j], d_, [&](const double* s) {
-        if (distance2(p[j], s) >= d2_) return false;
+      bool conflict = grid_.visit(p, d_, [&](const double* s) {
+        if (distance2(p, s) >= d2_) return false;
         std::copy(s, s + N, q);
         return true;
       });
       if (!conflict) {
         ++hits;
-        grid_.insert(p[j]);
-        out.insert(out.end(), p[j], p[j] + N);
-        if (scanline_) prune_neighbours(p[j]);
+        grid_.insert(p);
+        out.insert(out.end(), p, p + N);
+        if (scanline_) prune_neighbours(p);
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
-      // (An earlier dart of the batch may have killed it already; kill() ignores that.)
-      const Cell& cell = cells_[idx[j]];
-      if (cell.c[0] != Cell::kDead && (level_ == last_ || covered(cell, conflict ? q : p[j]))) cells_.kill(idx[j]);
+      const Cell& cell = cells_[b.idx[j]];
+      if (!cells_.dead(b.idx[j]) && (level_ == last_ || covered(cell, conflict ? q : p))) cells_.kill(b.idx[j]);
     }
     return hits;
   }

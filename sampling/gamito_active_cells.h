@@ -9,6 +9,7 @@
 // grouped by their level-0 ancestor in scanline order, so a subdivision sweeps the sample
 // grid in order and shares one neighbour query per level-0 cell. A uniform slot that holds
 // a tombstone is a rejected draw, which leaves the others uniform over the live cells.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -16,9 +17,12 @@ namespace pdrt {
 
 template <int N>
 struct GamitoCell {
-  static constexpr uint32_t kDead = UINT32_MAX;
+  static constexpr uint32_t kDead = UINT32_MAX, kNone = UINT32_MAX;
+  static constexpr int kWitnesses = 2;
   uint32_t c[N];  // integer coordinates at the current level; c[0] == kDead: a tombstone
-  bool operator==(const GamitoCell&) const = default;
+  // The paper's per-leaf sample list (§4.1), cut to the disks that overlap the cell most
+  // when it was made: sample-grid cells (or kNone) that darts test before the full query.
+  uint32_t near[kWitnesses];
 };
 
 template <int N>
@@ -33,6 +37,7 @@ class GamitoActiveCells {
     for (int k = 0; k < N; ++k) total *= res;
     cells_.resize(total);
     Cell cur{};
+    std::fill(cur.near, cur.near + Cell::kWitnesses, Cell::kNone);
     for (Cell& c : cells_) {
       c = cur;
       for (int k = 0; k < N && ++cur.c[k] == res; ++k) cur.c[k] = 0;
@@ -64,20 +69,21 @@ class GamitoActiveCells {
     return true;
   }
 
-  // Replaces every live cell by those of its children whose bit is set in alive(cell), a
-  // mask of 2^n bits (child j has bit k of j as its offset along axis k).
+  // Replaces every live cell by those of its children whose bit is set in
+  // alive(cell, kids), a mask of 2^n bits (child j has bit k of j as its offset along axis
+  // k); alive() fills in the witnesses of kids[j].
   template <class Alive>
   void subdivide(Alive&& alive) {
     next_.clear();
     next_.reserve(live_ * 2);
+    Cell kids[kKids];
     for (const Cell& parent : cells_) {
       if (parent.c[0] == Cell::kDead) continue;
-      uint32_t mask = alive(parent);
+      uint32_t mask = alive(parent, kids);
       for (; mask != 0; mask &= mask - 1) {
         int j = __builtin_ctz(mask);
-        Cell kid;
-        for (int k = 0; k < N; ++k) kid.c[k] = parent.c[k] << 1 | uint32_t((j >> k) & 1);
-        next_.push_back(kid);
+        for (int k = 0; k < N; ++k) kids[j].c[k] = parent.c[k] << 1 | uint32_t((j >> k) & 1);
+        next_.push_back(kids[j]);
       }
     }
     cells_.swap(next_);

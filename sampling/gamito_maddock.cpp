@@ -97,6 +97,13 @@ class GamitoSampler {
     std::size_t idx[kBatch];
     bool live[kBatch];
     double p[kBatch][N];
+    uint32_t near[kBatch][Cell::kWitnesses];
+  };
+
+  // A sample near a cell being subdivided, with the sample-grid cell that stores it.
+  struct Near {
+    double x[N];
+    uint32_t id;
   };
 
   double width() const { return 1.0 / double(uint64_t(res_) << level_); }
@@ -121,7 +128,10 @@ class GamitoSampler {
       b.live[j] = cell.c[0] != Cell::kDead;
       if (!b.live[j]) continue;
       for (int k = 0; k < N; ++k) b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
-      grid_.prefetch(b.p[j], d_);
+      std::copy(cell.near, cell.near + Cell::kWitnesses, b.near[j]);
+      if (cell.near[0] == Cell::kNone) grid_.prefetch(b.p[j], d_);
+      for (uint32_t id : cell.near)
+        if (id != Cell::kNone) grid_.prefetch_cell(id);
     }
   }
 
@@ -134,11 +144,20 @@ class GamitoSampler {
       ++tried;
       const double* p = b.p[j];
       double q[N];
-      bool conflict = grid_.visit(p, d_, [&](const double* s) {
-        if (distance2(p, s) >= d2_) return false;
-        std::copy(s, s + N, q);
-        return true;
-      });
+      // The cell's witnesses first: most darts that fail, fail on them.
+      bool conflict = false;
+      for (int w = 0; w < Cell::kWitnesses && !conflict && b.near[j][w] != Cell::kNone; ++w)
+        conflict = grid_.visit_cell(b.near[j][w], [&](const double* s) {
+          if (distance_sq(p, s, N, periodic_) >= d2_) return false;
+          for (int k = 0; k < N; ++k) q[k] = p[k] - axis_delta(p[k], s[k], periodic_);  // s's image near p
+          return true;
+        });
+      if (!conflict)
+        conflict = grid_.visit(p, d_, [&](const double* s, uint32_t) {
+          if (distance2(p, s) >= d2_) return false;
+          std::copy(s, s + N, q);
+          return true;
+        });
       if (!conflict) {
         ++hits;
         grid_.insert(p);
@@ -226,7 +245,7 @@ class GamitoSampler {
     const double w = width(), h = 0.5 * w, base_w = 1.0 / double(res_);
     uint32_t base[N] = {Cell::kDead};
     int base_count = 0;
-    cells_.subdivide([&](const Cell& parent) {
+    cells_.subdivide([&](const Cell& parent, Cell* kids) {
       bool same = true;
       for (int k = 0; k < N; ++k) same &= (parent.c[k] >> level_) == base[k];
       if (!same) {
@@ -237,8 +256,11 @@ class GamitoSampler {
           centre[k] = lo[k] + 0.5 * base_w;
         }
         base_count = 0;
-        grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s) {
-          if (near2(lo, base_w, s) < d2_ && base_count < kMaxNear) std::copy(s, s + N, base_near_[base_count++]);
+        grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s, uint32_t id) {
+          if (near2(lo, base_w, s) < d2_ && base_count < kMaxNear) {
+            std::copy(s, s + N, base_near_[base_count].x);
+            base_near_[base_count++].id = id;
+          }
           return false;
         });
       }
@@ -246,17 +268,31 @@ class GamitoSampler {
       for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
       int count = 0;
       for (int i = 0; i < base_count; ++i) {
-        const double* s = base_near_[i];
+        const double* s = base_near_[i].x;
         if (near2(lo, w, s) >= d2_) continue;
         if (far2(lo, w, s) < in2_) return 0u;  // the whole parent is covered
-        std::copy(s, s + N, near_[count++]);
+        near_[count++] = base_near_[i];
       }
       uint32_t alive = 0;
       for (int j = 0; j < Cells::kKids; ++j) {
         double klo[N];
         for (int k = 0; k < N; ++k) klo[k] = lo[k] + ((j >> k) & 1) * h;
+        // Covered by one disk: pruned. Otherwise the disks that come closest to its centre
+        // are its witnesses.
         bool in = false;
-        for (int i = 0; i < count && !in; ++i) in = far2(klo, h, near_[i]) < in2_;
+        double best[Cell::kWitnesses];
+        std::fill(best, best + Cell::kWitnesses, d2_);
+        std::fill(kids[j].near, kids[j].near + Cell::kWitnesses, Cell::kNone);
+        for (int i = 0; i < count && !in; ++i) {
+          const double* s = near_[i].x;
+          in = far2(klo, h, s) < in2_;
+          if (near2(klo, h, s) >= d2_) continue;
+          double c2 = 0.0;
+          for (int k = 0; k < N; ++k) c2 += (s[k] - klo[k] - 0.5 * h) * (s[k] - klo[k] - 0.5 * h);
+          uint32_t id = near_[i].id;
+          for (int r = 0; r < Cell::kWitnesses; ++r)
+            if (c2 < best[r]) std::swap(c2, best[r]), std::swap(id, kids[j].near[r]);
+        }
         alive |= uint32_t(!in) << j;
       }
       return alive;
@@ -276,9 +312,8 @@ class GamitoSampler {
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
   bool scanline_ = true;  // cells_[i] is still level-0 cell i (no subdivision or compaction yet)
-  using Point = double[N];
-  std::vector<Point> base_near_ = std::vector<Point>(kMaxNear);  // samples reaching the level-0 cell
-  std::vector<Point> near_ = std::vector<Point>(kMaxNear);       // ... and the parent being subdivided
+  std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
+  std::vector<Near> near_ = std::vector<Near>(kMaxNear);       // ... and the parent being subdivided
 };
 
 template <int N>

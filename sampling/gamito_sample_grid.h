@@ -37,10 +37,11 @@ class GamitoSampleGrid {
     std::copy(p, p + N, c.x);
   }
 
-  // Calls f(q) for every sample within `reach` of p on every axis (and possibly a few
-  // more) until f returns true; returns whether it did. When periodic, q is each of the
+  // Calls f(q, cell) for every sample within `reach` of p on every axis (and possibly a
+  // few more) until f returns true; returns whether it did. When periodic, q is each of the
   // sample's images (shifts in {-1, 0, 1} per axis) that lies in that range, so callers
-  // measure plain Euclidean distances.
+  // measure plain Euclidean distances. `cell` names the grid cell that stores the sample
+  // (see visit_cell()).
   template <class F>
   bool visit(const double* p, double reach, F&& f) const {
     // Per axis: the cells in range (unwrapped index in [-res, 2 res) when periodic) as
@@ -72,13 +73,14 @@ class GamitoSampleGrid {
         image[k] = a.shift;
       }
       for (int i = 0; i < span[0]; ++i) {
-        for (const Cell* c = &cells_[row + row0[i].offset]; c->x[0] >= 0.0;) {
+        const std::size_t id = row + row0[i].offset;
+        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
           if (periodic_) {
             double shifted[N];
             shifted[0] = c->x[0] + row0[i].shift;
             for (int k = 1; k < N; ++k) shifted[k] = c->x[k] + image[k];
-            if (f(static_cast<const double*>(shifted))) return true;
-          } else if (f(static_cast<const double*>(c->x))) {
+            if (f(static_cast<const double*>(shifted), uint32_t(id))) return true;
+          } else if (f(static_cast<const double*>(c->x), uint32_t(id))) {
             return true;
           }
           if constexpr (!kChained) break;
@@ -92,6 +94,21 @@ class GamitoSampleGrid {
       ++cur[k];
     }
   }
+
+  // Calls f(q) for the samples stored in one cell (as stored: no periodic image) until f
+  // returns true; returns whether it did.
+  template <class F>
+  bool visit_cell(uint32_t id, F&& f) const {
+    for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
+      if (f(static_cast<const double*>(c->x))) return true;
+      if constexpr (!kChained) break;
+      else if (c->more < 0) break;
+      else c = &overflow_[std::size_t(c->more)];
+    }
+    return false;
+  }
+
+  void prefetch_cell(uint32_t id) const { __builtin_prefetch(&cells_[id]); }
 
   // Starts loading the rows visit(p, reach) will read.
   void prefetch(const double* p, double reach) const {

@@ -60,6 +60,8 @@ class GamitoSampler {
     std::vector<double> out;
     out.reserve(expected * N + N);
     cells_.fill(res_);
+    group_.resize(cells_.slots() + 1);
+    index_groups();
     while (cells_.live() > 0) {
       std::size_t darts = std::size_t(double(cells_.live()) * kDartsPerCell), thrown = 0, tried = 0, hits = 0;
       // Three batches in flight: cells drawn, points made, darts tested. Darts still in
@@ -76,7 +78,7 @@ class GamitoSampler {
       fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), tried, hits,
               out.size() / N);
 #endif
-      if (cells_.compact_if_sparse()) scanline_ = false;
+      if (cells_.compact_if_sparse()) index_groups();
       if (level_ < last_ && double(hits) < kRefineBelow * double(tried)) subdivide();
     }
     return out;
@@ -162,7 +164,7 @@ class GamitoSampler {
         ++hits;
         grid_.insert(p);
         out.insert(out.end(), p, p + N);
-        if (scanline_) prune_neighbours(p);
+        update(p);
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
       const Cell& cell = cells_[b.idx[j]];
@@ -171,16 +173,16 @@ class GamitoSampler {
     return hits;
   }
 
-  // §4.3 Update while the cells are still the level-0 grid at their scanline index: the
-  // cells around a new sample that its disk covers are pruned right away, so darts and the
-  // next subdivision do not spend time on them. (Later levels leave that to subdivide().)
-  void prune_neighbours(const double* p) {
-    const double w = 1.0 / double(res_);
+  // §4.3 Update: the live cells in the 3^n level-0 cells around a new sample that its disk
+  // covers are pruned right away, so darts and the next subdivision do not spend time on
+  // them. (Cells farther away are hardly ever inside the disk; they are left to the
+  // coverage tests of later darts and subdivisions.)
+  void update(const double* p) {
     int home[N], off[N];
     for (int k = 0; k < N; ++k) home[k] = std::min(int(p[k] * res_), int(res_) - 1), off[k] = -1;
     for (;;) {
-      std::size_t idx = 0, stride = 1;
-      double s[N], lo[N];
+      std::size_t base = 0, stride = 1;
+      double s[N];
       bool inside = true;
       for (int k = 0; k < N; ++k) {
         int c = home[k] + off[k];
@@ -190,16 +192,29 @@ class GamitoSampler {
           s[k] += c < 0 ? 1.0 : -1.0;
           c += c < 0 ? int(res_) : -int(res_);
         }
-        idx += std::size_t(c) * stride;
+        base += std::size_t(c) * stride;
         stride *= res_;
-        lo[k] = double(c) * w;
       }
-      if (inside && !cells_.dead(idx) && far2(lo, w, s) < in2_) cells_.kill(idx);
+      if (inside)
+        for (std::size_t i = group_[base]; i < group_[base + 1]; ++i)
+          if (!cells_.dead(i) && covered(cells_[i], s)) cells_.kill(i);
       int k = 0;
       while (k < N && off[k] == 1) off[k] = -1, ++k;
       if (k == N) return;
       ++off[k];
     }
+  }
+
+  // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
+  // order of their level-0 cell); rebuilt whenever the slots move.
+  void index_groups() {
+    std::fill(group_.begin(), group_.end(), 0u);
+    for (std::size_t i = 0; i < cells_.slots(); ++i) {
+      std::size_t base = 0, stride = 1;
+      for (int k = 0; k < N; ++k) base += std::size_t(cells_[i].c[k] >> level_) * stride, stride *= res_;
+      ++group_[base + 1];
+    }
+    for (std::size_t b = 1; b < group_.size(); ++b) group_[b] += group_[b - 1];
   }
 
   // Plain Euclidean: the grid hands out periodic images.
@@ -298,7 +313,7 @@ class GamitoSampler {
       return alive;
     });
     ++level_;
-    scanline_ = false;
+    index_groups();
 #ifdef GAMITO_TRACE
     fprintf(stderr, "  subdivided to %zu\n", cells_.live());
 #endif
@@ -311,7 +326,7 @@ class GamitoSampler {
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
-  bool scanline_ = true;  // cells_[i] is still level-0 cell i (no subdivision or compaction yet)
+  std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
   std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
   std::vector<Near> near_ = std::vector<Near>(kMaxNear);       // ... and the parent being subdivided
 };

@@ -279,36 +279,52 @@ class GamitoSampler {
           return false;
         });
       }
+      // Appendix B per axis: the offsets of a sample from the parent's three planes give the
+      // nearest, farthest and centre distances of both halves; a child sums one half per axis.
       double lo[N];
       for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
-      int count = 0;
-      for (int i = 0; i < base_count; ++i) {
-        const double* s = base_near_[i].x;
-        if (near2(lo, w, s) >= d2_) continue;
-        if (far2(lo, w, s) < in2_) return 0u;  // the whole parent is covered
-        near_[count++] = base_near_[i];
-      }
-      uint32_t alive = 0;
+      double best[Cells::kKids][Cell::kWitnesses];
       for (int j = 0; j < Cells::kKids; ++j) {
-        double klo[N];
-        for (int k = 0; k < N; ++k) klo[k] = lo[k] + ((j >> k) & 1) * h;
-        // Covered by one disk: pruned. Otherwise the disks that come closest to its centre
-        // are its witnesses.
-        bool in = false;
-        double best[Cell::kWitnesses];
-        std::fill(best, best + Cell::kWitnesses, d2_);
+        std::fill(best[j], best[j] + Cell::kWitnesses, d2_);
         std::fill(kids[j].near, kids[j].near + Cell::kWitnesses, Cell::kNone);
-        for (int i = 0; i < count && !in; ++i) {
-          const double* s = near_[i].x;
-          in = far2(klo, h, s) < in2_;
-          if (near2(klo, h, s) >= d2_) continue;
-          double c2 = 0.0;
-          for (int k = 0; k < N; ++k) c2 += (s[k] - klo[k] - 0.5 * h) * (s[k] - klo[k] - 0.5 * h);
-          uint32_t id = near_[i].id;
-          for (int r = 0; r < Cell::kWitnesses; ++r)
-            if (c2 < best[r]) std::swap(c2, best[r]), std::swap(id, kids[j].near[r]);
+      }
+      uint32_t alive = ~uint32_t(0) >> (32 - Cells::kKids);
+      for (int i = 0; i < base_count && alive != 0; ++i) {
+        const double* s = base_near_[i].x;
+        double nearest[N][2], farthest[N][2], centre[N][2], parent_near = 0.0, parent_far = 0.0;
+        for (int k = 0; k < N; ++k) {
+          double e0 = s[k] - lo[k], e1 = e0 - h, e2 = e1 - h;
+          double a0 = std::abs(e0), a1 = std::abs(e1), a2 = std::abs(e2);
+          farthest[k][0] = std::max(a0, a1) * std::max(a0, a1);
+          farthest[k][1] = std::max(a1, a2) * std::max(a1, a2);
+          double n0 = e0 < 0.0 ? e0 : e1 > 0.0 ? e1 : 0.0, n1 = e1 < 0.0 ? e1 : e2 > 0.0 ? e2 : 0.0;
+          nearest[k][0] = n0 * n0;
+          nearest[k][1] = n1 * n1;
+          centre[k][0] = (e0 - 0.5 * h) * (e0 - 0.5 * h);
+          centre[k][1] = (e1 - 0.5 * h) * (e1 - 0.5 * h);
+          double pn = e0 < 0.0 ? e0 : e2 > 0.0 ? e2 : 0.0;
+          parent_near += pn * pn;
+          parent_far += std::max(a0, a2) * std::max(a0, a2);
         }
-        alive |= uint32_t(!in) << j;
+        if (parent_near >= d2_) continue;
+        if (parent_far < in2_) return 0u;  // the whole parent is covered
+        for (int j = 0; j < Cells::kKids; ++j) {
+          if (!(alive >> j & 1)) continue;
+          double f = 0.0, n = 0.0, c = 0.0;
+          for (int k = 0; k < N; ++k) {
+            int half = (j >> k) & 1;
+            f += farthest[k][half], n += nearest[k][half], c += centre[k][half];
+          }
+          if (f < in2_) {
+            alive &= ~(uint32_t(1) << j);  // covered by one disk: pruned
+            continue;
+          }
+          if (n >= d2_) continue;
+          // Overlaps: a witness if it is among the disks that come closest to the centre.
+          uint32_t id = base_near_[i].id;
+          for (int r = 0; r < Cell::kWitnesses; ++r)
+            if (c < best[j][r]) std::swap(c, best[j][r]), std::swap(id, kids[j].near[r]);
+        }
       }
       return alive;
     });
@@ -328,7 +344,6 @@ class GamitoSampler {
   int level_ = 0, last_ = 0;
   std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
   std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
-  std::vector<Near> near_ = std::vector<Near>(kMaxNear);       // ... and the parent being subdivided
 };
 
 template <int N>

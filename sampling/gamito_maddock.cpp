@@ -291,7 +291,13 @@ class GamitoSampler {
       uint32_t alive = ~uint32_t(0) >> (32 - Cells::kKids);
       for (int i = 0; i < base_count && alive != 0; ++i) {
         const double* s = base_near_[i].x;
-        double nearest[N][2], farthest[N][2], centre[N][2], parent_near = 0.0, parent_far = 0.0;
+        double parent_near = 0.0;
+        for (int k = 0; k < N; ++k) {
+          double e0 = s[k] - lo[k], e2 = e0 - w, pn = e0 < 0.0 ? e0 : e2 > 0.0 ? e2 : 0.0;
+          parent_near += pn * pn;
+        }
+        if (parent_near >= d2_) continue;  // the disk misses the parent
+        double nearest[N][2], farthest[N][2], centre[N][2], parent_far = 0.0;
         for (int k = 0; k < N; ++k) {
           double e0 = s[k] - lo[k], e1 = e0 - h, e2 = e1 - h;
           double a0 = std::abs(e0), a1 = std::abs(e1), a2 = std::abs(e2);
@@ -302,11 +308,8 @@ class GamitoSampler {
           nearest[k][1] = n1 * n1;
           centre[k][0] = (e0 - 0.5 * h) * (e0 - 0.5 * h);
           centre[k][1] = (e1 - 0.5 * h) * (e1 - 0.5 * h);
-          double pn = e0 < 0.0 ? e0 : e2 > 0.0 ? e2 : 0.0;
-          parent_near += pn * pn;
           parent_far += std::max(a0, a2) * std::max(a0, a2);
         }
-        if (parent_near >= d2_) continue;
         if (parent_far < in2_) return 0u;  // the whole parent is covered
         for (int j = 0; j < Cells::kKids; ++j) {
           if (!(alive >> j & 1)) continue;

@@ -208,13 +208,13 @@ class GamitoSampler {
   // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
   // order of their level-0 cell); rebuilt whenever the slots move.
   void index_groups() {
-    std::fill(group_.begin(), group_.end(), 0u);
+    std::size_t next = 0;  // first level-0 cell whose start is not written yet
     for (std::size_t i = 0; i < cells_.slots(); ++i) {
       std::size_t base = 0, stride = 1;
       for (int k = 0; k < N; ++k) base += std::size_t(cells_[i].c[k] >> level_) * stride, stride *= res_;
-      ++group_[base + 1];
+      while (next <= base) group_[next++] = uint32_t(i);
     }
-    for (std::size_t b = 1; b < group_.size(); ++b) group_[b] += group_[b - 1];
+    while (next < group_.size()) group_[next++] = uint32_t(cells_.slots());
   }
 
   // Plain Euclidean: the grid hands out periodic images.

@@ -44,6 +44,7 @@ class GamitoSampleGrid {
   // (see visit_cell()).
   template <class F>
   bool visit(const double* p, double reach, F&& f) const {
+    if (!periodic_) return visit_walled(p, reach, f);
     // Per axis: the cells in range (unwrapped index in [-res, 2 res) when periodic) as
     // wrapped offsets and image shifts, so the loops below only read.
     int span[N], cur[N];
@@ -90,6 +91,33 @@ class GamitoSampleGrid {
       }
       int k = 1;
       while (k < N && cur[k] == span[k] - 1) cur[k] = 0, ++k;
+      if (k >= N) return false;
+      ++cur[k];
+    }
+  }
+
+  // visit() inside walls: no images, the cells in range are a plain box.
+  template <class F>
+  bool visit_walled(const double* p, double reach, F& f) const {
+    int lo[N], hi[N], cur[N];
+    for (int k = 0; k < N; ++k) {
+      lo[k] = std::max(floor_int((p[k] - reach) * res_), 0);
+      hi[k] = std::min(floor_int((p[k] + reach) * res_), res_ - 1);
+      if (lo[k] > hi[k]) return false;
+      cur[k] = lo[k];
+    }
+    for (;;) {
+      std::size_t row = 0;
+      for (int k = 1; k < N; ++k) row += std::size_t(cur[k]) * stride_[k];
+      for (std::size_t id = row + std::size_t(lo[0]), last = row + std::size_t(hi[0]); id <= last; ++id)
+        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
+          if (f(static_cast<const double*>(c->x), uint32_t(id))) return true;
+          if constexpr (!kChained) break;
+          else if (c->more < 0) break;
+          else c = &overflow_[std::size_t(c->more)];
+        }
+      int k = 1;
+      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
       if (k >= N) return false;
       ++cur[k];
     }

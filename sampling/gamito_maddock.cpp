@@ -78,6 +78,7 @@ class GamitoSampler {
       fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), tried, hits,
               out.size() / N);
 #endif
+      advance_updates(true);
       if (cells_.compact_if_sparse()) index_groups();
       if (level_ < last_ && double(hits) < kRefineBelow * double(tried)) subdivide();
     }
@@ -100,6 +101,12 @@ class GamitoSampler {
     bool live[kBatch];
     double p[kBatch][N];
     uint32_t near[kBatch][Cell::kWitnesses];
+  };
+
+  struct Point {
+    Point() = default;
+    explicit Point(const double* p) { std::copy(p, p + N, x); }
+    double x[N];
   };
 
   // A sample near a cell being subdivided, with the sample-grid cell that stores it.
@@ -140,6 +147,7 @@ class GamitoSampler {
   // ... and the test against the samples near the point. The cells only ever shrink, so a
   // dart drawn from earlier cells that lands in S_i is still uniform over S_i.
   std::size_t test(const Batch& b, std::vector<double>& out, std::size_t& tried) {
+    advance_updates(false);
     std::size_t hits = 0;
     for (int j = 0; j < kBatch; ++j) {
       if (!b.live[j]) continue;
@@ -164,7 +172,8 @@ class GamitoSampler {
         ++hits;
         grid_.insert(p);
         out.insert(out.end(), p, p + N);
-        update(p);
+        stage(p, 0);
+        updates_[0].push_back(Point(p));
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
       const Cell& cell = cells_[b.idx[j]];
@@ -174,10 +183,13 @@ class GamitoSampler {
   }
 
   // §4.3 Update: the live cells in the 3^n level-0 cells around a new sample that its disk
-  // covers are pruned right away, so darts and the next subdivision do not spend time on
-  // them. (Cells farther away are hardly ever inside the disk; they are left to the
+  // covers are pruned, so darts and the next subdivision do not spend time on them. (Cells farther away are hardly ever inside the disk; they are left to the
   // coverage tests of later darts and subdivisions.)
-  void update(const double* p) {
+  //
+  // The pruning runs two batches after the sample is accepted, so the slot index and then the
+  // cells can be prefetched: stage(p, 0) on acceptance, stage(p, 1) one batch later,
+  // stage(p, 2) to prune.
+  void stage(const double* p, int step) {
     int home[N], off[N];
     for (int k = 0; k < N; ++k) home[k] = std::min(int(p[k] * res_), int(res_) - 1), off[k] = -1;
     for (;;) {
@@ -195,7 +207,9 @@ class GamitoSampler {
         base += std::size_t(c) * stride;
         stride *= res_;
       }
-      if (inside)
+      if (inside && step == 0) __builtin_prefetch(&group_[base]);
+      if (inside && step == 1) __builtin_prefetch(cells_.data() + group_[base]);
+      if (inside && step == 2)
         for (std::size_t i = group_[base]; i < group_[base + 1]; ++i)
           if (!cells_.dead(i) && covered(cells_[i], s)) cells_.kill(i);
       int k = 0;
@@ -203,6 +217,16 @@ class GamitoSampler {
       if (k == N) return;
       ++off[k];
     }
+  }
+
+  // Advances the samples waiting for their Update by one step; all of them when `flush`
+  // (before the slots move).
+  void advance_updates(bool flush) {
+    for (const Point& p : updates_[1]) stage(p.x, 2);
+    updates_[1].clear();
+    for (const Point& p : updates_[0]) stage(p.x, flush ? 2 : 1);
+    if (!flush) updates_[0].swap(updates_[1]);
+    updates_[0].clear();
   }
 
   // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
@@ -345,6 +369,7 @@ class GamitoSampler {
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
+  std::vector<Point> updates_[2];  // accepted samples whose Update waits (advance_updates())
   std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
   std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
 };

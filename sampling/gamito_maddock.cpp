@@ -103,10 +103,13 @@ class GamitoSampler {
     uint32_t near[kBatch][Cell::kWitnesses];
   };
 
-  struct Point {
-    Point() = default;
-    explicit Point(const double* p) { std::copy(p, p + N, x); }
+  // An accepted sample waiting for its Update, with the level-0 cells around it (their
+  // index and, per axis in 2 bits, the periodic image of the sample that reaches them).
+  static constexpr int kAround = N == 1 ? 3 : N == 2 ? 9 : N == 3 ? 27 : N == 4 ? 81 : 243;
+  struct Pending {
     double x[N];
+    int count;
+    uint32_t base[kAround], image[kAround];
   };
 
   // A sample near a cell being subdivided, with the sample-grid cell that stores it.
@@ -172,8 +175,7 @@ class GamitoSampler {
         ++hits;
         grid_.insert(p);
         out.insert(out.end(), p, p + N);
-        stage(p, 0);
-        updates_[0].push_back(Point(p));
+        queue_update(p);
       }
       // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
       const Cell& cell = cells_[b.idx[j]];
@@ -183,35 +185,35 @@ class GamitoSampler {
   }
 
   // §4.3 Update: the live cells in the 3^n level-0 cells around a new sample that its disk
-  // covers are pruned, so darts and the next subdivision do not spend time on them. (Cells farther away are hardly ever inside the disk; they are left to the
-  // coverage tests of later darts and subdivisions.)
-  //
-  // The pruning runs two batches after the sample is accepted, so the slot index and then the
-  // cells can be prefetched: stage(p, 0) on acceptance, stage(p, 1) one batch later,
-  // stage(p, 2) to prune.
-  void stage(const double* p, int step) {
+  // covers are pruned, so darts and the next subdivision do not spend time on them. (Cells
+  // farther away are hardly ever inside the disk; they are left to the coverage tests of
+  // later darts and subdivisions.) The pruning runs two batches after the sample is
+  // accepted, so the slot index and then the cells can be prefetched (advance_updates()).
+  void queue_update(const double* p) {
+    Pending& u = updates_[0].emplace_back();
+    std::copy(p, p + N, u.x);
+    u.count = 0;
     int home[N], off[N];
     for (int k = 0; k < N; ++k) home[k] = std::min(int(p[k] * res_), int(res_) - 1), off[k] = -1;
     for (;;) {
       std::size_t base = 0, stride = 1;
-      double s[N];
+      uint32_t image = 0;
       bool inside = true;
       for (int k = 0; k < N; ++k) {
         int c = home[k] + off[k];
-        s[k] = p[k];
         if (c < 0 || c >= int(res_)) {  // across a wall, or the nearest image when periodic
           inside &= periodic_;
-          s[k] += c < 0 ? 1.0 : -1.0;
+          image |= (c < 0 ? 1u : 2u) << (2 * k);
           c += c < 0 ? int(res_) : -int(res_);
         }
         base += std::size_t(c) * stride;
         stride *= res_;
       }
-      if (inside && step == 0) __builtin_prefetch(&group_[base]);
-      if (inside && step == 1) __builtin_prefetch(cells_.data() + group_[base]);
-      if (inside && step == 2)
-        for (std::size_t i = group_[base]; i < group_[base + 1]; ++i)
-          if (!cells_.dead(i) && covered(cells_[i], s)) cells_.kill(i);
+      if (inside) {
+        __builtin_prefetch(&group_[base]);
+        u.base[u.count] = uint32_t(base);
+        u.image[u.count++] = image;
+      }
       int k = 0;
       while (k < N && off[k] == 1) off[k] = -1, ++k;
       if (k == N) return;
@@ -219,14 +221,30 @@ class GamitoSampler {
     }
   }
 
-  // Advances the samples waiting for their Update by one step; all of them when `flush`
-  // (before the slots move).
+  // Moves the waiting Updates one step on: prefetch the cells of those queued in the last
+  // batch, prune for those queued before. All are pruned when `flush` (the slots move next).
   void advance_updates(bool flush) {
-    for (const Point& p : updates_[1]) stage(p.x, 2);
+    for (const Pending& u : updates_[1]) prune(u);
     updates_[1].clear();
-    for (const Point& p : updates_[0]) stage(p.x, flush ? 2 : 1);
+    for (const Pending& u : updates_[0]) {
+      if (flush) prune(u);
+      else
+        for (int i = 0; i < u.count; ++i) __builtin_prefetch(cells_.data() + group_[u.base[i]]);
+    }
     if (!flush) updates_[0].swap(updates_[1]);
     updates_[0].clear();
+  }
+
+  void prune(const Pending& u) {
+    for (int i = 0; i < u.count; ++i) {
+      double s[N];  // the image of the sample next to the level-0 cell
+      for (int k = 0; k < N; ++k) {
+        uint32_t code = u.image[i] >> (2 * k) & 3u;
+        s[k] = u.x[k] + (code == 1 ? 1.0 : code == 2 ? -1.0 : 0.0);
+      }
+      for (std::size_t j = group_[u.base[i]]; j < group_[u.base[i] + 1]; ++j)
+        if (!cells_.dead(j) && covered(cells_[j], s)) cells_.kill(j);
+    }
   }
 
   // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
@@ -369,7 +387,7 @@ class GamitoSampler {
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
-  std::vector<Point> updates_[2];  // accepted samples whose Update waits (advance_updates())
+  std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
   std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
   std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
 };

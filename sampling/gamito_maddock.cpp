@@ -21,7 +21,6 @@
 #include "generator.h"
 #include "rng.h"
 
-#include <cstdio>
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -74,10 +73,6 @@ class GamitoSampler {
         hits += test(batch[cur], out, tried);
         thrown += kBatch;
       }
-#ifdef GAMITO_TRACE
-      fprintf(stderr, "level %d cells %zu darts %zu hits %zu points %zu\n", level_, cells_.live(), tried, hits,
-              out.size() / N);
-#endif
       advance_updates(true);
       if (cells_.compact_if_sparse()) index_groups();
       if (level_ < last_ && double(hits) < kRefineBelow * double(tried)) subdivide();
@@ -375,9 +370,6 @@ class GamitoSampler {
     });
     ++level_;
     index_groups();
-#ifdef GAMITO_TRACE
-    fprintf(stderr, "  subdivided to %zu\n", cells_.live());
-#endif
   }
 
   double d_, d2_, in2_;

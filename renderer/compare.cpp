@@ -1,6 +1,8 @@
 #include "compare.h"
 
+#include "adaptive_metric.h"
 #include "atomic_file.h"
+#include "convergence.h"
 #include "errors.h"
 #include "image_metrics.h"
 #include "image_output.h"
@@ -67,29 +69,6 @@ RenderResult render_with(const SceneDesc& s, const CompareOptions& o) {
   return render(s, *sampler, ro);
 }
 
-// Least-squares slope of log(y) against log(x).
-double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!(x[i] > 0 && y[i] > 0)) continue;
-    double a = std::log(x[i]), b = std::log(y[i]);
-    n += 1, sx += a, sy += b, sxx += a * a, sxy += a * b;
-  }
-  double d = n * sxx - sx * sx;
-  return n >= 2 && d != 0 ? (n * sxy - sx * sy) / d : 0.0;
-}
-
-// Log-log interpolation of y(x) at x0 from points sorted by x; NaN outside their range.
-double loglog_interp(const std::vector<double>& x, const std::vector<double>& y, double x0) {
-  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
-    if (x0 >= x[i] && x0 <= x[i + 1] && x[i] > 0 && x[i + 1] > x[i] && y[i] > 0 && y[i + 1] > 0) {
-      double t = (std::log(x0) - std::log(x[i])) / (std::log(x[i + 1]) - std::log(x[i]));
-      return std::exp(std::log(y[i]) + t * (std::log(y[i + 1]) - std::log(y[i])));
-    }
-  }
-  return std::nan("");
-}
-
 // The crop window (side c) where the reference has the most detail (sum of gradient norms).
 std::array<int, 3> detail_window(const Image& ref) {
   const int W = ref.width, H = ref.height, c = std::max(8, std::min(W, H) / 4);
@@ -132,9 +111,20 @@ void validate_compare_options(const CompareOptions& o) {
     if (o.spp[i] < 1) throw UsageError("--spp: sample counts must be >= 1, got " + std::to_string(o.spp[i]));
     if (i && o.spp[i] <= o.spp[i - 1]) throw UsageError("--spp: sample counts must increase");
   }
-  if (!o.adaptive_metric.empty() && o.adaptive_metric != "relative-error" && o.adaptive_metric != "contrast")
-    throw UsageError("--adaptive-metric must be relative-error or contrast, got \"" + o.adaptive_metric + "\"");
+  auto one_of = [](const std::string& flag, const std::string& v, std::initializer_list<const char*> names) {
+    std::string list;
+    for (const char* n : names) {
+      if (v == n) return;
+      list += (list.empty() ? "" : ", ") + std::string(n);
+    }
+    throw UsageError(flag + " must be one of " + list + ", got \"" + v + "\"");
+  };
+  if (!o.adaptive_metric.empty()) one_of("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
+  if (!o.adaptive_variance.empty()) one_of("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
   if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
+  if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
+    throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +
+                     " must be one of the --spp sample counts");
   if (o.reference_spp < 1) throw UsageError("--reference-spp must be >= 1, got " + std::to_string(o.reference_spp));
   if (o.reference_spp < 4 * o.spp.back())
     throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(4 * o.spp.back()) +
@@ -310,9 +300,12 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   }
   j["equal_time"] = eq_time;
 
-  // Adaptive refinement vs uniform sampling at equal total samples.
+  // Adaptive refinement: a threshold sweep per sampler, each run compared with uniform
+  // sampling at equal samples, and the samples needed to reach the uniform RMSE at the
+  // target spp. The default threshold's run also gets its image and sample-count map.
   if (o.adaptive) {
-    json ja = json::array();
+    json ja = json::array(), sweep = json::array(), target;
+    std::vector<std::string> csv;
     for (const auto& name : o.samplers) {
       SceneDesc s = base;
       s.sampler.type = name;
@@ -320,42 +313,89 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
       ad.min_spp = std::max(2, o.spp.front());
       ad.max_spp = std::max(ad.min_spp, o.spp.back());
-      if (o.adaptive_threshold > 0) ad.threshold = float(o.adaptive_threshold);
       if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
-      RenderResult r = render_with(s, o);
+      if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
+      const double base_threshold = o.adaptive_threshold > 0 ? o.adaptive_threshold : effective_threshold(ad);
       std::vector<double> x, y;
+      const Run* at_target = nullptr;
       for (const Run& u : runs)
-        if (u.sampler == name) x.push_back(u.spp_mean), y.push_back(u.rmse);  // traced, like the adaptive mean
-      double e = rmse(r.image, ref);
-      std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
-      write_display_png(o.out / img, W, H, display_rgb(r.image));
-      std::vector<float> rgb(std::size_t(3) * W * H);
-      for (std::size_t i = 0; i < r.image.samples.size(); ++i) {
-        float t = std::log2(std::max(1.0f, r.image.samples[i])) / std::log2(float(ad.max_spp));
-        Vec3 col = heat(t);
-        rgb[3 * i] = col.x, rgb[3 * i + 1] = col.y, rgb[3 * i + 2] = col.z;
+        if (u.sampler == name) {
+          x.push_back(u.spp_mean), y.push_back(u.rmse);  // traced, like the adaptive mean
+          if (u.spp == o.adaptive_target_spp) at_target = &u;
+        }
+      std::vector<double> cost, err;
+      // k = -4..4, and on (up to 8) while even the cheapest run reaches the target, so that
+      // the crossing is interpolated rather than only bounded.
+      for (int k = -4; k <= 8; ++k) {
+        if (k > 4 && !cost_to_reach(cost, err, at_target->rmse).upper_bound) break;
+        const double threshold = std::ldexp(base_threshold, k);
+        ad.threshold = float(threshold);
+        RenderResult r = render_with(s, o);
+        const double e = rmse(r.image, ref), uniform = loglog_interp(x, y, r.stats.spp_mean);
+        cost.push_back(double(r.stats.samples)), err.push_back(e);
+        sweep.push_back({{"sampler", name},
+                         {"threshold", threshold},
+                         {"samples", r.stats.samples},
+                         {"spp_mean", r.stats.spp_mean},
+                         {"rmse", e},
+                         {"rounds", r.stats.adaptive_rounds},
+                         {"seconds", r.stats.seconds}});
+        char row[200];
+        std::snprintf(row, sizeof row, "%s,%s,%s,%.9g,%lld,%.6g,%.9g,%d,%.4g", name.c_str(), ad.metric.c_str(),
+                      ad.variance.c_str(), threshold, (long long)r.stats.samples, r.stats.spp_mean, e,
+                      r.stats.adaptive_rounds, r.stats.seconds);
+        csv.push_back(row);
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%-8s adaptive t=%.5g: %.1f spp mean, rmse %.5f (uniform at equal samples %.5f)",
+                      name.c_str(), threshold, r.stats.spp_mean, e, uniform);
+        say(buf);
+        if (k != 0) continue;
+        std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
+        write_display_png(o.out / img, W, H, display_rgb(r.image));
+        std::vector<float> rgb(std::size_t(3) * W * H);
+        for (std::size_t i = 0; i < r.image.samples.size(); ++i) {
+          float t = std::log2(std::max(1.0f, r.image.samples[i])) / std::log2(float(ad.max_spp));
+          Vec3 col = heat(t);
+          rgb[3 * i] = col.x, rgb[3 * i + 1] = col.y, rgb[3 * i + 2] = col.z;
+        }
+        write_display_png(o.out / map, W, H, rgb);
+        ja.push_back({{"sampler", name},
+                      {"metric", ad.metric},
+                      {"variance", ad.variance},
+                      {"threshold", threshold},
+                      {"min_spp", ad.min_spp},
+                      {"max_spp", ad.max_spp},
+                      {"rounds", r.stats.adaptive_rounds},
+                      {"spp_mean", r.stats.spp_mean},
+                      {"samples", r.stats.samples},
+                      {"seconds", r.stats.seconds},
+                      {"rmse", e},
+                      {"uniform_rmse_at_equal_samples", std::isnan(uniform) ? json(nullptr) : json(uniform)},
+                      {"image", img},
+                      {"sample_map", map}});
       }
-      write_display_png(o.out / map, W, H, rgb);
-      double uniform = loglog_interp(x, y, r.stats.spp_mean);
-      ja.push_back({{"sampler", name},
-                    {"metric", ad.metric},
-                    {"threshold", ad.threshold},
-                    {"min_spp", ad.min_spp},
-                    {"max_spp", ad.max_spp},
-                    {"rounds", r.stats.adaptive_rounds},
-                    {"spp_mean", r.stats.spp_mean},
-                    {"samples", r.stats.samples},
-                    {"seconds", r.stats.seconds},
-                    {"rmse", e},
-                    {"uniform_rmse_at_equal_samples", std::isnan(uniform) ? json(nullptr) : json(uniform)},
-                    {"image", img},
-                    {"sample_map", map}});
+      // Traced samples on both sides: the filter's support skips the same share of either.
+      const CostToReach c = cost_to_reach(cost, err, at_target->rmse);
+      const double ratio = c.cost / double(at_target->samples);
+      target[name] = {{"uniform_samples", at_target->samples},
+                      {"uniform_rmse", at_target->rmse},
+                      {"adaptive_samples", std::isnan(c.cost) ? json(nullptr) : json(c.cost)},
+                      {"ratio", std::isnan(ratio) ? json(nullptr) : json(ratio)},
+                      {"upper_bound", c.upper_bound}};
       char buf[200];
-      std::snprintf(buf, sizeof buf, "%-8s adaptive: %.1f spp mean, rmse %.5f (uniform at equal samples %.5f)",
-                    name.c_str(), r.stats.spp_mean, e, uniform);
+      std::snprintf(buf, sizeof buf, "%-8s adaptive reaches the uniform %d-spp RMSE %.5f with %s%.3f of its samples",
+                    name.c_str(), o.adaptive_target_spp, at_target->rmse, c.upper_bound ? "<= " : "", ratio);
       say(buf);
     }
     j["adaptive"] = ja;
+    j["adaptive_sweep"] = sweep;
+    j["adaptive_target"] = {{"spp", o.adaptive_target_spp}, {"samplers", target}};
+    j["adaptive_csv"] = "adaptive.csv";
+    j["adaptive_plot"] = "adaptive_vs_spp.png";
+    write_file_atomically(o.out / "adaptive.csv", [&](std::ostream& os) {
+      os << "sampler,metric,variance,threshold,samples,spp_mean,rmse,rounds,seconds\n";
+      for (const auto& row : csv) os << row << "\n";
+    });
   }
 
   write_file_atomically(o.out / "results.csv", [&](std::ostream& os) {

@@ -14,8 +14,10 @@ struct CompareOptions {
   std::vector<std::string> samplers{"random", "jitter", "poisson", "sobol"};
   std::vector<int> spp{1, 4, 16, 64, 256};
   bool adaptive = false;
-  double adaptive_threshold = 0;    // > 0 overrides the scene's (or the default) threshold
+  double adaptive_threshold = 0;    // > 0: the centre of the threshold sweep (else the scene's, else the metric's default)
   std::string adaptive_metric;      // non-empty overrides the metric
+  std::string adaptive_variance;    // non-empty overrides the variance estimator
+  int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
   int reference_spp = 4096;
   std::string reference_sampler = "sobol";
   int threads = 0;

@@ -6,12 +6,13 @@
 
 namespace pdrt {
 
-void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z) {
+void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half) {
   double wt = weight;
   w += wt, w2 += wt * wt;
   rgb[0] += wt * L.x, rgb[1] += wt * L.y, rgb[2] += wt * L.z;
   double y = luminance(L);
   lum += wt * y, lum2 += wt * y * y;
+  half_w[half] += wt, half_lum[half] += wt * y;
   double a = std::abs(wt);
   albedo[0] += a * alb.x, albedo[1] += a * alb.y, albedo[2] += a * alb.z;
   normal[0] += a * n.x, normal[1] += a * n.y, normal[2] += a * n.z;
@@ -21,10 +22,7 @@ void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n
   ++samples;
 }
 
-double PixelAccum::relative_error(double floor) const {
-  if (samples < 2 || w == 0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(variance_of_mean()) / std::max(std::abs(lum / w), floor);
-}
+double PixelAccum::mean_luminance() const { return w != 0 ? lum / w : 0.0; }
 
 double PixelAccum::contrast(int k) const {
   if (samples < 2) return std::numeric_limits<double>::infinity();
@@ -43,6 +41,14 @@ double PixelAccum::variance_of_mean() const {
   double mean = lum / w, var = std::max(0.0, lum2 / w - mean * mean);
   double n_eff = w * w / w2;
   return n_eff > 1 ? var / (n_eff - 1) : 0.0;
+}
+
+double PixelAccum::half_variance_of_mean() const {
+  // Each half's mean has twice the variance of the whole mean, so their difference has four
+  // times it.
+  if (half_w[0] == 0 || half_w[1] == 0) return variance_of_mean();
+  double d = half_lum[0] / half_w[0] - half_lum[1] / half_w[1];
+  return d * d / 4;
 }
 
 Image Film::image(float exposure_stops) const {

@@ -13,6 +13,7 @@ struct PixelAccum {
   double w = 0, w2 = 0;          // sum of weights and of squared weights
   double rgb[3] = {0, 0, 0};     // sum w L
   double lum = 0, lum2 = 0;      // sum w Y, sum w Y^2 (for the variance of the mean)
+  double half_w[2] = {0, 0}, half_lum[2] = {0, 0};  // sum w, sum w Y over even / odd sample indices
   double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, depth = 0;
   double abs_w = 0;              // sum |w|: AOV weights (filter weights may be negative: Mitchell)
   double depth_w = 0;            // sum |w| over samples that hit something
@@ -20,11 +21,14 @@ struct PixelAccum {
   int64_t prefix = 0;            // sample indices consumed (>= samples: rank selection skips some)
   float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
 
-  void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z);
+  // `half` is the sample index's parity: the two half buffers of the `halves` variance.
+  void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half);
   Vec3 value() const;            // normalised weighted mean (Cook §4.2)
+  double mean_luminance() const;
   double variance_of_mean() const;  // of the luminance
-  // Relative standard error of the mean luminance, sqrt(var of mean) / max(mean, floor).
-  double relative_error(double floor = 1e-3) const;
+  // The same from the two half buffers (Cycles): (mean_even - mean_odd)^2 / 4; falls back to
+  // variance_of_mean() while a half is empty.
+  double half_variance_of_mean() const;
   // Mitchell (1987) contrast (max - min) / (max + min) of the samples, per channel.
   double contrast(int channel) const;
 };

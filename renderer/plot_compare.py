@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Plots and the HTML report of `pdrt compare`: reads DIR/results.json and writes
 rmse_vs_spp.png (log-log, fitted slopes), rmse_vs_time.png (equal-time view),
-error_spectra.png (radially averaged power of the error images) and index.html."""
+error_spectra.png (radially averaged power of the error images), with --adaptive
+adaptive_vs_spp.png (the threshold sweep against uniform sampling), and index.html."""
 import html
 import json
 import math
@@ -67,7 +68,31 @@ def main(out):
     fig.savefig(os.path.join(out, "error_spectra.png"), dpi=110)
     plt.close(fig)
 
+    if r.get("adaptive_sweep"):
+        plot_adaptive(out, r)
     write_html(out, r)
+
+
+def plot_adaptive(out, r):
+    """RMSE against mean traced spp: each sampler's uniform curve (solid) and its adaptive
+    threshold sweep (dashed), with the uniform RMSE at the target spp as the bar to reach."""
+    pixels = r["width"] * r["height"]
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for s in r["samplers"]:
+        uni = sorted((u["samples"] / pixels, u["rmse"]) for u in r["runs"] if u["sampler"] == s)
+        ada = sorted((a["spp_mean"], a["rmse"]) for a in r["adaptive_sweep"] if a["sampler"] == s)
+        ax.loglog([p[0] for p in uni], [p[1] for p in uni], "o-", color=COLORS.get(s), label="%s uniform" % s)
+        ax.loglog([p[0] for p in ada], [p[1] for p in ada], "s--", color=COLORS.get(s), label="%s adaptive" % s)
+        t = r["adaptive_target"]["samplers"][s]
+        ax.axhline(t["uniform_rmse"], color=COLORS.get(s), lw=0.6, alpha=0.5)
+    ax.set_xlabel("mean samples per pixel (traced)")
+    ax.set_ylabel("RMSE vs reference")
+    ax.set_title("adaptive sweep vs uniform (lines: uniform RMSE at %d spp)" % r["adaptive_target"]["spp"])
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "adaptive_vs_spp.png"), dpi=110)
+    plt.close(fig)
 
 
 def fmt(x):
@@ -133,6 +158,23 @@ def write_html(out, r):
                          e(a["sampler"]), e(a["metric"]), a["threshold"], a["spp_mean"], a["rounds"], fmt(a["rmse"]),
                          fmt(a["uniform_rmse_at_equal_samples"]), e(a["image"]), e(a["sample_map"])))
         p.append("</table>")
+    if r.get("adaptive_sweep"):
+        tgt = r["adaptive_target"]
+        p.append("<h2>Adaptive threshold sweep</h2><img src='adaptive_vs_spp.png'>")
+        p.append("<h3>Samples adaptive needs to reach the uniform %d-spp RMSE</h3><table><tr><th>sampler</th>"
+                 "<th>uniform RMSE</th><th>uniform samples</th><th>adaptive samples</th><th>ratio</th></tr>" % tgt["spp"])
+        for s in samplers:
+            t = tgt["samplers"][s]
+            ratio = "not reached" if t["ratio"] is None else ("&le; " if t["upper_bound"] else "") + "%.3f" % t["ratio"]
+            samples = "n/a" if t["adaptive_samples"] is None else "%.0f" % t["adaptive_samples"]
+            p.append("<tr><td>%s</td><td>%s</td><td>%d</td><td>%s</td><td>%s</td></tr>" % (
+                e(s), fmt(t["uniform_rmse"]), t["uniform_samples"], samples, ratio))
+        p.append("</table><h3>Sweep</h3><table><tr><th>sampler</th><th>threshold</th><th>mean spp</th>"
+                 "<th>rounds</th><th>RMSE</th></tr>")
+        for a in r["adaptive_sweep"]:
+            p.append("<tr><td>%s</td><td>%g</td><td>%.1f</td><td>%d</td><td>%s</td></tr>" % (
+                e(a["sampler"]), a["threshold"], a["spp_mean"], a["rounds"], fmt(a["rmse"])))
+        p.append("</table><p>Every run: <a href='adaptive.csv'>adaptive.csv</a>.</p>")
     p.append("<p>Numbers: <a href='results.json'>results.json</a>, <a href='results.csv'>results.csv</a>.</p>")
     p.append("</body></html>")
     tmp = os.path.join(out, "index.html.tmp")

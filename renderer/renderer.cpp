@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include "adaptive_metric.h"
 #include "embree_scene.h"
 #include "errors.h"
 #include "filter.h"
@@ -97,7 +98,7 @@ struct PixelRenderer {
         ps.start_pixel_sample(x, y, i);
         PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
         Vec3 L = is_finite(pr.radiance) ? pr.radiance : Vec3(0.0f);  // a NaN must not poison the pixel
-        acc.add(L, w[k], pr.albedo, pr.normal, pr.depth);
+        acc.add(L, w[k], pr.albedo, pr.normal, pr.depth, int(i & 1));
         rays += pr.rays;
       }
     }
@@ -166,21 +167,23 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     // McCool–Fiume §5.1 / Cook §6: refine by extending prefixes. A pixel whose error is above
     // the threshold doubles its sample count; its 3x3 neighbours refine with it, so edges
     // are not left blocky. Samples already taken are never moved or discarded.
-    const bool contrast = ad.metric == "contrast";
-    const double per_channel[3] = {ad.threshold, ad.threshold * 0.75, ad.threshold * 1.5};  // Mitchell 0.4/0.3/0.6
+    AdaptiveMetric metric(ad);
     std::vector<uint8_t> bad(std::size_t(W) * H), active(std::size_t(W) * H);
+    std::vector<double> row_mean(H);
     for (;;) {
+      if (metric.needs_image_mean()) {
+        // Rows in parallel, then summed in order: the same mean at any thread count.
+        tbb::parallel_for(0, H, [&](int y) {
+          double s = 0;
+          for (int x = 0; x < W; ++x) s += film.at(x, y).mean_luminance();
+          row_mean[y] = s / W;
+        });
+        double s = 0;
+        for (double r : row_mean) s += r;
+        metric.set_image_mean(s / H);
+      }
       tbb::parallel_for(0, H, [&](int y) {
-        for (int x = 0; x < W; ++x) {
-          const PixelAccum& a = film.at(x, y);
-          bool b = false;
-          if (contrast) {
-            for (int k = 0; k < 3; ++k) b = b || a.contrast(k) > per_channel[k];
-          } else {
-            b = a.relative_error() > ad.threshold;
-          }
-          bad[std::size_t(y) * W + x] = b;
-        }
+        for (int x = 0; x < W; ++x) bad[std::size_t(y) * W + x] = !metric.converged(film.at(x, y));
       });
       int64_t n_active = 0;
       for (int y = 0; y < H; ++y)

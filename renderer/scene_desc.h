@@ -42,11 +42,12 @@ struct FilmDesc {
   float exposure = 0;  // stops: pixel values are scaled by 2^exposure
 };
 
-struct AdaptiveDesc {  // issue 5; parsed now so scene files are stable
+struct AdaptiveDesc {
   bool enabled = false;
   int min_spp = 4, max_spp = 256;
-  float threshold = 0.01f;
-  std::string metric = "relative-error";  // relative-error | contrast
+  float threshold = 0;  // 0 = the metric's own default (adaptive_metric.h)
+  std::string metric = "error-per-sample";  // error-per-sample | relative-error | contrast
+  std::string variance = "samples";         // samples | halves: how the mean's variance is estimated
 };
 
 struct SamplerDesc {

@@ -1,5 +1,6 @@
 #include "scene_loader.h"
 
+#include "adaptive_metric.h"
 #include "errors.h"
 #include "json_document.h"
 #include "obj_loader.h"
@@ -175,7 +176,7 @@ void SceneParser::sampler(const JsonObject& o) {
   if (auto n = o.get("seed")) s.seed = n->unsigned_integer();
   if (auto n = o.get("adaptive")) {
     JsonObject a = n->object();
-    a.allow({"min_spp", "max_spp", "threshold", "metric"});
+    a.allow({"min_spp", "max_spp", "threshold", "metric", "variance"});
     s.adaptive.enabled = true;
     auto min_n = a.get("min_spp"), max_n = a.get("max_spp");
     if (min_n) s.adaptive.min_spp = min_n->int_at_least(1);
@@ -186,7 +187,8 @@ void SceneParser::sampler(const JsonObject& o) {
       min_n->fail_got("must be <= max_spp (default " + std::to_string(s.adaptive.max_spp) + ")");
     }
     if (auto t = a.get("threshold")) s.adaptive.threshold = t->positive();
-    if (auto m = a.get("metric")) s.adaptive.metric = m->choice({"relative-error", "contrast"});
+    if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetrics);
+    if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVariances);
   }
 }
 

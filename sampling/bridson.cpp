@@ -198,11 +198,15 @@ inline unsigned Grid2D::clear(const V2d* u, unsigned& unsure) const {
 // holding 4^-j of the area), so a draw is kept with probability pi/4 instead of the ring's
 // 3*pi/16. j comes from the exact integer a^2 + b^2 and is applied to the step size.
 // Drawn in branch-free batches and consumed in order, so every candidate is an independent
-// uniform draw. Its own engines (seeded from the run's) are pcg64_fast, the cheapest pcg
-// per 64 bits; two alternate so their multiply chains overlap.
+// uniform draw. Its own engines (seeded from the run's) are pcg64_once_insecure: a 64-bit
+// LCG step and an RXS-M-XS output, the cheapest pcg per 64 bits (no 128-bit multiply;
+// each output once per 2^64-long period, far beyond a run's draws; "insecure" only means
+// predictable); two alternate so their multiply chains overlap.
 class AnnulusStream {
+  using Engine = pcg64_once_insecure;
+
  public:
-  explicit AnnulusStream(Rng& rng) : engine_{pcg64_fast(seed(rng)), pcg64_fast(seed(rng))} {}
+  explicit AnnulusStream(Rng& rng) : engine_{engine(rng), engine(rng)} {}
 
   // Draws i < 4 from the read position and the leading zeros of their a^2 + b^2 (64-bit);
   // take(n) moves past n.
@@ -220,8 +224,8 @@ class AnnulusStream {
     std::size_t n = std::size_t(end_ - pos_);  // size_t: no sign extension per store
     std::memmove(buf_, buf_ + pos_, 4 * sizeof(buf_[0]));
     std::memmove(clz_, clz_ + pos_, 4 * sizeof(clz_[0]));
-    pcg64_fast e0 = engine_[0], e1 = engine_[1];
-    auto draw = [&](pcg64_fast& e) {
+    Engine e0 = engine_[0], e1 = engine_[1];
+    auto draw = [&](Engine& e) {
       const uint64_t w = e();
       const int64_t a = int32_t(uint32_t(w)), b = int32_t(uint32_t(w >> 32));
       const uint64_t q = uint64_t(a * a) + uint64_t(b * b);  // up to 2^63: unsigned sum
@@ -239,12 +243,12 @@ class AnnulusStream {
     end_ = int(n);
   }
 
-  static unsigned __int128 seed(Rng& rng) {
-    const uint64_t hi = rng.next_u64();  // two statements: a fixed order
-    return (unsigned __int128)hi << 64 | rng.next_u64();
+  static Engine engine(Rng& rng) {
+    const uint64_t seed = rng.next_u64();  // two statements: a fixed order
+    return Engine(seed, rng.next_u64());
   }
 
-  pcg64_fast engine_[2];
+  Engine engine_[2];
   int pos_ = 0, end_ = 0;
   // Room for a batch after 3 leftovers, and for the 4-entry moves. clz_ is not a char
   // type, so its stores cannot alias the engine.

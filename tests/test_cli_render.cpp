@@ -134,10 +134,31 @@ TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
 }
 
+TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
+  fs::path d = scratch_dir("compare_adaptive");
+  fs::path scene = write_scene(d, R"("width": 16, "height": 12)");
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers poisson --spp 2,8,32 --reference-spp 256 --adaptive --adaptive-target-spp 8"
+                    " --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  ASSERT_GE(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4 (more while the target is not crossed)";
+  ASSERT_LE(j["adaptive_sweep"].size(), 13u);
+  EXPECT_DOUBLE_EQ(j["adaptive_sweep"][4]["threshold"].get<double>(), 1.0 / 16) << "the metric's default in the middle";
+  EXPECT_EQ(j["adaptive_target"]["spp"], 8);
+  const auto& t = j["adaptive_target"]["samplers"]["poisson"];
+  ASSERT_TRUE(t["ratio"].is_number()) << t.dump();
+  EXPECT_GT(t["ratio"].get<double>(), 0);
+  std::stringstream csv;
+  csv << std::ifstream(d / "report" / "adaptive.csv").rdbuf();
+  EXPECT_EQ(pdrt::test::line_count(csv.str()), int(j["adaptive_sweep"].size()) + 1) << "a header and one row per run";
+}
+
 TEST(CliCompare, BadOptionsAreUsageErrors) {
   fs::path d = scratch_dir("compare_bad");
   fs::path scene = write_scene(d);
-  for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100"}) {
+  for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
+                        "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive --adaptive-target-spp 3"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
     EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;

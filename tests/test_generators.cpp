@@ -1,5 +1,6 @@
 // Properties every generator promises: domain, minimum distance (brute force), determinism.
 #include "generator.h"
+#include "min_distance.h"
 #include "point_checks.h"
 #include "rng.h"
 
@@ -107,6 +108,21 @@ TEST(McCool, PrefixRelativeRadiusStaysHigh) {
     }
   }
   EXPECT_GE(running / max_packing_distance(1024, 2), 0.72);
+}
+
+TEST(McCool, IssueTwoRhoAtFourThousandPoints) {
+  // Issue 2's bar at the benchmarked size: 2-D, 4096 points, bounded and periodic, every
+  // prefix of >= 16 points rho >= 0.65 and the full set rho >= 0.72 (the pixel tables are
+  // made at this scale).
+  for (bool periodic : {false, true})
+    for (uint64_t seed : {1, 2}) {
+      GeneratorParams p = params("mccool", 2, periodic, seed);
+      p.count = 4096;
+      std::vector<double> rho = prefix_relative_radius(generate(p), periodic);
+      ASSERT_EQ(rho.size(), 4095u);
+      for (std::size_t n = 16; n <= 4096; ++n) ASSERT_GE(rho[n - 2], 0.65) << "prefix " << n << " periodic " << periodic;
+      EXPECT_GE(rho.back(), 0.72) << "periodic " << periodic << " seed " << seed;
+    }
 }
 
 // --- Other methods --------------------------------------------------------------------

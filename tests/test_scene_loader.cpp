@@ -118,6 +118,7 @@ TEST_F(SceneLoader, ExampleFilmSamplerIntegratorValues) {
   EXPECT_TRUE(s.sampler.adaptive.enabled);
   EXPECT_EQ(s.sampler.adaptive.max_spp, 128);
   EXPECT_EQ(s.sampler.adaptive.metric, "contrast");
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
   EXPECT_EQ(s.integrator.max_depth, 6);
   EXPECT_EQ(s.integrator.rr_depth, 2);
 }
@@ -255,6 +256,25 @@ TEST_F(SceneLoader, MaterialTypeDefaults) {
   expect_vec(s.materials[2].albedo, 1, 1, 1);
   EXPECT_FLOAT_EQ(s.materials[3].ior, 1.5f);
   EXPECT_FLOAT_EQ(s.materials[3].roughness, 0);
+}
+
+TEST_F(SceneLoader, AdaptiveDefaultsLeaveTheThresholdToTheMetric) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"metric\": \"contrast\"}}\n}\n"));
+  EXPECT_TRUE(s.sampler.adaptive.enabled);
+  EXPECT_EQ(s.sampler.adaptive.threshold, 0) << "unset: the renderer uses the metric's default";
+  EXPECT_EQ(s.sampler.adaptive.variance, "samples");
+  SceneDesc d = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {}}\n}\n"));
+  EXPECT_EQ(d.sampler.adaptive.metric, "error-per-sample");
+}
+
+TEST_F(SceneLoader, AdaptiveVarianceHalves) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"halves\"}}\n}\n"));
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
+}
+
+TEST_F(SceneLoader, UnknownAdaptiveVariance) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"pixels\"}}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.variance must be one of samples, halves, got \"pixels\"");
 }
 
 TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {

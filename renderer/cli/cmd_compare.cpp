@@ -21,7 +21,8 @@ void add_compare_command(CLI::App& app) {
     std::optional<int> width, height;
     int reference_spp = 4096, threads = 0;
     double adaptive_threshold = 0;
-    std::string adaptive_metric;
+    int adaptive_target_spp = 64;
+    std::string adaptive_metric, adaptive_variance;
     bool adaptive = false, quiet = false, no_plots = false;
   };
   auto o = std::make_shared<Opts>();
@@ -30,9 +31,16 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "Output directory (report, images, plots)")->required();
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
-  cmd->add_flag("--adaptive", o->adaptive, "Also compare adaptive refinement at equal total samples");
-  cmd->add_option("--adaptive-threshold", o->adaptive_threshold, "Adaptive threshold (default: the scene's, else 0.01)");
-  cmd->add_option("--adaptive-metric", o->adaptive_metric, "relative-error | contrast (default: the scene's)");
+  cmd->add_flag("--adaptive", o->adaptive,
+                "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4, more while needed) against uniform sampling");
+  cmd->add_option("--adaptive-threshold", o->adaptive_threshold,
+                  "Centre of the sweep (default: the scene's, else the metric's default)");
+  cmd->add_option("--adaptive-metric", o->adaptive_metric,
+                  "error-per-sample | relative-error | contrast (default: the scene's)");
+  cmd->add_option("--adaptive-variance", o->adaptive_variance, "samples | halves (default: the scene's)");
+  cmd->add_option("--adaptive-target-spp", o->adaptive_target_spp,
+                  "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
+      ->default_val(64);
   cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")->default_val(4096);
   cmd->add_option("--cache-dir", o->cache, "Reference cache directory (default ~/.cache/pdrt/references)");
   cmd->add_option("--width", o->width, "Image width (overrides film.width)");
@@ -59,6 +67,8 @@ void add_compare_command(CLI::App& app) {
     c.adaptive = o->adaptive;
     c.adaptive_threshold = o->adaptive_threshold;
     c.adaptive_metric = o->adaptive_metric;
+    c.adaptive_variance = o->adaptive_variance;
+    c.adaptive_target_spp = o->adaptive_target_spp;
     c.reference_spp = o->reference_spp;
     c.threads = o->threads;
     c.quiet = o->quiet;

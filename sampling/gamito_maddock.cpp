@@ -1,21 +1,23 @@
 // Gamito & Maddock 2009, "Accurate Multidimensional Poisson-Disk Sampling": maximal
-// Poisson-disk sampling driven by a 2^n-tree of the space where samples may still go.
+// Poisson-disk sampling driven by a subdivision of the space where samples may still go.
 //
-// Layout. The paper's tree starts at the root cube. Its top levels stay complete here: no
-// disk covers a cell much wider than itself, so down to a base level whose cells are about
-// the minimum distance wide the tree is kept implicitly, as per-level arrays of volume sums
-// in Morton order. The base cells are stored in blocks of 2^n siblings (volumes and child
-// links side by side); below them, nodes live in the same kind of block, taken from a pool
-// and recycled (no per-node allocation). Instead
-// of the paper's per-leaf sample lists (§4.1, §4.2), a grid of accepted samples answers
-// "which disks can reach this leaf"; each leaf only keeps the paper's candidate bit (no disk
-// touches it), so samples drawn in candidate leaves need no distance test at all. Random
-// descents run in small batches so their cache misses overlap (see run()).
+// Layout. The paper's 2^n-tree is kept only by its leaves, and all leaves sit at one level
+// (GamitoActiveCells): a flat array of equal cells, so the volume-weighted descent of
+// Generate (§4.1) is one uniform index, exact in integer units of the cell volume. The
+// leaves start as a background grid of cells at most d / sqrt(n) wide (a cell holding a
+// sample is inside its disk), and accepted samples live in a grid of their own
+// (GamitoSampleGrid) that answers the paper's per-leaf sample lists.
 //
-// Volumes are exact integers: a cell at level l has volume 2^(n (24 - l)) units, so the
-// sums never round and one random integer below the root volume picks a leaf with
-// probability proportional to its volume, i.e. uniformly over the space left (Appendix A).
+// Deviation from the paper, documented in docs/sampling.md: a failed sample does not
+// subdivide its own leaf (§4.2). Darts are thrown in rounds; when a round at the current
+// level succeeds too rarely, every leaf is subdivided at once and the children inside one
+// disk are pruned (Appendix B). This keeps all leaves the same size. Uniformity is
+// unaffected: a dart is uniform over the leaves, the leaves always contain the allowable
+// set S_i, and a dart is accepted exactly when it lies in S_i, so an accepted sample is
+// uniform over S_i (Eq. A.2, A.8) whatever the schedule of subdivisions and prunings.
 #include "distance.h"
+#include "gamito_active_cells.h"
+#include "gamito_sample_grid.h"
 #include "generator.h"
 #include "rng.h"
 
@@ -23,617 +25,363 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 namespace pdrt {
 namespace {
 
-// §4: maximum subdivision level l_MAX; a leaf this deep is dropped when a sample in it fails.
+// §4: cells are never narrower than the paper's level-24 cells (2^-24). At that level a
+// dart removes its cell whatever happens, as the paper drops a leaf whose sample fails at
+// l_MAX, so the result is maximal up to slivers of diameter sqrt(n) 2^-24 (Eq. 3).
 constexpr int kMaxLevel = 24;
-
-// Accepted samples bucketed on a uniform grid, coordinates stored in the cells so a range
-// query reads a few contiguous rows. Up to 2-D the cells are at most d / sqrt(n) wide and so
-// hold one sample each; in higher dimensions that grid would dwarf the point set, so cells
-// are about d wide and chain further samples.
-template <int N>
-class SampleGrid {
- public:
-  SampleGrid(double dist, std::size_t expected, bool periodic) : periodic_(periodic) {
-    double m = std::ceil((kChained ? 1.0 : std::sqrt(double(N))) / dist);
-    if (kChained) m = std::min(m, std::floor(std::pow(8.0 * double(expected), 1.0 / N)));
-    res_ = std::max(1, int(m));
-    std::size_t cells = 1;
-    for (int k = 0; k < N; ++k) cells *= std::size_t(res_);
-    cells_.assign(cells, Cell{});
-  }
-
-  void insert(const double* p) {
-    Cell& c = cells_[index(p)];
-    if constexpr (kChained) {
-      if (c.x[0] >= 0.0) {
-        Cell extra = c;
-        c.more = int32_t(overflow_.size());
-        overflow_.push_back(extra);
-      }
-    }
-    std::copy(p, p + N, c.x);
-  }
-
-  // Calls f(q) for every sample within `reach` of p on every axis (and possibly a few
-  // more). When periodic, q is each of the sample's images (shifts in {-1, 0, 1} per axis)
-  // that lies in that range, so callers measure plain Euclidean distances.
-  template <class F>
-  void visit(const double* p, double reach, F&& f) const {
-    int lo[N], hi[N], cur[N];
-    int lowest = periodic_ ? -res_ : 0, highest = periodic_ ? 2 * res_ - 1 : res_ - 1;
-    for (int k = 0; k < N; ++k) {
-      lo[k] = std::max(int(std::floor((p[k] - reach) * res_)), lowest);
-      hi[k] = std::min(int(std::floor((p[k] + reach) * res_)), highest);
-      if (lo[k] > hi[k]) return;
-      cur[k] = lo[k];
-    }
-    double shift[N], image[N];
-    for (;;) {
-      // Axis 0 runs along a row of contiguous cells.
-      std::size_t row = 0;
-      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(unwrap(cur[k], shift[k]));
-      row *= std::size_t(res_);
-      // Along the row, images to the left, in and to the right of the cube in turn.
-      for (int part = periodic_ ? -1 : 0; part <= (periodic_ ? 1 : 0); ++part) {
-        int first = std::max(lo[0], part * res_), last = std::min(hi[0], part * res_ + res_ - 1);
-        shift[0] = double(part);
-        for (int x = first; x <= last; ++x) {
-          for (const Cell* c = &cells_[row + std::size_t(x - part * res_)]; c->x[0] >= 0.0;) {
-            if (periodic_) {
-              for (int k = 0; k < N; ++k) image[k] = c->x[k] + shift[k];
-              f(static_cast<const double*>(image));
-            } else {
-              f(static_cast<const double*>(c->x));
-            }
-            if constexpr (!kChained) break;
-            else if (c->more < 0) break;
-            else c = &overflow_[std::size_t(c->more)];
-          }
-        }
-      }
-      int k = 1;
-      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
-      if (k >= N) return;
-      ++cur[k];
-    }
-  }
-
-  // Starts loading the rows visit(p, reach) will read.
-  void prefetch(const double* p, double reach) const {
-    int lo[N], hi[N], cur[N];
-    for (int k = 0; k < N; ++k) {
-      lo[k] = int(std::floor((p[k] - reach) * res_));
-      hi[k] = int(std::floor((p[k] + reach) * res_));
-      cur[k] = lo[k];
-    }
-    for (int rows = 0; rows < 32; ++rows) {
-      std::size_t row = 0;
-      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(std::clamp(cur[k], 0, res_ - 1));
-      row *= std::size_t(res_);
-      const char* first = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(lo[0], 0, res_ - 1))]);
-      const char* last = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(hi[0], 0, res_ - 1))]);
-      for (const char* line = first; line <= last + sizeof(Cell) - 1; line += 64) __builtin_prefetch(line);
-      int k = 1;
-      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
-      if (k >= N) return;
-      ++cur[k];
-    }
-  }
-
- private:
-  static constexpr bool kChained = N > 2;
-  struct Single {
-    double x[N] = {-1.0};  // x[0] < 0: empty
-  };
-  struct Chained {
-    double x[N] = {-1.0};
-    int32_t more = -1;  // the cell's previous sample in overflow_
-  };
-  using Cell = std::conditional_t<kChained, Chained, Single>;
-
-  // Cell index along an axis for an unwrapped index in [-res, 2 res), with the coordinate
-  // shift of the periodic image it stands for.
-  int unwrap(int c, double& shift) const {
-    shift = c < 0 ? -1.0 : c >= res_ ? 1.0 : 0.0;
-    return c < 0 ? c + res_ : c >= res_ ? c - res_ : c;
-  }
-  std::size_t index(const double* p) const {
-    std::size_t i = 0;
-    for (int k = N - 1; k >= 0; --k) i = i * std::size_t(res_) + std::size_t(std::min(int(p[k] * res_), res_ - 1));
-    return i;
-  }
-
-  int res_;
-  bool periodic_;
-  std::vector<Cell> cells_;
-  std::vector<Cell> overflow_;
-};
 
 template <int N>
 class GamitoSampler {
-  // Root volume is 2^(24 n) units: 64 bits hold it up to 2-D, 128 bits up to 5-D.
-  using Vol = std::conditional_t<(N * kMaxLevel < 64), uint64_t, unsigned __int128>;
-  static constexpr int kKids = 1 << N;
-  // A child link is a block index or one of two leaf states (§4: candidate or not).
-  static constexpr uint32_t kClear = UINT32_MAX;        // leaf no disk touches: a candidate
-  static constexpr uint32_t kTouched = UINT32_MAX - 1;  // leaf some disk overlaps
-  static bool is_leaf(uint32_t link) { return link >= kTouched; }
-
-  struct Block {
-    Vol vol[kKids];
-    uint32_t link[kKids];
-  };
-
-  enum class Overlap { Out, Over, In };
-
-  struct Point {
-    Point() = default;
-    explicit Point(const double* p) { std::copy(p, p + N, x); }
-    double x[N];
-  };
-
-  // One random descent of Generate (§4.1) in flight: the leaf it reached and its point.
-  struct Draw {
-    Vol u;            // offset inside the current node
-    std::size_t idx;  // current implicit node, then base block
-    const Block* block;
-    int level;
-    uint32_t cell[N];
-    double p[N];
-  };
-
-  // A leaf and the blocks above it: entry 0 is a base block, entries 1..depth pool blocks;
-  // the leaf is slot[depth] of block[depth].
-  struct Leaf {
-    int level, depth;
-    uint32_t cell[N];  // integer coordinates at `level`
-    uint32_t link;     // kClear or kTouched
-    uint32_t block[kMaxLevel + 1];
-    int slot[kMaxLevel + 1];
-  };
+  using Cells = GamitoActiveCells<N>;
+  using Cell = typename Cells::Cell;
 
  public:
   GamitoSampler(double dist, bool periodic, uint64_t seed, std::size_t expected)
-      : d_(dist), d2_(dist * dist), out2_(d2_ * (1 + 1e-9)), in2_(d2_ * (1 - 1e-9)), periodic_(periodic), rng_(seed),
+      : d_(dist), d2_(dist * dist), in2_(d2_ * (1 - 1e-9)), periodic_(periodic), rng_(seed),
         grid_(dist, expected, periodic) {
-    for (int l = 0; l <= kMaxLevel; ++l) width_[l] = std::ldexp(1.0, -l);
-    // Base cells at most the minimum distance wide (and more than half of it): wider ones
-    // are hardly ever inside one disk, narrower ones cost memory for every cell. Their
-    // number stays proportional to the expected points.
-    int base = int(std::ceil(std::log2(1.0 / dist)));
-    base = std::clamp(base, 1, kMaxLevel);
-    while (base > 1 && std::ldexp(1.0, N * base) > 16.0 * double(expected)) --base;
-    base_ = base;
-    res_ = 1 << base_;
-    levels_.resize(std::size_t(base_));
-    for (int l = 0; l < base_; ++l) levels_[l].assign(std::size_t(1) << (N * l), cell_volume(l));
-    Block full;
-    std::fill(full.vol, full.vol + kKids, cell_volume(base_));
-    std::fill(full.link, full.link + kKids, kClear);
-    base_blocks_.assign(levels_[base_ - 1].size(), full);
-    spread_.resize(std::size_t(res_));
-    for (uint32_t x = 0; x < uint32_t(res_); ++x) {
-      uint64_t m = 0;
-      for (int i = 0; i < base_; ++i) m |= uint64_t((x >> i) & 1u) << (i * N);
-      spread_[x] = m;
-    }
+    // Level-0 cells at most d / sqrt(n) wide, as long as their number stays proportional to
+    // the points (5-D would need ~50 per point); wider cells are only pruned later.
+    double m = std::ceil(std::sqrt(double(N)) / dist);
+    m = std::min(m, std::floor(std::pow(kMaxCellsPerPoint * double(expected), 1.0 / N)));
+    res_ = uint32_t(std::clamp(m, 1.0, double(1u << 30)));
+    last_ = 0;
+    while ((uint64_t(res_) << last_) < (uint64_t(1) << kMaxLevel)) ++last_;
   }
 
-  // Figure 6: pick a leaf, try a sample in it; accept and Update, or Subdivide; until the
-  // tree is empty (maximal up to the level-24 cells).
-  //
-  // Descents are made kBatch at a time against the same tree, interleaved so their cache
-  // misses overlap, and then processed in order. The tree only ever shrinks, so a point
-  // drawn uniformly from an earlier tree that still lies in the current one is a uniform
-  // point of the current tree; a point whose cell was pruned in between is dropped, exactly
-  // like a point landing in covered space. Every accepted point thus stays uniform over the
-  // space left (Appendix A).
+  // Figure 6 in rounds: throw darts at the current level until they succeed too rarely,
+  // then subdivide everything; until no cell is left.
   std::vector<double> run(std::size_t expected) {
     std::vector<double> out;
     out.reserve(expected * N + N);
-    Leaf leaf;
-    while (levels_[0][0] != 0) {
-      draw_batch();
-      for (const Draw& t : draws_) {
-        if (!locate(t.p, leaf)) continue;
-        bool valid = true;
-        if (leaf.link == kTouched) {
-          gather(leaf);
-          for (const Point& q : near_)
-            if (distance2(t.p, q.x) < d2_) {
-              valid = false;
-              break;
-            }
-        }
-        if (valid) {
-          grid_.insert(t.p);
-          out.insert(out.end(), t.p, t.p + N);
-          update(t.p);
-          continue;
-        }
-        // §4.1: an invalid sample refines its leaf; at l_MAX the whole leaf is dropped.
-        uint32_t block = kTouched;
-        Vol pruned = cell_volume(leaf.level);
-        if (leaf.level < kMaxLevel) {
-          sel_.resize(near_.size());
-          for (std::size_t i = 0; i < near_.size(); ++i) sel_[i] = uint32_t(i);
-          pruned = split(leaf.cell, leaf.level, kRefine, 0, near_.size(), block);
-        }
-        node_block(leaf.block[leaf.depth], leaf.depth).link[leaf.slot[leaf.depth]] = block;
-        if (pruned != 0) shrink(leaf, pruned);
+    cells_.fill(res_);
+    group_.resize(cells_.slots() + 1);
+    index_groups();
+    while (cells_.live() > 0) {
+      std::size_t darts = std::size_t(double(cells_.live()) * kDartsPerCell), thrown = 0, tried = 0, hits = 0;
+      // Three batches in flight: cells drawn, points made, darts tested. Darts still in
+      // flight when the round ends are dropped, as if never thrown.
+      Batch batch[3];
+      draw(batch[0]), draw(batch[1]), make(batch[0]);
+      for (int cur = 0; thrown < darts && cells_.live() > 0; cur = (cur + 1) % 3) {
+        draw(batch[(cur + 2) % 3]);
+        make(batch[(cur + 1) % 3]);
+        hits += test(batch[cur], out, tried);
+        thrown += kBatch;
       }
+      advance_updates(true);
+      if (cells_.compact_if_sparse()) index_groups();
+      if (level_ < last_ && double(hits) < kRefineBelow * double(tried)) subdivide();
     }
     return out;
   }
 
  private:
-  // Levels one Subdivide call may refine at once: children straddling a disk are split
-  // again right away instead of waiting for another failed sample.
-  static constexpr int kRefine = 2;
-  // Descents in flight at once (see run()).
+  static constexpr double kMaxCellsPerPoint = 32.0;
+  // A round throws this many darts per live cell; the level is refined when fewer than
+  // kRefineBelow of them succeed.
+  static constexpr double kDartsPerCell = 1.0;
+  static constexpr double kRefineBelow = 0.25;
+  // Darts per batch (see run()).
   static constexpr int kBatch = 16;
+  // Samples that may reach one level-0 cell: a few in 2-D, more above (chained grid).
+  static constexpr int kMaxNear = 1024;
 
-  static Vol cell_volume(int level) { return Vol(1) << (N * (kMaxLevel - level)); }
+  struct Batch {
+    std::size_t idx[kBatch];
+    bool live[kBatch];
+    double p[kBatch][N];
+    uint32_t near[kBatch][Cell::kWitnesses];
+  };
 
-  Block& node_block(uint32_t block, int depth) { return depth == 0 ? base_blocks_[block] : pool_[block]; }
+  // An accepted sample waiting for its Update, with the level-0 cells around it (their
+  // index and, per axis in 2 bits, the periodic image of the sample that reaches them).
+  static constexpr int kAround = N == 1 ? 3 : N == 2 ? 9 : N == 3 ? 27 : N == 4 ? 81 : 243;
+  struct Pending {
+    double x[N];
+    int count;
+    uint32_t base[kAround], image[kAround];
+  };
 
-  // Plain Euclidean: near_ already holds the periodic images.
+  // A sample near a cell being subdivided, with the sample-grid cell that stores it.
+  struct Near {
+    double x[N];
+    uint32_t id;
+  };
+
+  double width() const { return 1.0 / double(uint64_t(res_) << level_); }
+
+  // §4.1 Generate, descent: a uniform slot each (the volume-weighted descent; a tombstone
+  // is a rejected draw, which leaves the others uniform over the live cells).
+  void draw(Batch& b) {
+    for (int j = 0; j < kBatch; ++j) {
+      b.idx[j] = std::size_t(rng_.below(cells_.slots()));
+      __builtin_prefetch(cells_.data() + b.idx[j]);
+    }
+  }
+
+  // ... and a uniform point in the cell. Fixed point: c + u is exact with 53 - bits(res)
+  // bits of u, and (c + u) / res < 1.
+  void make(Batch& b) {
+    const double res = double(uint64_t(res_) << level_);
+    const int frac = 53 - int(std::bit_width(uint64_t(res_) << level_));
+    const double unit = std::ldexp(1.0, -frac);
+    for (int j = 0; j < kBatch; ++j) {
+      const Cell& cell = cells_[b.idx[j]];
+      b.live[j] = cell.c[0] != Cell::kDead;
+      if (!b.live[j]) continue;
+      for (int k = 0; k < N; ++k) b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
+      std::copy(cell.near, cell.near + Cell::kWitnesses, b.near[j]);
+      if (cell.near[0] == Cell::kNone) grid_.prefetch(b.p[j], d_);
+      for (uint32_t id : cell.near)
+        if (id != Cell::kNone) grid_.prefetch_cell(id);
+    }
+  }
+
+  // ... and the test against the samples near the point. The cells only ever shrink, so a
+  // dart drawn from earlier cells that lands in S_i is still uniform over S_i.
+  std::size_t test(const Batch& b, std::vector<double>& out, std::size_t& tried) {
+    advance_updates(false);
+    std::size_t hits = 0;
+    for (int j = 0; j < kBatch; ++j) {
+      if (!b.live[j]) continue;
+      ++tried;
+      const double* p = b.p[j];
+      double q[N];
+      // The cell's witnesses first: most darts that fail, fail on them.
+      bool conflict = false;
+      for (int w = 0; w < Cell::kWitnesses && !conflict && b.near[j][w] != Cell::kNone; ++w)
+        conflict = grid_.visit_cell(b.near[j][w], [&](const double* s) {
+          if (distance_sq(p, s, N, periodic_) >= d2_) return false;
+          for (int k = 0; k < N; ++k) q[k] = p[k] - axis_delta(p[k], s[k], periodic_);  // s's image near p
+          return true;
+        });
+      if (!conflict)
+        conflict = grid_.visit(p, d_, [&](const double* s, uint32_t) {
+          if (distance2(p, s) >= d2_) return false;
+          std::copy(s, s + N, q);
+          return true;
+        });
+      if (!conflict) {
+        ++hits;
+        grid_.insert(p);
+        out.insert(out.end(), p, p + N);
+        queue_update(p);
+      }
+      // §4.1: the cell goes when the disk that decided the dart covers it, and at l_MAX always.
+      const Cell& cell = cells_[b.idx[j]];
+      if (!cells_.dead(b.idx[j]) && (level_ == last_ || covered(cell, conflict ? q : p))) cells_.kill(b.idx[j]);
+    }
+    return hits;
+  }
+
+  // §4.3 Update: the live cells in the 3^n level-0 cells around a new sample that its disk
+  // covers are pruned, so darts and the next subdivision do not spend time on them. (Cells
+  // farther away are hardly ever inside the disk; they are left to the coverage tests of
+  // later darts and subdivisions.) The pruning runs two batches after the sample is
+  // accepted, so the slot index and then the cells can be prefetched (advance_updates()).
+  void queue_update(const double* p) {
+    Pending& u = updates_[0].emplace_back();
+    std::copy(p, p + N, u.x);
+    u.count = 0;
+    int home[N], off[N];
+    for (int k = 0; k < N; ++k) home[k] = std::min(int(p[k] * res_), int(res_) - 1), off[k] = -1;
+    for (;;) {
+      std::size_t base = 0, stride = 1;
+      uint32_t image = 0;
+      bool inside = true;
+      for (int k = 0; k < N; ++k) {
+        int c = home[k] + off[k];
+        if (c < 0 || c >= int(res_)) {  // across a wall, or the nearest image when periodic
+          inside &= periodic_;
+          image |= (c < 0 ? 1u : 2u) << (2 * k);
+          c += c < 0 ? int(res_) : -int(res_);
+        }
+        base += std::size_t(c) * stride;
+        stride *= res_;
+      }
+      if (inside) {
+        __builtin_prefetch(&group_[base]);
+        u.base[u.count] = uint32_t(base);
+        u.image[u.count++] = image;
+      }
+      int k = 0;
+      while (k < N && off[k] == 1) off[k] = -1, ++k;
+      if (k == N) return;
+      ++off[k];
+    }
+  }
+
+  // Moves the waiting Updates one step on: prefetch the cells of those queued in the last
+  // batch, prune for those queued before. All are pruned when `flush` (the slots move next).
+  void advance_updates(bool flush) {
+    for (const Pending& u : updates_[1]) prune(u);
+    updates_[1].clear();
+    for (const Pending& u : updates_[0]) {
+      if (flush) prune(u);
+      else
+        for (int i = 0; i < u.count; ++i) __builtin_prefetch(cells_.data() + group_[u.base[i]]);
+    }
+    if (!flush) updates_[0].swap(updates_[1]);
+    updates_[0].clear();
+  }
+
+  void prune(const Pending& u) {
+    for (int i = 0; i < u.count; ++i) {
+      double s[N];  // the image of the sample next to the level-0 cell
+      for (int k = 0; k < N; ++k) {
+        uint32_t code = u.image[i] >> (2 * k) & 3u;
+        s[k] = u.x[k] + (code == 1 ? 1.0 : code == 2 ? -1.0 : 0.0);
+      }
+      for (std::size_t j = group_[u.base[i]]; j < group_[u.base[i] + 1]; ++j)
+        if (!cells_.dead(j) && covered(cells_[j], s)) cells_.kill(j);
+    }
+  }
+
+  // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
+  // order of their level-0 cell); rebuilt whenever the slots move.
+  void index_groups() {
+    std::size_t next = 0;  // first level-0 cell whose start is not written yet
+    for (std::size_t i = 0; i < cells_.slots(); ++i) {
+      std::size_t base = 0, stride = 1;
+      for (int k = 0; k < N; ++k) base += std::size_t(cells_[i].c[k] >> level_) * stride, stride *= res_;
+      while (next <= base) group_[next++] = uint32_t(i);
+    }
+    while (next < group_.size()) group_[next++] = uint32_t(cells_.slots());
+  }
+
+  // Plain Euclidean: the grid hands out periodic images.
   static double distance2(const double* a, const double* b) {
     double s = 0.0;
     for (int k = 0; k < N; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
     return s;
   }
 
-  // Uniform integer in [0, n), n > 0.
-  Vol draw_below(Vol n) {
-    if constexpr (std::is_same_v<Vol, uint64_t>) {
-      return rng_.below(n);
-    } else {
-      Vol m = n - 1;
-      uint64_t top = uint64_t(m >> 64);
-      int bits = top ? 128 - std::countl_zero(top) : 64 - std::countl_zero(uint64_t(m));
-      Vol mask = bits >= 128 ? ~Vol(0) : (Vol(1) << bits) - 1;
-      for (;;) {
-        Vol r = (Vol(rng_.next_u64()) << 64 | rng_.next_u64()) & mask;
-        if (r < n) return r;
-      }
-    }
-  }
-
-  // Index of the child a random offset u falls in; u becomes the offset inside it. Counts
-  // the prefix sums not above u instead of branching on each (the branch is a coin toss).
-  static int pick(const Vol* vol, Vol& u) {
-    Vol sum = 0, before = 0;
-    int c = 0;
-    for (int k = 0; k < kKids - 1; ++k) {
-      sum += vol[k];
-      bool past = u >= sum;
-      c += past;
-      before = past ? sum : before;
-    }
-    u -= before;
-    return c;
-  }
-
-  static void step(uint32_t* cell, int c) {
-    for (int k = 0; k < N; ++k) cell[k] = cell[k] << 1 | uint32_t((c >> k) & 1);
-  }
-
-  // §4.1 Generate, descent half, for kBatch draws side by side: each child is taken with
-  // probability volume / parent volume, by walking one random integer per draw down the
-  // cumulative child volumes. Each step prefetches what the draw reads next.
-  void draw_batch() {
-    draws_.resize(kBatch);
-    for (Draw& t : draws_) {
-      t.u = draw_below(levels_[0][0]);
-      t.idx = 0;
-      std::fill(t.cell, t.cell + N, 0u);
-    }
-    for (int l = 1; l < base_; ++l)
-      for (Draw& t : draws_) {
-        int c = pick(&levels_[l][t.idx << N], t.u);
-        t.idx = t.idx << N | std::size_t(c);
-        step(t.cell, c);
-        __builtin_prefetch(l + 1 < base_ ? static_cast<const void*>(&levels_[l + 1][t.idx << N]) : &base_blocks_[t.idx]);
-      }
-    std::size_t active = 0;
-    for (Draw& t : draws_) t.block = &base_blocks_[t.idx], t.level = base_ - 1, ++active;
-    while (active > 0)
-      for (Draw& t : draws_) {
-        if (t.block == nullptr) continue;
-        int c = pick(t.block->vol, t.u);
-        step(t.cell, c);
-        ++t.level;
-        uint32_t link = t.block->link[c];
-        if (!is_leaf(link)) {
-          t.block = &pool_[link];
-          __builtin_prefetch(t.block);
-          continue;
-        }
-        t.block = nullptr;
-        --active;
-        place(t);
-        if (link == kTouched) grid_.prefetch(t.p, d_ + width_[t.level]);
-      }
-  }
-
-  // Finds the current leaf holding p, or false when p's cell has been pruned.
-  bool locate(const double* p, Leaf& leaf) const {
-    uint64_t fixed[N], m = 0;
+  // Appendix B: squared distance from s to the farthest point of the box [lo, lo + w]^n.
+  static double far2(const double* lo, double w, const double* s) {
+    double f = 0.0;
     for (int k = 0; k < N; ++k) {
-      fixed[k] = uint64_t(p[k] * 0x1.0p52);  // exact: points are 52-bit fixed point
-      m |= spread_[fixed[k] >> (52 - base_)] << k;
+      double a = std::max(std::abs(s[k] - lo[k]), std::abs(lo[k] + w - s[k]));
+      f += a * a;
     }
-    leaf.block[0] = uint32_t(m >> N);
-    leaf.slot[0] = int(m & (kKids - 1));
-    leaf.depth = 0;
-    const Block* b = &base_blocks_[leaf.block[0]];
-    int level = base_;
-    for (;;) {
-      int c = leaf.slot[leaf.depth];
-      if (b->vol[c] == 0) return false;
-      uint32_t link = b->link[c];
-      if (is_leaf(link)) {
-        leaf.link = link;
-        break;
-      }
-      ++level;
-      c = 0;
-      for (int k = 0; k < N; ++k) c |= int((fixed[k] >> (52 - level)) & 1) << k;
-      leaf.block[++leaf.depth] = link;
-      leaf.slot[leaf.depth] = c;
-      b = &pool_[link];
-    }
-    leaf.level = level;
-    for (int k = 0; k < N; ++k) leaf.cell[k] = uint32_t(fixed[k] >> (52 - level));
-    return true;
+    return f;
   }
 
-  // Uniform point in the draw's leaf: 52-bit fixed point, so it is exact and inside the cell.
-  void place(Draw& t) {
-    int shift = 52 - t.level;
+  // ... and to its nearest point.
+  static double near2(const double* lo, double w, const double* s) {
+    double f = 0.0;
     for (int k = 0; k < N; ++k) {
-      uint64_t bits = uint64_t(t.cell[k]) << shift | rng_.next_u64() >> (64 - shift);
-      t.p[k] = double(bits) * 0x1.0p-52;
+      double a = std::max(std::max(lo[k] - s[k], s[k] - lo[k] - w), 0.0);
+      f += a * a;
     }
+    return f;
   }
 
-  // Appendix B: the nearest and farthest points of the cell from the sample decide Out / In;
-  // when periodic, the sample's image nearest the cell decides (§4.5). Both verdicts keep
-  // a relative margin of 1e-9 over rounding: Out leaves take samples without a distance
-  // test, and In cells are dropped for good.
-  Overlap classify(const uint32_t* cell, int level, const double* s) const {
-    double w = width_[level], h = 0.5 * w, near2 = 0.0, far2 = 0.0;
-    for (int k = 0; k < N; ++k) {
-      double a = std::abs(axis_delta(s[k], (double(cell[k]) + 0.5) * w, periodic_));
-      if (a > h) {
-        near2 += (a - h) * (a - h);
-        if (near2 > out2_) return Overlap::Out;
-      }
-      far2 += (a + h) * (a + h);
-    }
-    return far2 < in2_ ? Overlap::In : Overlap::Over;
+  // The cell is inside the disk of s when its farthest corner is, with a relative margin of
+  // 1e-9 over rounding (a covered cell is dropped for good).
+  bool covered(const Cell& cell, const double* s) const {
+    double w = width(), lo[N];
+    for (int k = 0; k < N; ++k) lo[k] = double(cell.c[k]) * w;
+    return far2(lo, w, s) < in2_;
   }
 
-  // Every sample whose disk can reach the leaf (the paper's per-leaf list, §4.1).
-  void gather(const Leaf& leaf) {
-    double w = width_[leaf.level], centre[N];
-    for (int k = 0; k < N; ++k) centre[k] = (double(leaf.cell[k]) + 0.5) * w;
-    double reach = d_ + 0.5 * w * std::sqrt(double(N)), reach2 = reach * reach * (1 + 1e-9);
-    near_.clear();
-    grid_.visit(centre, d_ + 0.5 * w, [&](const double* q) {
-      if (distance2(centre, q) < reach2) near_.push_back(Point(q));
-    });
-  }
-
-  uint32_t alloc_block() {
-    if (!free_.empty()) {
-      uint32_t b = free_.back();
-      free_.pop_back();
-      return b;
-    }
-    pool_.emplace_back();
-    return uint32_t(pool_.size() - 1);
-  }
-
-  // Returns a block and every block below it to the pool.
-  void free_subtree(uint32_t block) {
-    for (int c = 0; c < kKids; ++c)
-      if (!is_leaf(pool_[block].link[c])) free_subtree(pool_[block].link[c]);
-    free_.push_back(block);
-  }
-
-  // §4.1 book-keeping: the leaf and every ancestor lose the pruned volume. A node that
-  // reaches zero is discarded; its children are all pruned already, so only its block is freed.
-  void shrink(const Leaf& leaf, Vol pruned) {
-    for (int i = leaf.depth; i >= 0; --i) {
-      Block& b = node_block(leaf.block[i], i);
-      int c = leaf.slot[i];
-      if ((b.vol[c] -= pruned) == 0 && !is_leaf(b.link[c])) {
-        free_.push_back(b.link[c]);
-        b.link[c] = kTouched;
-      }
-    }
-    std::size_t idx = leaf.block[0];
-    for (int l = base_ - 1; l >= 0; --l, idx >>= N) levels_[l][idx] -= pruned;
-  }
-
-  // Appendix B for a disk already given as the image nearest the cell.
-  Overlap overlap(const double* centre, double h, const double* q) const {
-    double near2 = 0.0, far2 = 0.0;
-    for (int k = 0; k < N; ++k) {
-      double a = std::abs(q[k] - centre[k]), gap = std::max(a - h, 0.0);
-      near2 += gap * gap;
-      far2 += (a + h) * (a + h);
-    }
-    return near2 > out2_ ? Overlap::Out : far2 < in2_ ? Overlap::In : Overlap::Over;
-  }
-
-  // §4.2 Subdivide, `steps` levels at once, against the disks near_[sel_[first + i]],
-  // i < count (every disk that reaches the cell): children inside one disk are pruned,
-  // children outside all of them become candidates, and children straddling a disk are
-  // split again, against just the disks they straddle, while steps remain. How far a leaf
-  // is refined does not bias the sampling (refinement only prunes covered space, Appendix A).
-  // Returns the pruned volume and the new block (kTouched when everything was pruned).
-  Vol split(const uint32_t* cell, int level, int steps, std::size_t first, std::size_t count, uint32_t& block_out) {
-    const double w = width_[level + 1], h = 0.5 * w;
-    const std::size_t top = sel_.size();
-    sel_.resize(top + kKids * count);  // child c lists the disks it straddles at top + c * count
-    Overlap state[kKids];
-    uint32_t kid[kKids][N];
-    std::size_t straddled[kKids];
-    int alive = 0;
-    for (int c = 0; c < kKids; ++c) {
-      double centre[N];
-      for (int k = 0; k < N; ++k) {
-        kid[c][k] = cell[k] << 1 | uint32_t((c >> k) & 1);
-        centre[k] = (double(kid[c][k]) + 0.5) * w;
-      }
-      uint32_t* list = &sel_[top + c * count];
-      std::size_t n = 0;
-      state[c] = Overlap::Out;
-      for (std::size_t i = 0; i < count; ++i) {
-        uint32_t j = sel_[first + i];
-        Overlap o = overlap(centre, h, near_[j].x);
-        if (o == Overlap::In) {
-          state[c] = o;
-          break;
-        }
-        if (o == Overlap::Over) state[c] = o, list[n++] = j;
-      }
-      straddled[c] = n;
-      alive += state[c] != Overlap::In;
-    }
-    block_out = kTouched;
-    Vol child = cell_volume(level + 1), pruned = child * Vol(kKids - alive);
-    if (alive != 0) {
-      uint32_t block = alloc_block();
-      for (int c = 0; c < kKids; ++c) {
-        Vol cut = state[c] == Overlap::In ? child : 0;
-        uint32_t link = state[c] == Overlap::Out ? kClear : kTouched;
-        if (state[c] == Overlap::Over && steps > 1 && level + 1 < kMaxLevel) {
-          cut = split(kid[c], level + 1, steps - 1, top + c * count, straddled[c], link);
-          pruned += cut;
-        }
-        pool_[block].vol[c] = child - cut;
-        pool_[block].link[c] = link;
-      }
-      if (pruned == cell_volume(level)) free_.push_back(block);
-      else block_out = block;
-    }
-    sel_.resize(top);
-    return pruned;
-  }
-
-  // §4.3 Update for a node the new disk reaches (`o` is In or Over): prune it when inside the
-  // disk, otherwise mark a leaf as touched or recurse into its children. Returns the volume
-  // pruned under the node.
-  Vol update_node(uint32_t block, bool base, int c, const uint32_t* cell, int level, const double* s, Overlap o) {
-    uint32_t link = node_block(block, !base).link[c];
-    Vol pruned = node_block(block, !base).vol[c];
-    if (o == Overlap::In) {
-      if (!is_leaf(link)) free_subtree(link);
-      link = kTouched;
-    } else if (is_leaf(link)) {
-      link = kTouched;
-      pruned = 0;
-    } else {
-      pruned = 0;
-      for (int k = 0; k < kKids; ++k) {
-        if (pool_[link].vol[k] == 0) continue;
-        uint32_t sub[N];
-        for (int j = 0; j < N; ++j) sub[j] = cell[j] << 1 | uint32_t((k >> j) & 1);
-        Overlap ko = classify(sub, level + 1, s);
-        if (ko != Overlap::Out) pruned += update_node(link, false, k, sub, level + 1, s, ko);
-      }
-      if (pruned == node_block(block, !base).vol[c]) {
-        free_.push_back(link);
-        link = kTouched;
-      }
-    }
-    Block& b = node_block(block, !base);
-    b.link[c] = link;
-    b.vol[c] -= pruned;
-    return pruned;
-  }
-
-  // §4.3 Update for an accepted sample, over the base cells its disk can reach (wrapped when
-  // periodic, §4.5: the nearest image is the only one that can cover a cell). Appendix B's
-  // distances are separable per axis, so they are tabulated once per axis here; the implicit
-  // levels above the base only carry sums.
-  void update(const double* s) {
-    const double w = width_[base_], h = 0.5 * w;
-    int span[N], cur[N];
-    for (int k = 0; k < N; ++k) {
-      int lo = int(std::floor((s[k] - d_) * res_)), hi = int(std::floor((s[k] + d_) * res_));
-      if (!periodic_) lo = std::max(lo, 0), hi = std::min(hi, res_ - 1);
-      span[k] = std::min(hi - lo + 1, res_);
-      cur[k] = 0;
-      axis_[k].resize(std::size_t(span[k]));
-      for (int i = 0; i < span[k]; ++i) {
-        int c = ((lo + i) % res_ + res_) % res_;  // d may exceed the cube when periodic
-        double a = std::abs(axis_delta(s[k], (double(c) + 0.5) * w, periodic_));
-        AxisTerm& t = axis_[k][std::size_t(i)];
-        t.near = a > h ? (a - h) * (a - h) : 0.0;
-        t.far = (a + h) * (a + h);
-        t.bits = spread_[std::size_t(c)] << k;
-        t.cell = uint32_t(c);
-      }
-    }
-    for (;;) {
-      double near2 = 0.0, far2 = 0.0;
-      for (int k = 0; k < N; ++k) near2 += axis_[k][std::size_t(cur[k])].near;
-      if (near2 <= out2_) {
-        uint64_t m = 0;
-        uint32_t cell[N];
+  // §4.2 Subdivide for every cell at once: children inside the disk of a sample that reaches
+  // the parent (Appendix B, farthest corner) are pruned, the others become the new cells.
+  // The samples that reach a level-0 cell are gathered once for all its descendants (they
+  // are contiguous), then narrowed to those that reach each parent.
+  void subdivide() {
+    const double w = width(), h = 0.5 * w, base_w = 1.0 / double(res_);
+    uint32_t base[N] = {Cell::kDead};
+    int base_count = 0;
+    cells_.subdivide([&](const Cell& parent, Cell* kids) {
+      bool same = true;
+      for (int k = 0; k < N; ++k) same &= (parent.c[k] >> level_) == base[k];
+      if (!same) {
+        double lo[N], centre[N];
         for (int k = 0; k < N; ++k) {
-          const AxisTerm& t = axis_[k][std::size_t(cur[k])];
-          far2 += t.far;
-          m |= t.bits;
-          cell[k] = t.cell;
+          base[k] = parent.c[k] >> level_;
+          lo[k] = double(base[k]) * base_w;
+          centre[k] = lo[k] + 0.5 * base_w;
         }
-        std::size_t idx = std::size_t(m >> N);
-        int c = int(m & (kKids - 1));
-        if (base_blocks_[idx].vol[c] != 0) {
-          Overlap o = far2 < in2_ ? Overlap::In : Overlap::Over;
-          Vol pruned = update_node(uint32_t(idx), true, c, cell, base_, s, o);
-          if (pruned != 0)
-            for (int l = base_ - 1; l >= 0; --l, idx >>= N) levels_[l][idx] -= pruned;
+        base_count = 0;
+        grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s, uint32_t id) {
+          if (near2(lo, base_w, s) < d2_ && base_count < kMaxNear) {
+            std::copy(s, s + N, base_near_[base_count].x);
+            base_near_[base_count++].id = id;
+          }
+          return false;
+        });
+      }
+      // Appendix B per axis: the offsets of a sample from the parent's three planes give the
+      // nearest, farthest and centre distances of both halves; a child sums one half per axis.
+      double lo[N];
+      for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
+      double best[Cells::kKids][Cell::kWitnesses];
+      for (int j = 0; j < Cells::kKids; ++j) {
+        std::fill(best[j], best[j] + Cell::kWitnesses, d2_);
+        std::fill(kids[j].near, kids[j].near + Cell::kWitnesses, Cell::kNone);
+      }
+      uint32_t alive = ~uint32_t(0) >> (32 - Cells::kKids);
+      for (int i = 0; i < base_count && alive != 0; ++i) {
+        const double* s = base_near_[i].x;
+        double parent_near = 0.0;
+        for (int k = 0; k < N; ++k) {
+          double e0 = s[k] - lo[k], e2 = e0 - w, pn = e0 < 0.0 ? e0 : e2 > 0.0 ? e2 : 0.0;
+          parent_near += pn * pn;
+        }
+        if (parent_near >= d2_) continue;  // the disk misses the parent
+        double nearest[N][2], farthest[N][2], centre[N][2], parent_far = 0.0;
+        for (int k = 0; k < N; ++k) {
+          double e0 = s[k] - lo[k], e1 = e0 - h, e2 = e1 - h;
+          double a0 = std::abs(e0), a1 = std::abs(e1), a2 = std::abs(e2);
+          farthest[k][0] = std::max(a0, a1) * std::max(a0, a1);
+          farthest[k][1] = std::max(a1, a2) * std::max(a1, a2);
+          double n0 = e0 < 0.0 ? e0 : e1 > 0.0 ? e1 : 0.0, n1 = e1 < 0.0 ? e1 : e2 > 0.0 ? e2 : 0.0;
+          nearest[k][0] = n0 * n0;
+          nearest[k][1] = n1 * n1;
+          centre[k][0] = (e0 - 0.5 * h) * (e0 - 0.5 * h);
+          centre[k][1] = (e1 - 0.5 * h) * (e1 - 0.5 * h);
+          parent_far += std::max(a0, a2) * std::max(a0, a2);
+        }
+        if (parent_far < in2_) return 0u;  // the whole parent is covered
+        for (int j = 0; j < Cells::kKids; ++j) {
+          if (!(alive >> j & 1)) continue;
+          double f = 0.0, n = 0.0, c = 0.0;
+          for (int k = 0; k < N; ++k) {
+            int half = (j >> k) & 1;
+            f += farthest[k][half], n += nearest[k][half], c += centre[k][half];
+          }
+          if (f < in2_) {
+            alive &= ~(uint32_t(1) << j);  // covered by one disk: pruned
+            continue;
+          }
+          if (n >= d2_) continue;
+          // Overlaps: a witness if it is among the disks that come closest to the centre.
+          uint32_t id = base_near_[i].id;
+          for (int r = 0; r < Cell::kWitnesses; ++r)
+            if (c < best[j][r]) std::swap(c, best[j][r]), std::swap(id, kids[j].near[r]);
         }
       }
-      int k = 0;
-      while (k < N && cur[k] == span[k] - 1) cur[k] = 0, ++k;
-      if (k == N) return;
-      ++cur[k];
-    }
+      return alive;
+    });
+    ++level_;
+    index_groups();
   }
 
-  double d_, d2_, out2_, in2_;
+  double d_, d2_, in2_;
   bool periodic_;
   Rng rng_;
-  SampleGrid<N> grid_;
-  double width_[kMaxLevel + 1];
-  int base_ = 1, res_ = 2;
-  std::vector<std::vector<Vol>> levels_;  // implicit sums of levels 0..base_-1, Morton order
-  std::vector<Block> base_blocks_;        // the base cells, grouped by parent
-  std::vector<uint64_t> spread_;          // axis coordinate -> Morton bits
-  std::vector<Block> pool_;               // explicit nodes below the base level
-  std::vector<uint32_t> free_;            // released pool blocks
-  struct AxisTerm {
-    double near, far;  // squared nearest / farthest offsets of a base cell along one axis
-    uint64_t bits;     // its Morton bits
-    uint32_t cell;
-  };
-  std::vector<AxisTerm> axis_[N];  // Update's per-axis table
-  std::vector<Draw> draws_;
-  std::vector<Point> near_;    // disks that reach the current leaf (periodic images)
-  std::vector<uint32_t> sel_;  // subsets of near_ during a split
+  GamitoSampleGrid<N> grid_;
+  Cells cells_;
+  uint32_t res_ = 1;  // cells per axis at level 0
+  int level_ = 0, last_ = 0;
+  std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
+  std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
+  std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
 };
 
 template <int N>

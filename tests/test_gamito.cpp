@@ -186,6 +186,43 @@ TEST(GamitoGenerator, UniformChiSquareOverSeeds) {
   EXPECT_GT(p_value, 0.001) << "chi2 = " << chi2 << " with " << dof << " degrees of freedom";
 }
 
+TEST(GamitoGenerator, UniformInsideLevelZeroCellsChiSquare) {
+  // The sampler picks equal cells of a grid of side 1/ceil(sqrt(n)/d) (its level 0) and
+  // refines all of them in rounds. On the torus the process is translation invariant, so
+  // positions folded into one such cell must be uniform; a bias toward cell centres, edges
+  // or the subdivision planes (1/2, 1/4 of a cell) shows up here. 2-D: 120 runs of ~500
+  // points into 8x8 bins (63 degrees of freedom); 3-D: 60 runs of ~400 into 4x4x4.
+  struct Row {
+    int dim, runs, bins;
+    int64_t points;
+  };
+  for (const Row& row : {Row{2, 120, 8, 500}, Row{3, 60, 4, 400}}) {
+    SCOPED_TRACE(std::to_string(row.dim) + "D");
+    double r = radius_for(row.points, row.dim, true);
+    double cells = std::ceil(std::sqrt(double(row.dim)) / r);
+    int total_bins = 1;
+    for (int k = 0; k < row.dim; ++k) total_bins *= row.bins;
+    std::vector<double> counts(total_bins, 0.0);
+    double total = 0.0;
+    for (int s = 0; s < row.runs; ++s) {
+      pdrt::PointSet ps = run_gamito(row.dim, true, r, 7000 + s);
+      for (std::size_t i = 0; i < ps.size(); ++i) {
+        int bin = 0;
+        for (int k = row.dim - 1; k >= 0; --k) {
+          double x = ps.point(i)[k] * cells;
+          bin = bin * row.bins + std::min(int((x - std::floor(x)) * row.bins), row.bins - 1);
+        }
+        counts[bin] += 1.0;
+        total += 1.0;
+      }
+    }
+    double expected = total / total_bins, chi2 = 0.0;
+    for (double n : counts) chi2 += (n - expected) * (n - expected) / expected;
+    const double dof = total_bins - 1;
+    EXPECT_GT(gamma_q(dof / 2.0, chi2 / 2.0), 0.001) << "chi2 = " << chi2 << " with " << dof << " degrees of freedom";
+  }
+}
+
 TEST(GamitoGenerator, FirstPointUniformChiSquare) {
   // The first sample of each run is a single uniform draw from the root: 4000 seeds into
   // 16 bins of [0,1)^2 per axis pair, 15 degrees of freedom.

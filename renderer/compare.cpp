@@ -127,8 +127,8 @@ void validate_compare_options(const CompareOptions& o) {
                      " must be one of the --spp sample counts");
   if (o.reference_spp < 1) throw UsageError("--reference-spp must be >= 1, got " + std::to_string(o.reference_spp));
   if (o.reference_spp < 4 * o.spp.back())
-    throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(4 * o.spp.back()) +
-                     "), got " + std::to_string(o.reference_spp));
+    throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(o.spp.back()) +
+                     "), i.e. >= " + std::to_string(4 * o.spp.back()) + ", got " + std::to_string(o.reference_spp));
 }
 
 fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {

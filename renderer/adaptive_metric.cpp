@@ -1,5 +1,7 @@
 #include "adaptive_metric.h"
 
+#include "errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -13,6 +15,16 @@ constexpr double kRelativeFloor = 1e-3;
 constexpr double kImageMeanFloor = 1e-4;
 
 }  // namespace
+
+void require_adaptive_choice(const std::string& flag, const std::string& value,
+                             std::initializer_list<const char*> names) {
+  std::string list;
+  for (const char* n : names) {
+    if (value == n) return;
+    list += (list.empty() ? "" : ", ") + std::string(n);
+  }
+  throw UsageError(flag + " must be one of " + list + ", got \"" + value + "\"");
+}
 
 double default_threshold(const std::string& metric) {
   if (metric == "error-per-sample") return 1.0 / 16;

@@ -14,6 +14,10 @@ inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-p
                                                                         "contrast"};
 inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
 
+// Throws UsageError "`flag` must be one of a, b, c, got "value"" unless `value` is a name.
+void require_adaptive_choice(const std::string& flag, const std::string& value,
+                             std::initializer_list<const char*> names);
+
 // Each metric's own default: error-per-sample 1/16, relative-error 0.01, contrast 0.4.
 double default_threshold(const std::string& metric);
 

@@ -111,16 +111,9 @@ void validate_compare_options(const CompareOptions& o) {
     if (o.spp[i] < 1) throw UsageError("--spp: sample counts must be >= 1, got " + std::to_string(o.spp[i]));
     if (i && o.spp[i] <= o.spp[i - 1]) throw UsageError("--spp: sample counts must increase");
   }
-  auto one_of = [](const std::string& flag, const std::string& v, std::initializer_list<const char*> names) {
-    std::string list;
-    for (const char* n : names) {
-      if (v == n) return;
-      list += (list.empty() ? "" : ", ") + std::string(n);
-    }
-    throw UsageError(flag + " must be one of " + list + ", got \"" + v + "\"");
-  };
-  if (!o.adaptive_metric.empty()) one_of("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
-  if (!o.adaptive_variance.empty()) one_of("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
+  if (!o.adaptive_metric.empty()) require_adaptive_choice("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
+  if (!o.adaptive_variance.empty())
+    require_adaptive_choice("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
   if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
   if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
     throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +

@@ -24,18 +24,6 @@ namespace {
 std::atomic<bool> g_cancel{false};
 extern "C" void on_sigint(int) { g_cancel.store(true); }
 
-bool one_of(const std::string& v, std::initializer_list<const char*> names) {
-  for (const char* n : names)
-    if (v == n) return true;
-  return false;
-}
-
-std::string joined(std::initializer_list<const char*> names) {
-  std::string s;
-  for (const char* n : names) s += (s.empty() ? "" : ", ") + std::string(n);
-  return s;
-}
-
 // Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
 // power-of-two bins [2^k, 2^(k+1)).
 nlohmann::json spp_distribution(const std::vector<float>& samples) {
@@ -91,8 +79,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--min-spp", o->min_spp, "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
   cmd->add_option("--max-spp", o->max_spp, "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
   cmd->add_option("--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
-  cmd->add_option("--adaptive-metric", o->metric, "Adaptive: " + joined(kAdaptiveMetrics));
-  cmd->add_option("--adaptive-variance", o->variance, "Adaptive: " + joined(kAdaptiveVariances));
+  cmd->add_option("--adaptive-metric", o->metric, "Adaptive: error-per-sample | relative-error | contrast");
+  cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
     // Validate every argument before loading or rendering anything.
@@ -111,11 +99,8 @@ void add_render_command(CLI::App& app) {
     if (o->max_spp && *o->max_spp < 1) throw UsageError("--max-spp must be >= 1, got " + std::to_string(*o->max_spp));
     if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
       throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
-    if (!o->metric.empty() && !one_of(o->metric, kAdaptiveMetrics))
-      throw UsageError("--adaptive-metric: unknown metric \"" + o->metric + "\" (" + joined(kAdaptiveMetrics) + ")");
-    if (!o->variance.empty() && !one_of(o->variance, kAdaptiveVariances))
-      throw UsageError("--adaptive-variance: unknown estimator \"" + o->variance + "\" (" +
-                       joined(kAdaptiveVariances) + ")");
+    if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
+    if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
     check_image_extension(o->out);
 
     SceneDesc scene = load_scene(o->scene);

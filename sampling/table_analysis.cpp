@@ -1,5 +1,6 @@
 #include "table_analysis.h"
 
+#include "discrepancy.h"
 #include "min_distance.h"
 
 #include <algorithm>
@@ -66,6 +67,19 @@ nlohmann::json table_quality(const SampleTable& t, const std::vector<PointSet>& 
     double full = relative_radius(min_distance(sets[k], true), sets[k].size(), t.dim);
     full_min = std::min(full_min, full);
     full_sum += full / t.table_count();
+  }
+  if (t.dim == 1) {
+    // Worst periodic discrepancy over the tables, of a few prefixes and of the whole table.
+    nlohmann::json d;
+    for (std::size_t n : {std::size_t(64), std::size_t(256), std::size_t(t.params.points)}) {
+      double worst = 0.0;
+      for (const PointSet& ps : sets) {
+        const std::size_t m = std::min(n, ps.size());
+        worst = std::max(worst, periodic_discrepancy_1d({ps.coords.begin(), ps.coords.begin() + m}));
+      }
+      d[std::to_string(n)] = worst;
+    }
+    j["discrepancy_max"] = d;
   }
   if (!pixel) j["prefix_rho_min"] = prefix_min;
   j["full_rho_min"] = full_min;

@@ -1,6 +1,7 @@
 // Point-set analysis library and `pdrt analyze`.
 #include "analysis_report.h"
 #include "chi_square.h"
+#include "discrepancy.h"
 #include "distance.h"
 #include "generator.h"
 #include "incomplete_gamma.h"
@@ -111,6 +112,21 @@ void expect_rejected(const std::string& name, const std::string& content, const 
 }  // namespace
 
 // ---- min distance and relative radius
+
+TEST(Analysis, PeriodicDiscrepancyOfALatticeIsOneOverN) {
+  std::vector<double> x;
+  for (int i = 0; i < 100; ++i) x.push_back((i + 0.5) / 100);
+  EXPECT_NEAR(periodic_discrepancy_1d(x), 0.01, 1e-12);
+  for (double& v : x) v = v + 0.37 - std::floor(v + 0.37);  // rotating the circle changes nothing
+  EXPECT_NEAR(periodic_discrepancy_1d(x), 0.01, 1e-12);
+}
+
+TEST(Analysis, PeriodicDiscrepancySeesAHalfEmptyCircle) {
+  std::vector<double> x;
+  for (int i = 0; i < 100; ++i) x.push_back((i + 0.5) / 200);  // all in [0, 1/2)
+  EXPECT_NEAR(periodic_discrepancy_1d(x), 0.5 + 0.005, 1e-12);
+  EXPECT_EQ(periodic_discrepancy_1d({}), 0.0);
+}
 
 TEST(Analysis, MinDistanceMatchesBruteForceBounded) {
   for (int dim : {1, 2, 3, 5}) {

@@ -173,6 +173,20 @@ TEST(DefaultTables, FitInTheMemoryBudget) {
 namespace pdrt {
 namespace {
 
+TEST(AnalyzeTableCli, ReportsTheTimeTablesDiscrepancy) {
+  auto dir = test::scratch_dir("analyze_table_time");
+  auto r = test::run_pdrt(std::string("analyze --no-plots -q --table '") + PDRT_TABLE_DIR +
+                          "/time.pdrttbl' --out '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "out" / "stats.json"));
+  const auto& d = j.at("table").at("discrepancy_max");
+  for (const char* n : {"64", "256", "1024"}) {
+    // Between a lattice (1/n) and a clump (1).
+    EXPECT_GE(d.at(n).get<double>(), 1.0 / std::stod(n)) << n;
+    EXPECT_LT(d.at(n).get<double>(), 1.0) << n;
+  }
+}
+
 TEST(AnalyzeTableCli, ReportsPrefixAndPixelQuality) {
   auto dir = test::scratch_dir("analyze_table");
   for (const char* family : {"lens", "pixel"}) {

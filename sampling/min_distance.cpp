@@ -7,6 +7,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <limits>
 
@@ -49,6 +50,13 @@ std::vector<double> prefix_relative_radius(const PointSet& points, bool periodic
     rho.push_back(std::sqrt(running_sq) / max_packing_distance(int64_t(i + 1), points.dim));
   }
   return rho;
+}
+
+double worst_prefix_rho(const std::vector<double>& prefix_rho, std::size_t first_n) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (std::size_t n = std::max<std::size_t>(first_n, 2); n - 2 < prefix_rho.size(); ++n)
+    worst = std::min(worst, prefix_rho[n - 2]);
+  return worst;
 }
 
 }  // namespace pdrt

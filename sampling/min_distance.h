@@ -19,4 +19,8 @@ double relative_radius(double min_dist, std::size_t count, int dim);
 // can shrink it only through its nearest earlier neighbour.
 std::vector<double> prefix_relative_radius(const PointSet& points, bool periodic);
 
+// The smallest rho over prefixes of at least `first_n` points, from prefix_relative_radius's
+// output (issue 3's bar counts prefixes of >= 16 points); +inf when there are none.
+double worst_prefix_rho(const std::vector<double>& prefix_rho, std::size_t first_n);
+
 }  // namespace pdrt

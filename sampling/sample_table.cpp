@@ -56,10 +56,7 @@ bool meets_quality_bar(const PointSet& ps) {
   PointSet q = ps;  // judged as stored: 32-bit fixed point
   for (double& x : q.coords) x = double(to_fixed(x)) * 0x1.0p-32;
   const std::vector<double> rho = prefix_relative_radius(q, true);
-  if (rho.empty() || rho.back() < kFullRhoMin) return false;
-  for (std::size_t n = kFirstPrefix; n - 2 < rho.size(); ++n)
-    if (rho[n - 2] < kPrefixRhoMin) return false;
-  return true;
+  return !rho.empty() && rho.back() >= kFullRhoMin && worst_prefix_rho(rho, kFirstPrefix) >= kPrefixRhoMin;
 }
 
 PointSet relaxation(const TableParams& p, int dim, int64_t count, uint64_t table_index) {
@@ -68,9 +65,10 @@ PointSet relaxation(const TableParams& p, int dim, int64_t count, uint64_t table
     PointSet ps = relaxation_draw(p, dim, count, draw == 0 ? first_seed : hash_combine(first_seed, uint64_t(draw)));
     if (meets_quality_bar(ps)) return ps;
   }
-  throw InputError("tables: " + std::string(family_name(p.family)) + " table " + std::to_string(table_index) +
-                   " missed rho >= 0.65 (prefixes) / 0.72 (whole) in " + std::to_string(kMaxDraws) +
-                   " draws; try other relaxation parameters");
+  std::ostringstream msg;
+  msg << "tables: " << family_name(p.family) << " table " << table_index << " missed rho >= " << kPrefixRhoMin
+      << " (prefixes) / " << kFullRhoMin << " (whole) in " << kMaxDraws << " draws; try other relaxation parameters";
+  throw InputError(msg.str());
 }
 
 // Pixel family: points of one torus pattern grouped by the pixel of the P x P tile they fall

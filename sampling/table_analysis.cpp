@@ -50,8 +50,7 @@ nlohmann::json table_quality(const SampleTable& t, const std::vector<PointSet>& 
   double pixel_min = prefix_min;
   for (uint32_t k = 0; k < t.table_count(); ++k) {
     if (!pixel) {
-      auto rho = prefix_relative_radius(sets[k], true);  // entry n-2 for n points
-      for (std::size_t n = 16; n <= rho.size() + 1; ++n) prefix_min = std::min(prefix_min, rho[n - 2]);
+      prefix_min = std::min(prefix_min, worst_prefix_rho(prefix_relative_radius(sets[k], true), 16));
     } else {
       // Each pixel's own subsequence, in pixel units, non-periodic (the pixel is not a torus).
       for (uint32_t cell = 0; cell < t.params.tile * t.params.tile; ++cell) {
@@ -60,8 +59,7 @@ nlohmann::json table_quality(const SampleTable& t, const std::vector<PointSet>& 
         uint32_t start = t.cell_start[k][cell], n = t.cell_count[k][cell];
         px.coords.assign(t.coords[k].begin() + 2 * start, t.coords[k].begin() + 2 * (start + n));
         for (double& v : px.coords) v *= 0x1.0p-32;
-        auto rho = prefix_relative_radius(px, false);
-        for (std::size_t m = 16; m <= rho.size() + 1; ++m) pixel_min = std::min(pixel_min, rho[m - 2]);
+        pixel_min = std::min(pixel_min, worst_prefix_rho(prefix_relative_radius(px, false), 16));
       }
     }
     double full = relative_radius(min_distance(sets[k], true), sets[k].size(), t.dim);

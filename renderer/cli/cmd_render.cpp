@@ -25,7 +25,8 @@ std::atomic<bool> g_cancel{false};
 extern "C" void on_sigint(int) { g_cancel.store(true); }
 
 // Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
-// power-of-two bins [2^k, 2^(k+1)).
+// power-of-two bins [2^k, 2^(k+1)); the first bin, [0, 2), also holds pixels an interrupted
+// render left without samples.
 nlohmann::json spp_distribution(const std::vector<float>& samples) {
   std::vector<float> s = samples;
   std::sort(s.begin(), s.end());
@@ -37,14 +38,17 @@ nlohmann::json spp_distribution(const std::vector<float>& samples) {
   j["p90"] = q(0.9);
   j["p99"] = q(0.99);
   j["max"] = s.back();
-  nlohmann::json bins = nlohmann::json::array();
-  std::size_t i = 0;
-  for (int k = 0; i < s.size(); ++k) {
-    const double lo = std::ldexp(1.0, k), hi = 2 * lo;
-    std::size_t n = 0;
-    for (; i < s.size() && s[i] < hi; ++i) n += s[i] >= lo || k == 0;  // k = 0 also holds 0-sample pixels
-    if (n) bins.push_back({{"from", lo}, {"below", hi}, {"pixels", n}});
+  std::vector<int64_t> count;
+  for (float v : s) {
+    const std::size_t k = v < 2 ? 0 : std::size_t(std::ilogb(v));
+    if (k >= count.size()) count.resize(k + 1, 0);
+    ++count[k];
   }
+  nlohmann::json bins = nlohmann::json::array();
+  for (std::size_t k = 0; k < count.size(); ++k)
+    if (count[k])
+      bins.push_back({{"from", k == 0 ? 0.0 : std::ldexp(1.0, int(k))}, {"below", std::ldexp(1.0, int(k) + 1)},
+                      {"pixels", count[k]}});
   j["histogram"] = bins;
   return j;
 }

@@ -141,5 +141,33 @@ TEST(SobolSampler, PowerOfTwoPrefixesAreZeroTwoNets) {
     }
 }
 
+
+// RMS error over 64 x 32 pixels of estimating the time a moving edge has covered a pixel,
+// the integral of [t < tau] = tau, from each pixel's first n time samples.
+double time_step_rmse(const Sampler& s, int n) {
+  double sum = 0;
+  int pixels = 0;
+  for (int py = 0; py < 32; ++py)
+    for (int px = 0; px < 64; ++px, ++pixels) {
+      const double tau = (px + 0.37 * py / 32.0 + 0.5) / 64.4;
+      int hits = 0;
+      for (int i = 0; i < n; ++i) hits += s.get_1d(px, py, i, Family::Time, 0) < tau;
+      sum += (double(hits) / n - tau) * (double(hits) / n - tau);
+    }
+  return std::sqrt(sum / pixels);
+}
+
+TEST(PoissonSampler, TimeSamplesIntegrateAStepFarBetterThanRandomAtEveryCount) {
+  // The 1-D time tables must be uniform as well as Poisson-disk. Relaxation tables with
+  // uneven density (Kuiper discrepancy ~0.08) matched random's error by 1024 samples
+  // (docs/results.md); the balanced ones measure 5.0x / 5.9x / 2.9x below it at 64 / 256 /
+  // 1024 samples.
+  auto poisson = make_sampler("poisson", 5), random = make_sampler("random", 5);
+  for (int n : {64, 256, 1024}) {
+    const double p = time_step_rmse(*poisson, n), r = time_step_rmse(*random, n);
+    EXPECT_LT(p, r / 2) << n << " samples: poisson " << p << ", random " << r;
+  }
+}
+
 }  // namespace
 }  // namespace pdrt

@@ -1,0 +1,83 @@
+#include "balanced_relaxation_1d.h"
+#include "discrepancy.h"
+#include "errors.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+PointSet draw(uint64_t seed, int64_t count = 1024) {
+  BalancedRelaxation1D p;
+  p.seed = seed;
+  p.count = count;
+  return balanced_relaxation_1d(p);
+}
+
+// Smallest circular gap of the first n values, brute force over all pairs.
+double min_distance(const std::vector<double>& x, std::size_t n) {
+  double best = 1.0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      double d = std::abs(x[i] - x[j]);
+      best = std::min(best, std::min(d, 1.0 - d));
+    }
+  return best;
+}
+
+TEST(BalancedRelaxation1D, EveryPrefixHasExactlyItsRecordedRadius) {
+  PointSet ps = draw(3, 256);
+  ASSERT_EQ(ps.size(), 256u);
+  for (std::size_t n = 2; n <= ps.size(); ++n) {
+    EXPECT_NEAR(ps.radius[n - 1], min_distance(ps.coords, n), 1e-15) << n;  // wrap-around rounding
+    EXPECT_LE(ps.radius[n - 1], ps.radius[n - 2]) << n;
+  }
+  for (double x : ps.coords) {
+    EXPECT_GE(x, 0.0);
+    EXPECT_LT(x, 1.0);
+  }
+}
+
+TEST(BalancedRelaxation1D, PrefixesKeepTheRadiusTargetWhileThereIsRoom) {
+  // Every prefix gets min gap >= 0.66/n unless no gap had room (then the largest gap is
+  // halved, rarely and mostly in the last 1 %). Issue 3's bar for prefixes of >= 16 points.
+  double worst = 1.0;
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    PointSet ps = draw(seed);
+    for (std::size_t n = 16; n <= ps.size(); ++n) worst = std::min(worst, ps.radius[n - 1] * double(n));
+  }
+  EXPECT_GE(worst, 0.65);
+}
+
+TEST(BalancedRelaxation1D, DensityIsEvenAtEveryScale) {
+  // Periodic (Kuiper) discrepancy, mean of 8 seeds: measured 0.043 / 0.015 / 0.013 at 64 /
+  // 256 / 1024 points. McCool relaxation in 1-D stays at ~0.08; dart throwing has 0.060 /
+  // 0.024 / 0.011.
+  double mean[3] = {0, 0, 0};
+  const std::size_t sizes[3] = {64, 256, 1024};
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    PointSet ps = draw(seed);
+    for (int k = 0; k < 3; ++k)
+      mean[k] += periodic_discrepancy_1d({ps.coords.begin(), ps.coords.begin() + sizes[k]}) / 8;
+  }
+  EXPECT_LT(mean[0], 0.055);
+  EXPECT_LT(mean[1], 0.02);
+  EXPECT_LT(mean[2], 0.02);
+}
+
+TEST(BalancedRelaxation1D, SameSeedSamePointsOtherSeedOtherPoints) {
+  EXPECT_EQ(draw(7, 300).coords, draw(7, 300).coords);
+  EXPECT_NE(draw(7, 300).coords, draw(8, 300).coords);
+}
+
+TEST(BalancedRelaxation1D, RefusesAnEmptySet) {
+  BalancedRelaxation1D p;
+  p.count = 0;
+  EXPECT_THROW(balanced_relaxation_1d(p), UsageError);
+}
+
+}  // namespace
+}  // namespace pdrt

@@ -20,10 +20,11 @@ struct BalancedRelaxation1D {
   double full_rho = 0.73;    // and >= full_rho / count, so the whole set reaches it
   int candidates = 32;       // darts per point
   int finest_window = 4;     // smallest neighbourhood scored, in expected points
+  bool periodic = true;      // the circle (tables); else [0, 1) with walls
 };
 
-// Points on the circle [0, 1) in rank order; radius[i] is the minimum distance of the
-// (i+1)-prefix (non-increasing). Throws UsageError for count < 1.
+// Points in [0, 1) in rank order; radius[i] is the minimum distance of the (i+1)-prefix
+// (non-increasing). Throws UsageError for count < 1.
 PointSet balanced_relaxation_1d(const BalancedRelaxation1D& p);
 
 }  // namespace pdrt

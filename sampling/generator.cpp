@@ -21,6 +21,7 @@ const std::vector<MethodInfo>& methods() {
       {"gamito", "Gamito–Maddock 2009 accurate maximal sampling with a 2^n-tree", 5, true, true, true},
       {"lloyd", "Lloyd relaxation on the torus from a Poisson-disk start (McCool §6)", kMaxDim, true, false, false},
       {"best-candidate", "Mitchell 1991 best-candidate, hierarchical", kMaxDim, true, false, true},
+      {"balanced", "1-D balanced relaxation, hierarchical with even density (the time tables)", 1, true, false, true},
   };
   return list;
 }
@@ -121,6 +122,7 @@ PointSet generate(const GeneratorParams& p) {
   else if (m == "bridson") out = generate_bridson(p);
   else if (m == "gamito") out = generate_gamito(p);
   else if (m == "lloyd") out = generate_lloyd(p);
+  else if (m == "balanced") out = generate_balanced(p);
   else out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;

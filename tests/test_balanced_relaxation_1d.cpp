@@ -10,29 +10,33 @@
 namespace pdrt {
 namespace {
 
-PointSet draw(uint64_t seed, int64_t count = 1024) {
+PointSet draw(uint64_t seed, int64_t count = 1024, bool periodic = true) {
   BalancedRelaxation1D p;
   p.seed = seed;
   p.count = count;
+  p.periodic = periodic;
   return balanced_relaxation_1d(p);
 }
 
-// Smallest circular gap of the first n values, brute force over all pairs.
-double min_distance(const std::vector<double>& x, std::size_t n) {
+// Smallest gap of the first n values (circular when periodic), brute force over all pairs.
+double min_distance(const std::vector<double>& x, std::size_t n, bool periodic) {
   double best = 1.0;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
       double d = std::abs(x[i] - x[j]);
-      best = std::min(best, std::min(d, 1.0 - d));
+      best = std::min(best, periodic ? std::min(d, 1.0 - d) : d);
     }
   return best;
 }
 
-TEST(BalancedRelaxation1D, EveryPrefixHasExactlyItsRecordedRadius) {
-  PointSet ps = draw(3, 256);
+class BalancedRelaxation1DDomain : public ::testing::TestWithParam<bool> {};
+
+TEST_P(BalancedRelaxation1DDomain, EveryPrefixHasExactlyItsRecordedRadius) {
+  const bool periodic = GetParam();
+  PointSet ps = draw(3, 256, periodic);
   ASSERT_EQ(ps.size(), 256u);
   for (std::size_t n = 2; n <= ps.size(); ++n) {
-    EXPECT_NEAR(ps.radius[n - 1], min_distance(ps.coords, n), 1e-15) << n;  // wrap-around rounding
+    EXPECT_NEAR(ps.radius[n - 1], min_distance(ps.coords, n, periodic), 1e-15) << n;  // wrap-around rounding
     EXPECT_LE(ps.radius[n - 1], ps.radius[n - 2]) << n;
   }
   for (double x : ps.coords) {
@@ -40,6 +44,9 @@ TEST(BalancedRelaxation1D, EveryPrefixHasExactlyItsRecordedRadius) {
     EXPECT_LT(x, 1.0);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(PeriodicAndBounded, BalancedRelaxation1DDomain, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "periodic" : "bounded"; });
 
 TEST(BalancedRelaxation1D, PrefixesKeepTheRadiusTargetWhileThereIsRoom) {
   // Every prefix gets min gap >= 0.66/n unless no gap had room (then the largest gap is

@@ -83,9 +83,10 @@ class GamitoSampler {
  private:
   static constexpr double kMaxCellsPerPoint = 32.0;
   // A round throws this many darts per live cell; the level is refined when fewer than
-  // kRefineBelow of them succeed.
+  // kRefineBelow of them succeed. 0.4 refines right after the first level-0 round (2-D: ~33%
+  // accepted), whose second round would accept only ~7% (docs/sampling.md, speed).
   static constexpr double kDartsPerCell = 1.0;
-  static constexpr double kRefineBelow = 0.25;
+  static constexpr double kRefineBelow = 0.4;
   // Darts per batch (see run()).
   static constexpr int kBatch = 16;
   // Samples that may reach one level-0 cell: a few in 2-D, more above (chained grid).

@@ -1,5 +1,6 @@
-// Integration error report (issue 3): RMSE of every sampler on the standard 2-D integrands at
-// N = 16..4096, over 256 independent pixel streams, and the log-log slope of RMSE vs N.
+// Integration error report (issue 3): RMSE of every sampler on the standard 2-D integrands
+// (lens family) and two 1-D ones (time family) at N = 16..4096, over 256 independent pixel
+// streams, and the log-log slope of RMSE vs N.
 // Not a timed test: run ./build/bench/integration_report and read the tables it prints.
 #include "integration_error.h"
 #include "poisson_sampler.h"
@@ -26,8 +27,9 @@ int main() {
   std::printf("Lens family, %d pixels per point; RMSE (slope of log RMSE vs log N over 16..1024)\n", trials);
   std::printf("poisson beyond N = %lld continues in another table and is no longer one prefix.\n\n",
               (long long)table_len);
-  for (const Integrand& f : standard_integrands()) {
-    std::printf("### %s (exact %.6f)\n\n| sampler |", f.name.c_str(), f.exact);
+  // One table: a row per sampler, RMSE at every N and the slope over 16..1024.
+  auto table = [&](const std::string& title, auto&& rmse) {
+    std::printf("### %s\n\n| sampler |", title.c_str());
     for (int64_t n : ns) std::printf(" N=%lld |", (long long)n);
     std::printf(" slope |\n|---|");
     for (std::size_t i = 0; i <= ns.size(); ++i) std::printf("---|");
@@ -37,7 +39,7 @@ int main() {
       double sx = 0, sy = 0, sxx = 0, sxy = 0;
       int m = 0;
       for (int64_t n : ns) {
-        double r = integration_rmse(*e.s, f, n, trials);
+        double r = rmse(*e.s, n);
         std::printf(" %.3g |", r);
         if (n <= 1024) {
           double x = std::log(double(n)), y = std::log(r);
@@ -47,5 +49,12 @@ int main() {
       std::printf(" %.2f |\n", (m * sxy - sx * sy) / (m * sxx - sx * sx));
     }
     std::printf("\n");
-  }
+  };
+  for (const Integrand& f : standard_integrands())
+    table(f.name + " (exact " + std::to_string(f.exact) + ")",
+          [&](const Sampler& s, int64_t n) { return integration_rmse(s, f, n, trials); });
+  std::printf("Time family (1-D), %d pixels per point.\n\n", trials);
+  for (const Integrand1D& f : time_integrands())
+    table("time " + f.name + " (exact " + std::to_string(f.exact) + ")",
+          [&](const Sampler& s, int64_t n) { return integration_rmse_1d(s, f, n, trials); });
 }

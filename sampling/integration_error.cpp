@@ -28,4 +28,23 @@ double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int tri
   return std::sqrt(err2 / trials);
 }
 
+const std::vector<Integrand1D>& time_integrands() {
+  static const std::vector<Integrand1D> list = {
+      {"step", [](double t) { return t < 1 / std::numbers::pi ? 1.0 : 0.0; }, 1 / std::numbers::pi},
+      {"exponential", [](double t) { return std::exp(-t); }, 1 - std::exp(-1.0)},
+  };
+  return list;
+}
+
+double integration_rmse_1d(const Sampler& s, const Integrand1D& f, int64_t n, int trials) {
+  double err2 = 0.0;
+  for (int t = 0; t < trials; ++t) {
+    double sum = 0.0;
+    for (int64_t i = 0; i < n; ++i) sum += f.f(s.get_1d(t % 64, t / 64, i, Family::Time, 0));
+    double e = sum / double(n) - f.exact;
+    err2 += e * e;
+  }
+  return std::sqrt(err2 / trials);
+}
+
 }  // namespace pdrt

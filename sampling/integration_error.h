@@ -20,4 +20,14 @@ const std::vector<Integrand>& standard_integrands();
 // RMS error of the N-sample estimate over `trials` pixels (pixel (t mod 64, t / 64)).
 double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int trials, Family family = Family::Lens);
 
+// The same for 1-D integrands on the time family: a step (a moving edge's coverage) and a
+// smooth exponential (a shutter-weighted fade).
+struct Integrand1D {
+  std::string name;
+  double (*f)(double);
+  double exact;
+};
+const std::vector<Integrand1D>& time_integrands();
+double integration_rmse_1d(const Sampler& s, const Integrand1D& f, int64_t n, int trials);
+
 }  // namespace pdrt

@@ -202,8 +202,8 @@ const TableSet& default_tables() {
     }
 #endif
     // The cache key names the file format and the generation rule (g2: draws that miss the
-    // rho bar are redrawn; g3: balanced 1-D time tables), so an older pdrt's cache is not reused.
-    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g3-seed1");
+    // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them), so an older pdrt's cache is not reused.
+    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g4-seed1");
     if (!complete(dir)) {
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);

@@ -310,7 +310,9 @@ std::vector<TableParams> default_table_params() {
     TableParams p;
     p.family = f;
     p.tables = 16;
-    p.points = 1024;
+    // Time: twice the samples a pixel uses, so 1024 spp reads a prefix, which is more even
+    // than a whole balanced table (its last points must saturate the gaps for the rho bar).
+    p.points = f == Family::Time ? 2048 : 1024;
     v.push_back(p);
   }
   return v;

@@ -67,9 +67,13 @@ nlohmann::json table_quality(const SampleTable& t, const std::vector<PointSet>& 
     full_sum += full / t.table_count();
   }
   if (t.dim == 1) {
-    // Worst periodic discrepancy over the tables, of a few prefixes and of the whole table.
+    // Worst periodic discrepancy over the tables, of the 64-, 256- and 1024-point prefixes
+    // and of the whole table.
     nlohmann::json d;
-    for (std::size_t n : {std::size_t(64), std::size_t(256), std::size_t(t.params.points)}) {
+    std::vector<std::size_t> sizes = {64, 256, 1024};
+    sizes.erase(std::remove_if(sizes.begin(), sizes.end(), [&](std::size_t n) { return n >= t.params.points; }), sizes.end());
+    sizes.push_back(t.params.points);
+    for (std::size_t n : sizes) {
       double worst = 0.0;
       for (const PointSet& ps : sets) {
         const std::size_t m = std::min(n, ps.size());

@@ -185,10 +185,10 @@ TEST(AnalyzeTableCli, ReportsTheTimeTablesDiscrepancy) {
     EXPECT_GE(d.at(n).get<double>(), 1.0 / std::stod(n)) << n;
     EXPECT_LT(d.at(n).get<double>(), 1.0) << n;
   }
-  // Balanced 1-D tables are about as even as dart throwing (0.024 / 0.011 at 256 / 1024
-  // points) in their worst table, measured 0.0225 / 0.0214; relaxation tables were 0.087 / 0.082.
+  // Balanced 1-D tables are at least as even as dart throwing (0.024 / 0.011 at 256 / 1024
+  // points) in their worst table, measured 0.0225 / 0.0068; relaxation tables were 0.087 / 0.082.
   EXPECT_LT(d.at("256").get<double>(), 0.03);
-  EXPECT_LT(d.at("1024").get<double>(), 0.03);
+  EXPECT_LT(d.at("1024").get<double>(), 0.011);
 }
 
 TEST(AnalyzeTableCli, ReportsPrefixAndPixelQuality) {

@@ -160,12 +160,12 @@ double time_step_rmse(const Sampler& s, int n) {
 TEST(PoissonSampler, TimeSamplesIntegrateAStepFarBetterThanRandomAtEveryCount) {
   // The 1-D time tables must be uniform as well as Poisson-disk. Relaxation tables with
   // uneven density (Kuiper discrepancy ~0.08) matched random's error by 1024 samples
-  // (docs/results.md); the balanced ones measure 5.0x / 5.9x / 2.9x below it at 64 / 256 /
+  // (docs/results.md); the balanced ones measure 5.1x / 5.7x / 9.2x below it at 64 / 256 /
   // 1024 samples.
   auto poisson = make_sampler("poisson", 5), random = make_sampler("random", 5);
   for (int n : {64, 256, 1024}) {
     const double p = time_step_rmse(*poisson, n), r = time_step_rmse(*random, n);
-    EXPECT_LT(p, r / 2) << n << " samples: poisson " << p << ", random " << r;
+    EXPECT_LT(p, r / 3) << n << " samples: poisson " << p << ", random " << r;
   }
 }
 

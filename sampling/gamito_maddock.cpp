@@ -18,6 +18,7 @@
 #include "distance.h"
 #include "gamito_active_cells.h"
 #include "gamito_sample_grid.h"
+#include "two_disk_cover.h"
 #include "generator.h"
 #include "rng.h"
 
@@ -322,8 +323,10 @@ class GamitoSampler {
       double lo[N];
       for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
       double best[Cells::kKids][Cell::kWitnesses];
+      int best_at[Cells::kKids][Cell::kWitnesses];  // their entries in base_near_
       for (int j = 0; j < Cells::kKids; ++j) {
         std::fill(best[j], best[j] + Cell::kWitnesses, d2_);
+        std::fill(best_at[j], best_at[j] + Cell::kWitnesses, -1);
         std::fill(kids[j].near, kids[j].near + Cell::kWitnesses, Cell::kNone);
       }
       uint32_t alive = ~uint32_t(0) >> (32 - Cells::kKids);
@@ -363,10 +366,21 @@ class GamitoSampler {
           if (n >= d2_) continue;
           // Overlaps: a witness if it is among the disks that come closest to the centre.
           uint32_t id = base_near_[i].id;
+          int at = i;
           for (int r = 0; r < Cell::kWitnesses; ++r)
-            if (c < best[j][r]) std::swap(c, best[j][r]), std::swap(id, kids[j].near[r]);
+            if (c < best[j][r]) std::swap(c, best[j][r]), std::swap(id, kids[j].near[r]), std::swap(at, best_at[j][r]);
         }
       }
+      // 2-D: a child no single disk covers may lie in the union of its two witnesses.
+      if constexpr (N == 2)
+        for (uint32_t m = alive; m != 0; m &= m - 1) {
+          const int j = std::countr_zero(m);
+          if (best_at[j][1] < 0) continue;
+          double clo[2];
+          for (int k = 0; k < 2; ++k) clo[k] = lo[k] + ((j >> k) & 1) * h;
+          if (square_in_two_disks(clo, h, base_near_[best_at[j][0]].x, base_near_[best_at[j][1]].x, in2_))
+            alive &= ~(uint32_t(1) << j);
+        }
       return alive;
     });
     ++level_;

@@ -48,6 +48,7 @@ class GamitoActiveCells {
   std::size_t live() const { return live_; }
   std::size_t slots() const { return cells_.size(); }
   const Cell& operator[](std::size_t i) const { return cells_[i]; }
+  Cell& operator[](std::size_t i) { return cells_[i]; }
   const Cell* data() const { return cells_.data(); }
 
   bool dead(std::size_t i) const { return cells_[i].c[0] == Cell::kDead; }

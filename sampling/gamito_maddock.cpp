@@ -239,8 +239,35 @@ class GamitoSampler {
         uint32_t code = u.image[i] >> (2 * k) & 3u;
         s[k] = u.x[k] + (code == 1 ? 1.0 : code == 2 ? -1.0 : 0.0);
       }
-      for (std::size_t j = group_[u.base[i]]; j < group_[u.base[i] + 1]; ++j)
-        if (!cells_.dead(j) && covered(cells_[j], s)) cells_.kill(j);
+      for (std::size_t j = group_[u.base[i]]; j < group_[u.base[i] + 1]; ++j) {
+        if (cells_.dead(j)) continue;
+        if (covered(cells_[j], s)) {
+          cells_.kill(j);
+        } else if constexpr (N == 2) {
+          // The disk reaches into the cell: with the cell's first witness it may cover it
+          // (two_disk_cover.h); if the cell has none yet, the disk becomes its witness.
+          Cell& cell = cells_[j];
+          const double w = width(), lo[2] = {double(cell.c[0]) * w, double(cell.c[1]) * w};
+          double gap2 = 0.0;
+          for (int k = 0; k < 2; ++k) {
+            const double a = std::max(std::max(lo[k] - s[k], s[k] - lo[k] - w), 0.0);
+            gap2 += a * a;
+          }
+          if (gap2 >= d2_) continue;
+          if (cell.near[0] == Cell::kNone) {
+            cell.near[0] = grid_.cell_of(u.x);
+            continue;
+          }
+          bool hit = false;
+          grid_.visit_cell(cell.near[0], [&](const double* t0) {
+            double t[2];
+            for (int k = 0; k < 2; ++k) t[k] = periodic_ ? t0[k] + std::round((lo[k] + 0.5 * w) - t0[k]) : t0[k];
+            hit = square_in_two_disks(lo, w, s, t, in2_);
+            return true;
+          });
+          if (hit) cells_.kill(j);
+        }
+      }
     }
   }
 

@@ -138,6 +138,9 @@ class GamitoSampleGrid {
 
   void prefetch_cell(uint32_t id) const { __builtin_prefetch(&cells_[id]); }
 
+  // The cell that stores (or would store) p, as visit() names it.
+  uint32_t cell_of(const double* p) const { return uint32_t(index(p)); }
+
   // Starts loading the rows visit(p, reach) will read.
   void prefetch(const double* p, double reach) const {
     int lo[N], hi[N], cur[N];

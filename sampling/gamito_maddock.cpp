@@ -261,7 +261,10 @@ class GamitoSampler {
           bool hit = false;
           grid_.visit_cell(cell.near[0], [&](const double* t0) {
             double t[2];
-            for (int k = 0; k < 2; ++k) t[k] = periodic_ ? t0[k] + std::round((lo[k] + 0.5 * w) - t0[k]) : t0[k];
+            for (int k = 0; k < 2; ++k) {
+              const double centre = lo[k] + 0.5 * w;
+              t[k] = centre - axis_delta(centre, t0[k], periodic_);  // the image nearest the cell
+            }
             hit = square_in_two_disks(lo, w, s, t, in2_);
             return true;
           });

@@ -248,12 +248,7 @@ class GamitoSampler {
           // (two_disk_cover.h); if the cell has none yet, the disk becomes its witness.
           Cell& cell = cells_[j];
           const double w = width(), lo[2] = {double(cell.c[0]) * w, double(cell.c[1]) * w};
-          double gap2 = 0.0;
-          for (int k = 0; k < 2; ++k) {
-            const double a = std::max(std::max(lo[k] - s[k], s[k] - lo[k] - w), 0.0);
-            gap2 += a * a;
-          }
-          if (gap2 >= d2_) continue;
+          if (near2(lo, w, s) >= d2_) continue;
           if (cell.near[0] == Cell::kNone) {
             cell.near[0] = grid_.cell_of(u.x);
             continue;

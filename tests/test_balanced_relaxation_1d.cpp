@@ -1,6 +1,7 @@
 #include "balanced_relaxation_1d.h"
 #include "discrepancy.h"
 #include "errors.h"
+#include "point_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -18,17 +19,6 @@ PointSet draw(uint64_t seed, int64_t count = 1024, bool periodic = true) {
   return balanced_relaxation_1d(p);
 }
 
-// Smallest gap of the first n values (circular when periodic), brute force over all pairs.
-double min_distance(const std::vector<double>& x, std::size_t n, bool periodic) {
-  double best = 1.0;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      double d = std::abs(x[i] - x[j]);
-      best = std::min(best, periodic ? std::min(d, 1.0 - d) : d);
-    }
-  return best;
-}
-
 class BalancedRelaxation1DDomain : public ::testing::TestWithParam<bool> {};
 
 TEST_P(BalancedRelaxation1DDomain, EveryPrefixHasExactlyItsRecordedRadius) {
@@ -36,13 +26,10 @@ TEST_P(BalancedRelaxation1DDomain, EveryPrefixHasExactlyItsRecordedRadius) {
   PointSet ps = draw(3, 256, periodic);
   ASSERT_EQ(ps.size(), 256u);
   for (std::size_t n = 2; n <= ps.size(); ++n) {
-    EXPECT_NEAR(ps.radius[n - 1], min_distance(ps.coords, n, periodic), 1e-15) << n;  // wrap-around rounding
+    EXPECT_NEAR(ps.radius[n - 1], test::brute_min_distance(ps, n), 1e-15) << n;  // wrap-around rounding
     EXPECT_LE(ps.radius[n - 1], ps.radius[n - 2]) << n;
   }
-  for (double x : ps.coords) {
-    EXPECT_GE(x, 0.0);
-    EXPECT_LT(x, 1.0);
-  }
+  EXPECT_TRUE(test::all_inside_unit_cube(ps));
 }
 
 INSTANTIATE_TEST_SUITE_P(PeriodicAndBounded, BalancedRelaxation1DDomain, ::testing::Bool(),

@@ -323,7 +323,7 @@ class GamitoSampler {
   void subdivide() {
     const double w = width(), h = 0.5 * w, base_w = 1.0 / double(res_);
     uint32_t base[N] = {Cell::kDead};
-    int base_count = 0;
+    int& base_count = base_count_;
     cells_.subdivide([&](const Cell& parent, Cell* kids) {
       bool same = true;
       for (int k = 0; k < N; ++k) same &= (parent.c[k] >> level_) == base[k];
@@ -336,10 +336,12 @@ class GamitoSampler {
         }
         base_count = 0;
         grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s, uint32_t id) {
-          if (near2(lo, base_w, s) < d2_ && base_count < kMaxNear) {
-            std::copy(s, s + N, base_near_[base_count].x);
-            base_near_[base_count++].id = id;
-          }
+          // Without branches: every sample is written, the count moves on for those that
+          // reach (entries kMaxNear and on are scratch; the last one stays kNone).
+          Near& at = base_near_[std::min(base_count, kMaxNear)];
+          std::copy(s, s + N, at.x);
+          at.id = id;
+          base_count += int(near2(lo, base_w, s) < d2_) & int(base_count < kMaxNear);
           return false;
         });
       }
@@ -347,6 +349,7 @@ class GamitoSampler {
       // nearest, farthest and centre distances of both halves; a child sums one half per axis.
       double lo[N];
       for (int k = 0; k < N; ++k) lo[k] = double(parent.c[k]) * w;
+      if constexpr (N == 2) return split_2d(lo, w, kids);
       double best[Cells::kKids][Cell::kWitnesses];
       int best_at[Cells::kKids][Cell::kWitnesses];  // their entries in base_near_
       for (int j = 0; j < Cells::kKids; ++j) {
@@ -412,6 +415,51 @@ class GamitoSampler {
     index_groups();
   }
 
+  // The 2-D children of the parent at lo: the generic loop's per-axis terms, with selects
+  // instead of branches (those mispredicted about 30 times per parent). A child is pruned
+  // when one disk holds its four corners, or when its two witnesses do together
+  // (two_disk_cover.h).
+  uint32_t split_2d(const double* lo, double w, Cell* kids) {
+    const double h = 0.5 * w, q = 0.25 * w;
+    // A witness holds the child's centre; the two nearest it are kept. Key: the squared
+    // distance's bits (monotone for doubles >= 0) with the low ones traded for the sample's
+    // entry in base_near_ (kMaxNear: none).
+    constexpr uint64_t kIndex = 2 * kMaxNear - 1, kNoWitness = ~uint64_t(0);
+    uint64_t best[4][2];
+    for (int j = 0; j < 4; ++j) best[j][0] = best[j][1] = kNoWitness;
+    uint32_t single = 0;  // children inside one disk
+    for (int i = 0; i < base_count_; ++i) {
+      const double* s = base_near_[i].x;
+      double far[2][3], c[2][2];  // per axis: squared offset from each plane; from each half's centre
+      for (int k = 0; k < 2; ++k) {
+        const double e0 = s[k] - lo[k], e1 = e0 - h, e2 = e1 - h;
+        far[k][0] = e0 * e0, far[k][1] = e1 * e1, far[k][2] = e2 * e2;
+        c[k][0] = (e0 - q) * (e0 - q), c[k][1] = (e1 - q) * (e1 - q);
+      }
+      for (int j = 0; j < 4; ++j) {
+        const int jx = j & 1, jy = j >> 1;
+        const double f = std::max(far[0][jx], far[0][jx + 1]) + std::max(far[1][jy], far[1][jy + 1]);
+        single |= uint32_t(f < in2_) << j;
+        const double cc = c[0][jx] + c[1][jy];
+        const uint64_t key = (std::bit_cast<uint64_t>(cc) & ~kIndex) | uint64_t(i) | -uint64_t(!(cc < d2_));
+        const uint64_t lower = best[j][0] < key ? best[j][0] : key, upper = best[j][0] < key ? key : best[j][0];
+        best[j][0] = lower;
+        best[j][1] = best[j][1] < upper ? best[j][1] : upper;
+      }
+    }
+    uint32_t alive = ~single & 15u;
+    for (int j = 0; j < 4; ++j)
+      for (int r = 0; r < 2; ++r) kids[j].near[r] = base_near_[best[j][r] & kIndex].id;
+    for (uint32_t m = alive; m != 0; m &= m - 1) {
+      const int j = std::countr_zero(m);
+      if (best[j][1] == kNoWitness) continue;
+      const double clo[2] = {lo[0] + (j & 1) * h, lo[1] + (j >> 1) * h};
+      if (square_in_two_disks(clo, h, base_near_[best[j][0] & kIndex].x, base_near_[best[j][1] & kIndex].x, in2_))
+        alive &= ~(uint32_t(1) << j);
+    }
+    return alive;
+  }
+
   double d_, d2_, in2_;
   bool periodic_;
   Rng rng_;
@@ -421,7 +469,9 @@ class GamitoSampler {
   int level_ = 0, last_ = 0;
   std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
   std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
-  std::vector<Near> base_near_ = std::vector<Near>(kMaxNear);  // samples reaching the level-0 cell
+  // The samples reaching the level-0 cell; the entries from kMaxNear on name no sample.
+  std::vector<Near> base_near_ = std::vector<Near>(2 * kMaxNear, Near{{}, Cell::kNone});
+  int base_count_ = 0;
 };
 
 template <int N>

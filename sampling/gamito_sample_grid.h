@@ -37,8 +37,8 @@ class GamitoSampleGrid {
     std::copy(p, p + N, c.x);
   }
 
-  // Calls f(q, cell) for every sample within `reach` of p on every axis (and possibly a
-  // few more) until f returns true; returns whether it did. When periodic, q is each of the
+  // Calls f(q, cell) for every sample within `reach` of p on every axis (and some more)
+  // until f returns true; returns whether it did. When periodic, q is each of the
   // sample's images (shifts in {-1, 0, 1} per axis) that lies in that range, so callers
   // measure plain Euclidean distances. `cell` names the grid cell that stores the sample
   // (see visit_cell()).
@@ -48,10 +48,10 @@ class GamitoSampleGrid {
     // Per axis: the cells in range (unwrapped index in [-res, 2 res) when periodic) as
     // wrapped offsets and image shifts, so the loops below only read.
     int span[N], cur[N];
-    int lowest = periodic_ ? -res_ : 0, highest = periodic_ ? 2 * res_ - 1 : res_ - 1;
+    const int lowest = -res_, highest = 2 * res_ - 1, width = fixed_span(reach);
     for (int k = 0; k < N; ++k) {
       int lo = std::max(floor_int((p[k] - reach) * res_), lowest);
-      int hi = std::min(floor_int((p[k] + reach) * res_), highest);
+      int hi = std::min(kChained ? floor_int((p[k] + reach) * res_) : lo + width - 1, highest);
       span[k] = hi - lo + 1;
       if (span[k] <= 0) return false;
       if (axes_[k].size() < std::size_t(span[k])) axes_[k].resize(std::size_t(span[k]));
@@ -75,15 +75,11 @@ class GamitoSampleGrid {
       }
       for (int i = 0; i < span[0]; ++i) {
         const std::size_t id = row + row0[i].offset;
-        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
-          if (periodic_) {
-            double shifted[N];
-            shifted[0] = c->x[0] + row0[i].shift;
-            for (int k = 1; k < N; ++k) shifted[k] = c->x[k] + image[k];
-            if (f(static_cast<const double*>(shifted), uint32_t(id))) return true;
-          } else if (f(static_cast<const double*>(c->x), uint32_t(id))) {
-            return true;
-          }
+        for (const Cell* c = &cells_[id]; readable(c);) {
+          double shifted[N];
+          shifted[0] = c->x[0] + row0[i].shift;
+          for (int k = 1; k < N; ++k) shifted[k] = c->x[k] + image[k];
+          if (f(static_cast<const double*>(shifted), uint32_t(id))) return true;
           if constexpr (!kChained) break;
           else if (c->more < 0) break;
           else c = &overflow_[std::size_t(c->more)];
@@ -100,22 +96,29 @@ class GamitoSampleGrid {
   template <class F>
   bool visit_walled(const double* p, double reach, F& f) const {
     int lo[N], hi[N], cur[N];
+    const int width = fixed_span(reach);
     for (int k = 0; k < N; ++k) {
-      lo[k] = std::max(floor_int((p[k] - reach) * res_), 0);
-      hi[k] = std::min(floor_int((p[k] + reach) * res_), res_ - 1);
+      if constexpr (kChained) {
+        lo[k] = std::max(floor_int((p[k] - reach) * res_), 0);
+        hi[k] = std::min(floor_int((p[k] + reach) * res_), res_ - 1);
+      } else {
+        lo[k] = std::clamp(floor_int((p[k] - reach) * res_), 0, std::max(res_ - width, 0));
+        hi[k] = std::min(lo[k] + width - 1, res_ - 1);
+      }
       if (lo[k] > hi[k]) return false;
       cur[k] = lo[k];
     }
     for (;;) {
       std::size_t row = 0;
       for (int k = 1; k < N; ++k) row += std::size_t(cur[k]) * stride_[k];
-      for (std::size_t id = row + std::size_t(lo[0]), last = row + std::size_t(hi[0]); id <= last; ++id)
-        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
+      for (std::size_t id = row + std::size_t(lo[0]), last = row + std::size_t(hi[0]); id <= last; ++id) {
+        for (const Cell* c = &cells_[id]; readable(c);) {
           if (f(static_cast<const double*>(c->x), uint32_t(id))) return true;
           if constexpr (!kChained) break;
           else if (c->more < 0) break;
           else c = &overflow_[std::size_t(c->more)];
         }
+      }
       int k = 1;
       while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
       if (k >= N) return false;
@@ -127,7 +130,7 @@ class GamitoSampleGrid {
   // returns true; returns whether it did.
   template <class F>
   bool visit_cell(uint32_t id, F&& f) const {
-    for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
+    for (const Cell* c = &cells_[id]; readable(c);) {
       if (f(static_cast<const double*>(c->x))) return true;
       if constexpr (!kChained) break;
       else if (c->more < 0) break;
@@ -165,6 +168,13 @@ class GamitoSampleGrid {
 
  private:
   static constexpr bool kChained = N > 2;
+  static constexpr double kFar = -1e9;
+
+  // Cells per axis that visit() reads for `reach` in a single grid: the most a range of
+  // 2 reach can touch, whatever its position, so that the loops always run the same length
+  // (an extra cell costs less than a mispredicted loop exit; callers test distances anyway).
+  // Chained grids read the exact range: there an extra cell costs a row of 4^(n-1).
+  int fixed_span(double reach) const { return int(2.0 * reach * res_) + 2; }
 
   // floor() as an int without a libm call (x is a few cells around the unit cube).
   static int floor_int(double x) {
@@ -172,13 +182,18 @@ class GamitoSampleGrid {
     return i - int(x < double(i));
   }
   struct Single {
-    double x[N] = {-1.0};  // x[0] < 0: empty
+    Single() { std::fill(x, x + N, kFar); }
+    double x[N];  // empty: a point so far away that no disk reaches it, even as an image
   };
   struct Chained {
     double x[N] = {-1.0};
     int32_t more = -1;  // the cell's previous sample in overflow_
   };
   using Cell = std::conditional_t<kChained, Chained, Single>;
+
+  // Whether the visits read the cell. A single cell is read even when empty: it then holds a
+  // point too far away to matter, which spares a mispredicted branch per cell.
+  static bool readable(const Cell* c) { return !kChained || c->x[0] >= 0.0; }
 
   struct Axis {
     std::size_t offset;  // the wrapped cell's index step along the axis

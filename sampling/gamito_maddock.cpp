@@ -17,6 +17,7 @@
 // uniform over S_i (Eq. A.2, A.8) whatever the schedule of subdivisions and prunings.
 #include "distance.h"
 #include "gamito_active_cells.h"
+#include "gamito_ghost_grid.h"
 #include "gamito_sample_grid.h"
 #include "two_disk_cover.h"
 #include "generator.h"
@@ -26,6 +27,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace pdrt {
@@ -40,16 +42,12 @@ template <int N>
 class GamitoSampler {
   using Cells = GamitoActiveCells<N>;
   using Cell = typename Cells::Cell;
+  using Grid = std::conditional_t<N <= 2, GamitoGhostGrid<N>, GamitoSampleGrid<N>>;
 
  public:
   GamitoSampler(double dist, bool periodic, uint64_t seed, std::size_t expected)
       : d_(dist), d2_(dist * dist), in2_(d2_ * (1 - 1e-9)), periodic_(periodic), rng_(seed),
-        grid_(dist, expected, periodic) {
-    // Level-0 cells at most d / sqrt(n) wide, as long as their number stays proportional to
-    // the points (5-D would need ~50 per point); wider cells are only pruned later.
-    double m = std::ceil(std::sqrt(double(N)) / dist);
-    m = std::min(m, std::floor(std::pow(kMaxCellsPerPoint * double(expected), 1.0 / N)));
-    res_ = uint32_t(std::clamp(m, 1.0, double(1u << 30)));
+        grid_(make_grid(dist, expected, periodic)), res_(level0_res(dist, expected)) {
     last_ = 0;
     while ((uint64_t(res_) << last_) < (uint64_t(1) << kMaxLevel)) ++last_;
   }
@@ -114,6 +112,20 @@ class GamitoSampler {
     double x[N];
     uint32_t id;
   };
+
+  // Level-0 cells at most d / sqrt(n) wide, as long as their number stays proportional to
+  // the points (5-D would need ~50 per point); wider cells are only pruned later.
+  static uint32_t level0_res(double dist, std::size_t expected) {
+    double m = std::ceil(std::sqrt(double(N)) / dist);
+    m = std::min(m, std::floor(std::pow(kMaxCellsPerPoint * double(expected), 1.0 / N)));
+    return uint32_t(std::clamp(m, 1.0, double(1u << 30)));
+  }
+
+  static Grid make_grid(double dist, std::size_t expected, bool periodic) {
+    // The widest query is subdivide()'s: d beyond the centre of a level-0 cell.
+    if constexpr (N <= 2) return Grid(dist, periodic, dist + 0.5 / double(level0_res(dist, expected)));
+    else return Grid(dist, expected, periodic);
+  }
 
   double width() const { return 1.0 / double(uint64_t(res_) << level_); }
 
@@ -463,7 +475,7 @@ class GamitoSampler {
   double d_, d2_, in2_;
   bool periodic_;
   Rng rng_;
-  GamitoSampleGrid<N> grid_;
+  Grid grid_;
   Cells cells_;
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;

@@ -1,24 +1,25 @@
 #pragma once
-// The accepted samples of the Gamito–Maddock sampler bucketed on a uniform background grid,
-// coordinates stored in the cells so a range query reads a few contiguous rows. It replaces
-// the paper's per-leaf sample lists (§4.1, §4.2): "which disks can reach this cell" is a
-// range query here. Up to 2-D the cells are at most d / sqrt(n) wide and so hold one sample
-// each; in higher dimensions that grid would dwarf the point set, so cells are about d wide
-// and chain further samples.
+// The accepted samples of a Gamito–Maddock run in 3 or more dimensions, bucketed on a
+// uniform background grid with the coordinates stored in the cells, so a range query reads
+// a few contiguous rows. It replaces the paper's per-leaf sample lists (§4.1, §4.2): "which
+// disks can reach this cell" is a range query here. A grid of cells d / sqrt(n) wide, one
+// sample each, would dwarf the point set in these dimensions, so cells are about d wide and
+// chain further samples (1-D and 2-D: GamitoGhostGrid).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 namespace pdrt {
 
 template <int N>
 class GamitoSampleGrid {
+  static_assert(N >= 3, "1-D and 2-D runs use GamitoGhostGrid");
+
  public:
   GamitoSampleGrid(double dist, std::size_t expected, bool periodic) : periodic_(periodic) {
-    double m = std::ceil((kChained ? 1.0 : std::sqrt(double(N))) / dist);
-    if (kChained) m = std::min(m, std::floor(std::pow(8.0 * double(expected), 1.0 / N)));
+    double m = std::ceil(1.0 / dist);
+    m = std::min(m, std::floor(std::pow(8.0 * double(expected), 1.0 / N)));
     res_ = std::max(1, int(m));
     std::size_t cells = 1;
     for (int k = 0; k < N; ++k) stride_[k] = cells, cells *= std::size_t(res_);
@@ -27,18 +28,16 @@ class GamitoSampleGrid {
 
   void insert(const double* p) {
     Cell& c = cells_[index(p)];
-    if constexpr (kChained) {
-      if (c.x[0] >= 0.0) {
-        Cell extra = c;
-        c.more = int32_t(overflow_.size());
-        overflow_.push_back(extra);
-      }
+    if (c.x[0] >= 0.0) {
+      Cell extra = c;
+      c.more = int32_t(overflow_.size());
+      overflow_.push_back(extra);
     }
     std::copy(p, p + N, c.x);
   }
 
-  // Calls f(q, cell) for every sample within `reach` of p on every axis (and some more)
-  // until f returns true; returns whether it did. When periodic, q is each of the
+  // Calls f(q, cell) for every sample within `reach` of p on every axis (and possibly a
+  // few more) until f returns true; returns whether it did. When periodic, q is each of the
   // sample's images (shifts in {-1, 0, 1} per axis) that lies in that range, so callers
   // measure plain Euclidean distances. `cell` names the grid cell that stores the sample
   // (see visit_cell()).
@@ -48,10 +47,9 @@ class GamitoSampleGrid {
     // Per axis: the cells in range (unwrapped index in [-res, 2 res) when periodic) as
     // wrapped offsets and image shifts, so the loops below only read.
     int span[N], cur[N];
-    const int lowest = -res_, highest = 2 * res_ - 1, width = fixed_span(reach);
     for (int k = 0; k < N; ++k) {
-      int lo = std::max(floor_int((p[k] - reach) * res_), lowest);
-      int hi = std::min(kChained ? floor_int((p[k] + reach) * res_) : lo + width - 1, highest);
+      int lo = std::max(floor_int((p[k] - reach) * res_), -res_);
+      int hi = std::min(floor_int((p[k] + reach) * res_), 2 * res_ - 1);
       span[k] = hi - lo + 1;
       if (span[k] <= 0) return false;
       if (axes_[k].size() < std::size_t(span[k])) axes_[k].resize(std::size_t(span[k]));
@@ -75,14 +73,13 @@ class GamitoSampleGrid {
       }
       for (int i = 0; i < span[0]; ++i) {
         const std::size_t id = row + row0[i].offset;
-        for (const Cell* c = &cells_[id]; readable(c);) {
+        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
           double shifted[N];
           shifted[0] = c->x[0] + row0[i].shift;
           for (int k = 1; k < N; ++k) shifted[k] = c->x[k] + image[k];
           if (f(static_cast<const double*>(shifted), uint32_t(id))) return true;
-          if constexpr (!kChained) break;
-          else if (c->more < 0) break;
-          else c = &overflow_[std::size_t(c->more)];
+          if (c->more < 0) break;
+          c = &overflow_[std::size_t(c->more)];
         }
       }
       int k = 1;
@@ -96,29 +93,21 @@ class GamitoSampleGrid {
   template <class F>
   bool visit_walled(const double* p, double reach, F& f) const {
     int lo[N], hi[N], cur[N];
-    const int width = fixed_span(reach);
     for (int k = 0; k < N; ++k) {
-      if constexpr (kChained) {
-        lo[k] = std::max(floor_int((p[k] - reach) * res_), 0);
-        hi[k] = std::min(floor_int((p[k] + reach) * res_), res_ - 1);
-      } else {
-        lo[k] = std::clamp(floor_int((p[k] - reach) * res_), 0, std::max(res_ - width, 0));
-        hi[k] = std::min(lo[k] + width - 1, res_ - 1);
-      }
+      lo[k] = std::max(floor_int((p[k] - reach) * res_), 0);
+      hi[k] = std::min(floor_int((p[k] + reach) * res_), res_ - 1);
       if (lo[k] > hi[k]) return false;
       cur[k] = lo[k];
     }
     for (;;) {
       std::size_t row = 0;
       for (int k = 1; k < N; ++k) row += std::size_t(cur[k]) * stride_[k];
-      for (std::size_t id = row + std::size_t(lo[0]), last = row + std::size_t(hi[0]); id <= last; ++id) {
-        for (const Cell* c = &cells_[id]; readable(c);) {
+      for (std::size_t id = row + std::size_t(lo[0]), last = row + std::size_t(hi[0]); id <= last; ++id)
+        for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
           if (f(static_cast<const double*>(c->x), uint32_t(id))) return true;
-          if constexpr (!kChained) break;
-          else if (c->more < 0) break;
-          else c = &overflow_[std::size_t(c->more)];
+          if (c->more < 0) break;
+          c = &overflow_[std::size_t(c->more)];
         }
-      }
       int k = 1;
       while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
       if (k >= N) return false;
@@ -130,11 +119,10 @@ class GamitoSampleGrid {
   // returns true; returns whether it did.
   template <class F>
   bool visit_cell(uint32_t id, F&& f) const {
-    for (const Cell* c = &cells_[id]; readable(c);) {
+    for (const Cell* c = &cells_[id]; c->x[0] >= 0.0;) {
       if (f(static_cast<const double*>(c->x))) return true;
-      if constexpr (!kChained) break;
-      else if (c->more < 0) break;
-      else c = &overflow_[std::size_t(c->more)];
+      if (c->more < 0) break;
+      c = &overflow_[std::size_t(c->more)];
     }
     return false;
   }
@@ -167,33 +155,15 @@ class GamitoSampleGrid {
   }
 
  private:
-  static constexpr bool kChained = N > 2;
-  static constexpr double kFar = -1e9;
-
-  // Cells per axis that visit() reads for `reach` in a single grid: the most a range of
-  // 2 reach can touch, whatever its position, so that the loops always run the same length
-  // (an extra cell costs less than a mispredicted loop exit; callers test distances anyway).
-  // Chained grids read the exact range: there an extra cell costs a row of 4^(n-1).
-  int fixed_span(double reach) const { return int(2.0 * reach * res_) + 2; }
-
   // floor() as an int without a libm call (x is a few cells around the unit cube).
   static int floor_int(double x) {
     int i = int(x);
     return i - int(x < double(i));
   }
-  struct Single {
-    Single() { std::fill(x, x + N, kFar); }
-    double x[N];  // empty: a point so far away that no disk reaches it, even as an image
+  struct Cell {
+    double x[N] = {-1.0};  // x[0] < 0: empty
+    int32_t more = -1;     // the cell's previous sample in overflow_
   };
-  struct Chained {
-    double x[N] = {-1.0};
-    int32_t more = -1;  // the cell's previous sample in overflow_
-  };
-  using Cell = std::conditional_t<kChained, Chained, Single>;
-
-  // Whether the visits read the cell. A single cell is read even when empty: it then holds a
-  // point too far away to matter, which spares a mispredicted branch per cell.
-  static bool readable(const Cell* c) { return !kChained || c->x[0] >= 0.0; }
 
   struct Axis {
     std::size_t offset;  // the wrapped cell's index step along the axis

@@ -62,13 +62,15 @@ class GamitoSampler {
     index_groups();
     while (cells_.live() > 0) {
       std::size_t darts = std::size_t(double(cells_.live()) * kDartsPerCell), thrown = 0, tried = 0, hits = 0;
-      // Three batches in flight: cells drawn, points made, darts tested. Darts still in
-      // flight when the round ends are dropped, as if never thrown.
-      Batch batch[3];
-      draw(batch[0]), draw(batch[1]), make(batch[0]);
-      for (int cur = 0; thrown < darts && cells_.live() > 0; cur = (cur + 1) % 3) {
-        draw(batch[(cur + 2) % 3]);
-        make(batch[(cur + 1) % 3]);
+      // Four batches in flight: cells drawn, points made, darts screened by their witnesses,
+      // darts tested. Darts still in flight when the round ends are dropped, as if never
+      // thrown.
+      Batch batch[4];
+      draw(batch[0]), draw(batch[1]), draw(batch[2]), make(batch[0]), make(batch[1]), screen(batch[0]);
+      for (int cur = 0; thrown < darts && cells_.live() > 0; cur = (cur + 1) % 4) {
+        draw(batch[(cur + 3) % 4]);
+        make(batch[(cur + 2) % 4]);
+        screen(batch[(cur + 1) % 4]);
         hits += test(batch[cur], out, tried);
         thrown += kBatch;
       }
@@ -96,6 +98,8 @@ class GamitoSampler {
     bool live[kBatch];
     double p[kBatch][N];
     uint32_t near[kBatch][Cell::kWitnesses];
+    bool rejected[kBatch];  // by a witness (screen())
+    double q[kBatch][N];    // the witness's image near the dart, when rejected
   };
 
   // An accepted sample waiting for its Update, with the level-0 cells around it (their
@@ -150,9 +154,28 @@ class GamitoSampler {
       if (!b.live[j]) continue;
       for (int k = 0; k < N; ++k) b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - frac)) * unit) / res;
       std::copy(cell.near, cell.near + Cell::kWitnesses, b.near[j]);
-      if (cell.near[0] == Cell::kNone) grid_.prefetch(b.p[j], d_);
       for (uint32_t id : cell.near)
         if (id != Cell::kNone) grid_.prefetch_cell(id);
+    }
+  }
+
+  // ... the test against the cell's witnesses first: most darts that fail, fail on them, and
+  // a sample never goes away, so a dart they reject is rejected whatever the darts before
+  // it do. The grid rows of the others are fetched for test().
+  void screen(Batch& b) {
+    for (int j = 0; j < kBatch; ++j) {
+      if (!b.live[j]) continue;
+      const double* p = b.p[j];
+      double* q = b.q[j];
+      bool conflict = false;
+      for (int w = 0; w < Cell::kWitnesses && !conflict && b.near[j][w] != Cell::kNone; ++w)
+        conflict = grid_.visit_cell(b.near[j][w], [&](const double* s) {
+          if (distance_sq(p, s, N, periodic_) >= d2_) return false;
+          for (int k = 0; k < N; ++k) q[k] = p[k] - axis_delta(p[k], s[k], periodic_);  // s's image near p
+          return true;
+        });
+      b.rejected[j] = conflict;
+      if (!conflict) grid_.prefetch(p, d_);
     }
   }
 
@@ -166,14 +189,8 @@ class GamitoSampler {
       ++tried;
       const double* p = b.p[j];
       double q[N];
-      // The cell's witnesses first: most darts that fail, fail on them.
-      bool conflict = false;
-      for (int w = 0; w < Cell::kWitnesses && !conflict && b.near[j][w] != Cell::kNone; ++w)
-        conflict = grid_.visit_cell(b.near[j][w], [&](const double* s) {
-          if (distance_sq(p, s, N, periodic_) >= d2_) return false;
-          for (int k = 0; k < N; ++k) q[k] = p[k] - axis_delta(p[k], s[k], periodic_);  // s's image near p
-          return true;
-        });
+      bool conflict = b.rejected[j];
+      if (conflict) std::copy(b.q[j], b.q[j] + N, q);
       if (!conflict)
         conflict = grid_.visit(p, d_, [&](const double* s, uint32_t) {
           if (distance2(p, s) >= d2_) return false;

@@ -132,8 +132,9 @@ class GamitoSampleGrid {
   // The cell that stores (or would store) p, as visit() names it.
   uint32_t cell_of(const double* p) const { return uint32_t(index(p)); }
 
-  // Starts loading the rows visit(p, reach) will read.
-  void prefetch(const double* p, double reach) const {
+  // Starts loading the rows visit(p, reach) will read. Always inlined: GCC 12 finds an
+  // out-of-line function that only prefetches "pure" and deletes its calls.
+  [[gnu::always_inline]] void prefetch(const double* p, double reach) const {
     int lo[N], hi[N], cur[N];
     for (int k = 0; k < N; ++k) {
       lo[k] = floor_int((p[k] - reach) * res_);

@@ -12,6 +12,16 @@ namespace pdrt {
 // only keep a covered square, never drop an uncovered one.
 inline bool square_in_two_disks(const double* lo, double w, const double* a, const double* b, double r2) {
   const double* disk[2] = {a, b};
+  // First, without square roots: every corner must lie in one of the disks. Most squares
+  // that reach this test fail here.
+  bool corners = true;
+  for (int c = 0; c < 4; ++c) {
+    const double x = lo[0] + (c & 1) * w, y = lo[1] + (c >> 1) * w;
+    const double da = (x - a[0]) * (x - a[0]) + (y - a[1]) * (y - a[1]);
+    const double db = (x - b[0]) * (x - b[0]) + (y - b[1]) * (y - b[1]);
+    corners &= (da < r2) | (db < r2);
+  }
+  if (!corners) return false;
   for (int e = 0; e < 4; ++e) {
     const int along = e & 1, across = 1 - along;  // the edge runs along axis `along`
     const double at = lo[across] + (e >> 1) * w, from = lo[along], to = lo[along] + w;

@@ -161,7 +161,7 @@ class GamitoSampler {
 
   // ... the test against the cell's witnesses first: most darts that fail, fail on them, and
   // a sample never goes away, so a dart they reject is rejected whatever the darts before
-  // it do. The grid rows of the others are fetched for test().
+  // it do. In 1-D and 2-D the grid rows of the others are fetched for test().
   void screen(Batch& b) {
     for (int j = 0; j < kBatch; ++j) {
       if (!b.live[j]) continue;
@@ -175,7 +175,10 @@ class GamitoSampler {
           return true;
         });
       b.rejected[j] = conflict;
-      if (!conflict) grid_.prefetch(p, d_);
+      // In 3-D and up the rows are many and short (chained grid): fetching them cost more
+      // than it saved (3-D, 5x10^4 points: 1.36 s with, 1.07 s without).
+      if constexpr (N <= 2)
+        if (!conflict) grid_.prefetch(p, d_);
     }
   }
 

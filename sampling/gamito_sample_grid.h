@@ -132,29 +132,6 @@ class GamitoSampleGrid {
   // The cell that stores (or would store) p, as visit() names it.
   uint32_t cell_of(const double* p) const { return uint32_t(index(p)); }
 
-  // Starts loading the rows visit(p, reach) will read. Always inlined: GCC 12 finds an
-  // out-of-line function that only prefetches "pure" and deletes its calls.
-  [[gnu::always_inline]] void prefetch(const double* p, double reach) const {
-    int lo[N], hi[N], cur[N];
-    for (int k = 0; k < N; ++k) {
-      lo[k] = floor_int((p[k] - reach) * res_);
-      hi[k] = floor_int((p[k] + reach) * res_);
-      cur[k] = lo[k];
-    }
-    for (int rows = 0; rows < 32; ++rows) {
-      std::size_t row = 0;
-      for (int k = N - 1; k >= 1; --k) row = row * std::size_t(res_) + std::size_t(std::clamp(cur[k], 0, res_ - 1));
-      row *= std::size_t(res_);
-      const char* first = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(lo[0], 0, res_ - 1))]);
-      const char* last = reinterpret_cast<const char*>(&cells_[row + std::size_t(std::clamp(hi[0], 0, res_ - 1))]);
-      for (const char* line = first; line <= last + sizeof(Cell) - 1; line += 64) __builtin_prefetch(line);
-      int k = 1;
-      while (k < N && cur[k] == hi[k]) cur[k] = lo[k], ++k;
-      if (k >= N) return;
-      ++cur[k];
-    }
-  }
-
  private:
   // floor() as an int without a libm call (x is a few cells around the unit cube).
   static int floor_int(double x) {

@@ -8,6 +8,7 @@
 // wrapping, image shifts or clamping, and an empty cell holds a point so far away that no
 // disk reaches it, so a query runs without a branch per cell.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -27,6 +28,7 @@ class GamitoGhostGrid {
     std::size_t cells = 1;
     for (int k = 0; k < N; ++k) stride_[k] = cells, cells *= std::size_t(side_);
     cells_.assign(cells, Cell{});
+    occupied_.assign(cells / 64 + 2, 0);
   }
 
   // Stores p in its cell and, on the torus, each image of p that falls in a ghost cell.
@@ -47,6 +49,7 @@ class GamitoGhostGrid {
       std::size_t id = 0;
       for (int k = 0; k < N; ++k) id += std::size_t(home[k] + s[k] * res_ + pad_) * stride_[k];
       for (int k = 0; k < N; ++k) cells_[id].x[k] = p[k] + double(s[k]);
+      occupied_[id >> 6] |= uint64_t(1) << (id & 63);
       int k = 0;
       while (k < N && s[k] == hi[k]) s[k] = lo[k], ++k;
       if (k == N) return;
@@ -54,24 +57,31 @@ class GamitoGhostGrid {
     }
   }
 
-  // Calls f(q, cell) for every cell within `reach` of p on every axis (and some more) until
-  // f returns true; returns whether it did. q is the sample (or periodic image) stored
-  // there, an empty cell's far point included, so callers measure plain Euclidean
-  // distances; `cell` names the cell for visit_cell(). The box is always `width` cells a
-  // side, the most a range of 2 reach can touch, so the loops run the same length
-  // (an extra cell costs less than a mispredicted loop exit).
+  // Calls f(q, cell) for every sample within `reach` of p on every axis (and some more), row
+  // after row, until f returns true; returns whether it did. q is the sample or periodic
+  // image stored there, so callers measure plain Euclidean distances; `cell` names the cell
+  // for visit_cell(). The box is always `width` cells a side, the most a range of 2 reach
+  // can touch. Its occupied cells are found from a bit per cell, all rows in one mask, so
+  // the loop runs once per sample with a single hard-to-guess exit.
   template <class F>
   bool visit(const double* p, double reach, F&& f) const {
-    const int width = span(reach);
-    const std::size_t first = corner(p, reach, width);
-    if constexpr (N == 1) {
-      for (std::size_t id = first; id < first + std::size_t(width); ++id)
+    const int width = span(reach), rows = N == 1 ? 1 : width;
+    const std::size_t first = corner(p, reach, width), step = stride_[N - 1];
+    if (width <= 8) {
+      uint64_t mask = 0;  // row r of the box in bits 8r .. 8r + width - 1
+      for (int r = 0; r < rows; ++r) mask |= occupied_bits(first + std::size_t(r) * step, width) << (8 * r);
+      for (; mask != 0; mask &= mask - 1) {
+        const int b = std::countr_zero(mask);
+        const std::size_t id = first + std::size_t(b >> 3) * step + std::size_t(b & 7);
         if (f(static_cast<const double*>(cells_[id].x), uint32_t(id))) return true;
-    } else {
-      for (int r = 0; r < width; ++r)
-        for (std::size_t id = first + std::size_t(r) * stride_[1], end = id + std::size_t(width); id < end; ++id)
-          if (f(static_cast<const double*>(cells_[id].x), uint32_t(id))) return true;
+      }
+      return false;
     }
+    // A box wider than 8 cells (a grid of a few cells): every cell, an empty one as its far
+    // point.
+    for (int r = 0; r < rows; ++r)
+      for (std::size_t id = first + std::size_t(r) * step, end = id + std::size_t(width); id < end; ++id)
+        if (f(static_cast<const double*>(cells_[id].x), uint32_t(id))) return true;
     return false;
   }
 
@@ -111,6 +121,13 @@ class GamitoGhostGrid {
     double x[N];  // empty: kFar
   };
 
+  // The occupancy bits of cells id .. id + width - 1 (width <= 64), lowest first.
+  uint64_t occupied_bits(std::size_t id, int width) const {
+    const std::size_t word = id >> 6;
+    const unsigned __int128 both = static_cast<unsigned __int128>(occupied_[word + 1]) << 64 | occupied_[word];
+    return uint64_t(both >> (id & 63)) & (width >= 64 ? ~uint64_t(0) : (uint64_t(1) << width) - 1);
+  }
+
   int span(double reach) const { return std::min(int(2.0 * reach * res_) + 2, side_); }
 
   // The first cell of the box that visit(p, reach) reads.
@@ -131,6 +148,7 @@ class GamitoGhostGrid {
   bool periodic_;
   std::size_t stride_[N];
   std::vector<Cell> cells_;
+  std::vector<uint64_t> occupied_;  // a bit per cell: holds a sample (or image)
 };
 
 }  // namespace pdrt

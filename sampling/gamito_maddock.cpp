@@ -247,7 +247,7 @@ class GamitoSampler {
         stride *= res_;
       }
       if (inside) {
-        __builtin_prefetch(&group_[base]);
+        __builtin_prefetch(groups_identity_ ? static_cast<const void*>(cells_.data() + base) : &group_[base]);
         u.base[u.count] = uint32_t(base);
         u.image[u.count++] = image;
       }
@@ -266,7 +266,7 @@ class GamitoSampler {
     for (const Pending& u : updates_[0]) {
       if (flush) prune(u);
       else
-        for (int i = 0; i < u.count; ++i) __builtin_prefetch(cells_.data() + group_[u.base[i]]);
+        for (int i = 0; i < u.count; ++i) __builtin_prefetch(cells_.data() + group_first(u.base[i]));
     }
     if (!flush) updates_[0].swap(updates_[1]);
     updates_[0].clear();
@@ -279,7 +279,7 @@ class GamitoSampler {
         uint32_t code = u.image[i] >> (2 * k) & 3u;
         s[k] = u.x[k] + (code == 1 ? 1.0 : code == 2 ? -1.0 : 0.0);
       }
-      for (std::size_t j = group_[u.base[i]]; j < group_[u.base[i] + 1]; ++j) {
+      for (std::size_t j = group_first(u.base[i]); j < group_first(u.base[i] + 1); ++j) {
         if (cells_.dead(j)) continue;
         if (covered(cells_[j], s)) {
           cells_.kill(j);
@@ -312,6 +312,10 @@ class GamitoSampler {
   // Where the cells of each level-0 cell start in cells_ (they are contiguous, in scanline
   // order of their level-0 cell); rebuilt whenever the slots move.
   void index_groups() {
+    // At level 0, until the first compaction, slot b is level-0 cell b: no index to build
+    // or read.
+    groups_identity_ = level_ == 0 && cells_.slots() + 1 == group_.size();
+    if (groups_identity_) return;
     std::size_t next = 0;  // first level-0 cell whose start is not written yet
     for (std::size_t i = 0; i < cells_.slots(); ++i) {
       std::size_t base = 0, stride = 1;
@@ -320,6 +324,8 @@ class GamitoSampler {
     }
     while (next < group_.size()) group_[next++] = uint32_t(cells_.slots());
   }
+
+  std::size_t group_first(std::size_t b) const { return groups_identity_ ? b : group_[b]; }
 
   // Plain Euclidean: the grid hands out periodic images.
   static double distance2(const double* a, const double* b) {
@@ -509,6 +515,7 @@ class GamitoSampler {
   int level_ = 0, last_ = 0;
   std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
   std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
+  bool groups_identity_ = false;  // group_[b] would be b (index_groups())
   // The samples reaching the level-0 cell; the entries from kMaxNear on name no sample.
   std::vector<Near> base_near_ = std::vector<Near>(2 * kMaxNear, Near{{}, Cell::kNone});
   int base_count_ = 0;

@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_allocator.h"
+
 namespace pdrt {
 
 template <int N>
@@ -94,7 +96,7 @@ class GamitoActiveCells {
   }
 
  private:
-  std::vector<Cell> cells_, next_;
+  std::vector<Cell, HugePageAllocator<Cell>> cells_, next_;
   std::size_t live_ = 0;
 };
 

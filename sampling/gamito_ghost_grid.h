@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_allocator.h"
+
 namespace pdrt {
 
 template <int N>
@@ -147,7 +149,7 @@ class GamitoGhostGrid {
   int res_, pad_, side_;
   bool periodic_;
   std::size_t stride_[N];
-  std::vector<Cell> cells_;
+  std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<uint64_t> occupied_;  // a bit per cell: holds a sample (or image)
 };
 

@@ -19,6 +19,7 @@
 #include "gamito_active_cells.h"
 #include "gamito_ghost_grid.h"
 #include "gamito_sample_grid.h"
+#include "huge_page_allocator.h"
 #include "two_disk_cover.h"
 #include "generator.h"
 #include "rng.h"
@@ -514,7 +515,7 @@ class GamitoSampler {
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
   std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
-  std::vector<uint32_t> group_;  // per level-0 cell, the first slot of its cells (index_groups())
+  std::vector<uint32_t, HugePageAllocator<uint32_t>> group_;  // per level-0 cell, the first slot of its cells (index_groups())
   bool groups_identity_ = false;  // group_[b] would be b (index_groups())
   // The samples reaching the level-0 cell; the entries from kMaxNear on name no sample.
   std::vector<Near> base_near_ = std::vector<Near>(2 * kMaxNear, Near{{}, Cell::kNone});

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "huge_page_allocator.h"
+
 namespace pdrt {
 
 template <int N>
@@ -157,7 +159,7 @@ class GamitoSampleGrid {
   bool periodic_;
   std::size_t stride_[N];
   mutable std::vector<Axis> axes_[N];  // visit()'s per-axis ranges
-  std::vector<Cell> cells_;
+  std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<Cell> overflow_;
 };
 

@@ -5,8 +5,8 @@
 // more dimensions). The grid has a border of ghost cells as deep as the widest query: on
 // the torus they hold the periodic images of the samples near the opposite side (§4.5),
 // inside walls they stay empty. Every query is then one plain box of cells, with no
-// wrapping, image shifts or clamping, and an empty cell holds a point so far away that no
-// disk reaches it, so a query runs without a branch per cell.
+// wrapping, image shifts or clamping, and a bit per cell says which cells of the box hold
+// a sample, so a query reads only those.
 #include <algorithm>
 #include <bit>
 #include <cmath>

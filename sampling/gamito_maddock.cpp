@@ -6,7 +6,8 @@
 // Generate (§4.1) is one uniform index, exact in integer units of the cell volume. The
 // leaves start as a background grid of cells at most d / sqrt(n) wide (a cell holding a
 // sample is inside its disk), and accepted samples live in a grid of their own
-// (GamitoSampleGrid) that answers the paper's per-leaf sample lists.
+// (GamitoGhostGrid in 1-D/2-D, GamitoSampleGrid above) that answers the paper's per-leaf
+// sample lists.
 //
 // Deviation from the paper, documented in docs/sampling.md: a failed sample does not
 // subdivide its own leaf (§4.2). Darts are thrown in rounds; when a round at the current

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fast_floor.h"
 #include "huge_page_allocator.h"
 
 namespace pdrt {
@@ -140,11 +141,6 @@ class GamitoGhostGrid {
     return id;
   }
 
-  // floor() as an int without a libm call (x is a few cells around the unit cube).
-  static int floor_int(double x) {
-    int i = int(x);
-    return i - int(x < double(i));
-  }
 
   int res_, pad_, side_;
   bool periodic_;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fast_floor.h"
 #include "huge_page_allocator.h"
 
 namespace pdrt {
@@ -135,11 +136,6 @@ class GamitoSampleGrid {
   uint32_t cell_of(const double* p) const { return uint32_t(index(p)); }
 
  private:
-  // floor() as an int without a libm call (x is a few cells around the unit cube).
-  static int floor_int(double x) {
-    int i = int(x);
-    return i - int(x < double(i));
-  }
   struct Cell {
     double x[N] = {-1.0};  // x[0] < 0: empty
     int32_t more = -1;     // the cell's previous sample in overflow_

@@ -17,15 +17,26 @@ const std::vector<Integrand>& standard_integrands() {
   return list;
 }
 
-double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int trials, Family family) {
+namespace {
+
+// RMS error against `exact` of the N-sample mean of value(pixel stream t, sample i) over
+// `trials` pixel streams.
+template <class Value>
+double rmse_over_trials(int64_t n, int trials, double exact, Value&& value) {
   double err2 = 0.0;
   for (int t = 0; t < trials; ++t) {
     double sum = 0.0;
-    for (int64_t i = 0; i < n; ++i) sum += f.f(s.get_2d(t % 64, t / 64, i, family, 0));
-    double e = sum / double(n) - f.exact;
+    for (int64_t i = 0; i < n; ++i) sum += value(t, i);
+    double e = sum / double(n) - exact;
     err2 += e * e;
   }
   return std::sqrt(err2 / trials);
+}
+
+}  // namespace
+
+double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int trials, Family family) {
+  return rmse_over_trials(n, trials, f.exact, [&](int t, int64_t i) { return f.f(s.get_2d(t % 64, t / 64, i, family, 0)); });
 }
 
 const std::vector<Integrand1D>& time_integrands() {
@@ -37,14 +48,7 @@ const std::vector<Integrand1D>& time_integrands() {
 }
 
 double integration_rmse_1d(const Sampler& s, const Integrand1D& f, int64_t n, int trials) {
-  double err2 = 0.0;
-  for (int t = 0; t < trials; ++t) {
-    double sum = 0.0;
-    for (int64_t i = 0; i < n; ++i) sum += f.f(s.get_1d(t % 64, t / 64, i, Family::Time, 0));
-    double e = sum / double(n) - f.exact;
-    err2 += e * e;
-  }
-  return std::sqrt(err2 / trials);
+  return rmse_over_trials(n, trials, f.exact, [&](int t, int64_t i) { return f.f(s.get_1d(t % 64, t / 64, i, Family::Time, 0)); });
 }
 
 }  // namespace pdrt

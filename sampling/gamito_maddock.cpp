@@ -371,7 +371,6 @@ class GamitoSampler {
   void subdivide() {
     const double w = width(), h = 0.5 * w, base_w = 1.0 / double(res_);
     uint32_t base[N] = {Cell::kDead};
-    int& base_count = base_count_;
     cells_.subdivide([&](const Cell& parent, Cell* kids) {
       bool same = true;
       for (int k = 0; k < N; ++k) same &= (parent.c[k] >> level_) == base[k];
@@ -382,14 +381,14 @@ class GamitoSampler {
           lo[k] = double(base[k]) * base_w;
           centre[k] = lo[k] + 0.5 * base_w;
         }
-        base_count = 0;
+        base_count_ = 0;
         grid_.visit(centre, d_ + 0.5 * base_w, [&](const double* s, uint32_t id) {
           // Without branches: every sample is written, the count moves on for those that
           // reach (entries kMaxNear and on are scratch; the last one stays kNone).
-          Near& at = base_near_[std::min(base_count, kMaxNear)];
+          Near& at = base_near_[std::min(base_count_, kMaxNear)];
           std::copy(s, s + N, at.x);
           at.id = id;
-          base_count += int(near2(lo, base_w, s) < d2_) & int(base_count < kMaxNear);
+          base_count_ += int(near2(lo, base_w, s) < d2_) & int(base_count_ < kMaxNear);
           return false;
         });
       }
@@ -406,7 +405,7 @@ class GamitoSampler {
         std::fill(kids[j].near, kids[j].near + Cell::kWitnesses, Cell::kNone);
       }
       uint32_t alive = ~uint32_t(0) >> (32 - Cells::kKids);
-      for (int i = 0; i < base_count && alive != 0; ++i) {
+      for (int i = 0; i < base_count_ && alive != 0; ++i) {
         const double* s = base_near_[i].x;
         double parent_near = 0.0;
         for (int k = 0; k < N; ++k) {

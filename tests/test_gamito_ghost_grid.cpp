@@ -1,6 +1,7 @@
 // GamitoGhostGrid against brute force: a query must hand out every sample (or, on the
 // torus, its nearest image) within the reach, whatever the query's place, borders and
 // corners included.
+#include "distance.h"
 #include "gamito_ghost_grid.h"
 #include "rng.h"
 
@@ -20,15 +21,7 @@ std::vector<std::array<double, 2>> darts(double d, bool periodic, Rng& rng) {
   for (int t = 0; t < 20000; ++t) {
     const std::array<double, 2> p = {rng.uniform(), rng.uniform()};
     bool ok = true;
-    for (const auto& q : pts) {
-      double s = 0.0;
-      for (int k = 0; k < 2; ++k) {
-        double a = std::abs(p[k] - q[k]);
-        if (periodic) a = std::min(a, 1.0 - a);
-        s += a * a;
-      }
-      ok &= s >= d * d;
-    }
+    for (const auto& q : pts) ok &= distance_sq(p.data(), q.data(), 2, periodic) >= d * d;
     if (ok) pts.push_back(p);
   }
   return pts;
@@ -46,15 +39,8 @@ void expect_queries_match_brute_force(bool periodic) {
     double q[2] = {rng.uniform(), rng.uniform()};
     if (t % 3 == 0) q[t % 2] = (t / 2) % 2 ? 0.0 : std::nextafter(1.0, 0.0);
     std::set<std::size_t> want;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      double s = 0.0;
-      for (int k = 0; k < 2; ++k) {
-        double a = std::abs(q[k] - pts[i][k]);
-        if (periodic) a = std::min(a, 1.0 - a);
-        s += a * a;
-      }
-      if (s < reach * reach) want.insert(i);
-    }
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (distance_sq(q, pts[i].data(), 2, periodic) < reach * reach) want.insert(i);
     std::set<std::size_t> got;
     grid.visit(q, reach, [&](const double* s, uint32_t) {
       const double dx = q[0] - s[0], dy = q[1] - s[1];

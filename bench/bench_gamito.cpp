@@ -1,6 +1,6 @@
 // Gamito–Maddock maximal sampling speed, count mode, non-periodic. Targets (single core,
 // Release): 2-D 10^5 points <= 0.2 s and 10^6 points <= 2 s.
-#include "generator.h"
+#include "sampling/generators/generator.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,6 +1,6 @@
 // Speed of the point-set generators (issue targets: bridson 2-D >= 2 M points/s on one core;
 // mccool 2-D 4096 points <= 100 ms). Run: ./build/bench/bench_generators
-#include "generator.h"
+#include "sampling/generators/generator.h"
 
 #include <benchmark/benchmark.h>
 

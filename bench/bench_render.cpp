@@ -1,11 +1,11 @@
 // Issue 4 speed target: on a >= 500k-triangle scene, pdrt's rays per second (primary +
 // shadow, max_depth 1) against raw rtcIntersect1 + rtcOccluded1 throughput on the same
 // scene, camera, resolution and threads. Both report rays/s as items_per_second.
-#include "embree_scene.h"
-#include "renderer.h"
-#include "rng.h"
+#include "renderer/render/embree_scene.h"
+#include "renderer/render/renderer.h"
+#include "sampling/core/rng.h"
 #include "tessellated_scene.h"
-#include "thin_lens_camera.h"
+#include "renderer/render/thin_lens_camera.h"
 
 #include <benchmark/benchmark.h>
 #include <tbb/enumerable_thread_specific.h>

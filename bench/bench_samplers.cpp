@@ -1,8 +1,8 @@
 // Sampler lookup cost (issue 3 target: <= 10 ns per 2-D poisson sample on one core), both
 // random access through Sampler::get_2d and the renderer's sequential PixelSample path, and
 // default table generation time (<= 10 s on one core).
-#include "poisson_sampler.h"
-#include "sample_table.h"
+#include "sampling/samplers/poisson_sampler.h"
+#include "sampling/samplers/sample_table.h"
 
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>

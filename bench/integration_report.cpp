@@ -2,8 +2,8 @@
 // (lens family) and two 1-D ones (time family) at N = 16..4096, over 256 independent pixel
 // streams, and the log-log slope of RMSE vs N.
 // Not a timed test: run ./build/bench/integration_report and read the tables it prints.
-#include "integration_error.h"
-#include "poisson_sampler.h"
+#include "sampling/analysis/integration_error.h"
+#include "sampling/samplers/poisson_sampler.h"
 
 #include <cmath>
 #include <cstdio>

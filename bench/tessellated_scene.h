@@ -1,7 +1,7 @@
 #pragma once
 // The benchmark scene: a finely tessellated sphere (>= 500k triangles) on a ground quad
 // under a constant white environment, shared by bench_render and make_bench_scene.
-#include "scene_desc.h"
+#include "renderer/scene/scene_desc.h"
 
 #include <cmath>
 

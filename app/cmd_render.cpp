@@ -1,0 +1,184 @@
+// `pdrt render`: the main job — render a scene file to an image (plus AOVs and stats).
+#include "renderer/render/adaptive_metric.h"
+#include "sampling/core/atomic_file.h"
+#include "app/commands.h"
+#include "sampling/core/errors.h"
+#include "renderer/render/image_output.h"
+#include "renderer/render/renderer.h"
+#include "renderer/scene/scene_loader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace pdrt::cli {
+
+namespace {
+
+std::atomic<bool> g_cancel{false};
+extern "C" void on_sigint(int) { g_cancel.store(true); }
+
+// Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
+// power-of-two bins [2^k, 2^(k+1)); the first bin, [0, 2), also holds pixels an interrupted
+// render left without samples.
+nlohmann::json spp_distribution(const std::vector<float>& samples) {
+  std::vector<float> s = samples;
+  std::sort(s.begin(), s.end());
+  nlohmann::json j;
+  if (s.empty()) return j;
+  auto q = [&](double f) { return s[std::min(s.size() - 1, std::size_t(f * double(s.size())))]; };
+  j["min"] = s.front();
+  j["p50"] = q(0.5);
+  j["p90"] = q(0.9);
+  j["p99"] = q(0.99);
+  j["max"] = s.back();
+  std::vector<int64_t> count;
+  for (float v : s) {
+    const std::size_t k = v < 2 ? 0 : std::size_t(std::ilogb(v));
+    if (k >= count.size()) count.resize(k + 1, 0);
+    ++count[k];
+  }
+  nlohmann::json bins = nlohmann::json::array();
+  for (std::size_t k = 0; k < count.size(); ++k)
+    if (count[k])
+      bins.push_back({{"from", k == 0 ? 0.0 : std::ldexp(1.0, int(k))}, {"below", std::ldexp(1.0, int(k) + 1)},
+                      {"pixels", count[k]}});
+  j["histogram"] = bins;
+  return j;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  struct Opts {
+    std::string scene, out, stats, sampler;
+    std::optional<int> spp, width, height;
+    std::optional<uint64_t> seed;
+    std::optional<int> min_spp, max_spp;
+    std::optional<double> threshold;
+    std::string metric, variance;
+    int threads = 0;
+    bool quiet = false, adaptive = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
+  cmd->add_option("scene", o->scene, "Scene JSON file")->required();
+  cmd->add_option("--out,-o", o->out, "Output image: .exr (linear + AOVs), .png/.jpg (sRGB), .tif (linear)")->required();
+  cmd->add_option("--spp", o->spp, "Samples per pixel (overrides sampler.spp)");
+  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | sobol (overrides sampler.type)");
+  cmd->add_option("--seed", o->seed, "Sampler seed (overrides sampler.seed)");
+  cmd->add_option("--threads,-t", o->threads, "Worker threads (0 = all cores)")->default_val(0);
+  cmd->add_option("--width", o->width, "Image width in pixels (overrides film.width)");
+  cmd->add_option("--height", o->height, "Image height in pixels (overrides film.height)");
+  cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
+  cmd->add_flag("--adaptive", o->adaptive,
+                "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
+                "--max-spp option turns it on too)");
+  cmd->add_option("--min-spp", o->min_spp, "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
+  cmd->add_option("--max-spp", o->max_spp, "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
+  cmd->add_option("--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
+  cmd->add_option("--adaptive-metric", o->metric, "Adaptive: error-per-sample | relative-error | contrast");
+  cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
+  cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
+  cmd->callback([o] {
+    // Validate every argument before loading or rendering anything.
+    if (o->spp && *o->spp < 1) throw UsageError("--spp must be >= 1, got " + std::to_string(*o->spp));
+    if (o->width && *o->width < 1) throw UsageError("--width must be >= 1, got " + std::to_string(*o->width));
+    if (o->height && *o->height < 1) throw UsageError("--height must be >= 1, got " + std::to_string(*o->height));
+    if (o->width && *o->width > 65536) throw UsageError("--width must be <= 65536, got " + std::to_string(*o->width));
+    if (o->height && *o->height > 65536) throw UsageError("--height must be <= 65536, got " + std::to_string(*o->height));
+    if (o->threads < 0) throw UsageError("--threads must be >= 0, got " + std::to_string(o->threads));
+    if (!o->sampler.empty()) {
+      bool known = false;
+      for (const auto& n : sampler_names()) known = known || n == o->sampler;
+      if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (random, jitter, poisson, sobol)");
+    }
+    if (o->min_spp && *o->min_spp < 1) throw UsageError("--min-spp must be >= 1, got " + std::to_string(*o->min_spp));
+    if (o->max_spp && *o->max_spp < 1) throw UsageError("--max-spp must be >= 1, got " + std::to_string(*o->max_spp));
+    if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
+      throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
+    if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
+    if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
+    check_image_extension(o->out);
+
+    SceneDesc scene = load_scene(o->scene);
+    AdaptiveDesc& ad = scene.sampler.adaptive;
+    ad.enabled = ad.enabled || o->adaptive || o->min_spp || o->max_spp || o->threshold || !o->metric.empty() ||
+                 !o->variance.empty();
+    if (o->min_spp) ad.min_spp = *o->min_spp;
+    if (o->max_spp) ad.max_spp = *o->max_spp;
+    if (o->threshold) ad.threshold = *o->threshold;
+    if (!o->metric.empty()) ad.metric = o->metric;
+    if (!o->variance.empty()) ad.variance = o->variance;
+    if (ad.enabled && ad.min_spp > ad.max_spp)
+      throw UsageError("adaptive: min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" +
+                       std::to_string(ad.max_spp) + ")");
+    if (o->spp) scene.sampler.spp = *o->spp;
+    if (!o->sampler.empty()) scene.sampler.type = o->sampler;
+    if (o->seed) scene.sampler.seed = *o->seed;
+    if (o->width) scene.film.width = *o->width;
+    if (o->height) scene.film.height = *o->height;
+    check_film_memory(scene.film.width, scene.film.height);
+    check_writable(o->out);
+    if (!o->stats.empty()) check_writable(o->stats);
+
+    auto sampler = make_scene_sampler(scene.sampler);
+    RenderOptions ro;
+    ro.threads = o->threads;
+    ro.quiet = o->quiet;
+    ro.cancel = &g_cancel;
+    auto previous = std::signal(SIGINT, on_sigint);
+    RenderResult r = render(scene, *sampler, ro);
+    std::signal(SIGINT, previous);
+
+    Metadata md = {{"Software", std::string("pdrt ") + PDRT_VERSION},
+                   {"pdrt:version", PDRT_VERSION},
+                   {"pdrt:scene", o->scene},
+                   {"pdrt:sampler", scene.sampler.type},
+                   {"pdrt:spp", std::to_string(scene.sampler.spp)},
+                   {"pdrt:seed", std::to_string(scene.sampler.seed)},
+                   {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
+                   {"pdrt:partial", r.stats.partial ? "true" : "false"}};
+    if (ad.enabled)
+      md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
+                                         ", " + ad.metric + " " + std::to_string(effective_threshold(ad))});
+    write_image(o->out, r.image, md);
+    if (!o->stats.empty()) {
+      nlohmann::json j;
+      j["scene"] = o->scene;
+      j["sampler"] = scene.sampler.type;
+      j["seed"] = scene.sampler.seed;
+      j["width"] = scene.film.width;
+      j["height"] = scene.film.height;
+      j["spp"] = scene.sampler.spp;
+      j["seconds"] = r.stats.seconds;
+      j["rays"] = r.stats.rays;
+      j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
+      j["samples"] = r.stats.samples;
+      j["spp_mean"] = r.stats.spp_mean;
+      j["spp_distribution"] = spp_distribution(r.image.samples);
+      if (ad.enabled)
+        j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
+                         {"metric", ad.metric},       {"threshold", effective_threshold(ad)},
+                         {"variance", ad.variance},   {"rounds", r.stats.adaptive_rounds}};
+      j["triangles"] = r.stats.triangles;
+      j["threads"] = o->threads;
+      j["partial"] = r.stats.partial;
+      write_file_atomically(o->stats, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
+    }
+    if (!o->quiet)
+      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %.1f spp, %.2f s, %.2f Mrays/s%s\n", o->out.c_str(),
+                   scene.film.width, scene.film.height, scene.sampler.type.c_str(), r.stats.spp_mean, r.stats.seconds,
+                   r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
+                   r.stats.partial ? " (interrupted: partial image)" : "");
+    if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted; wrote the partial image " + o->out);
+  });
+}
+
+}  // namespace pdrt::cli

@@ -1,0 +1,56 @@
+// `pdrt tables`: (re)generate the precomputed hierarchical Poisson-disk tables.
+#include "sampling/core/atomic_file.h"
+#include "app/commands.h"
+#include "sampling/core/errors.h"
+#include "sampling/core/progress.h"
+#include "sampling/samplers/sample_table.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace pdrt::cli {
+
+void add_tables_command(CLI::App& app) {
+  struct Opts {
+    std::string out;
+    uint64_t seed = 1;
+    bool quiet = false;
+  };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("tables", "Generate the hierarchical Poisson-disk sample tables (one file per family).");
+  cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
+  cmd->add_option("--seed,-s", o->seed, "Seed of the table set")->default_val(1);
+  cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
+  cmd->callback([o] {
+    std::filesystem::path dir(o->out);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(o->out + ": cannot create directory (" + ec.message() + ")");
+    for (TableParams p : default_table_params()) {
+      p.seed = o->seed;
+      check_writable(dir / table_file_name(p.family));
+    }
+    double total = 0;
+    for (const TableParams& p : default_table_params()) total += p.tables;
+    Progress progress("pdrt tables", total, o->quiet);
+    for (TableParams p : default_table_params()) {
+      p.seed = o->seed;
+      auto t0 = std::chrono::steady_clock::now();
+      SampleTable t = generate_table(p, &progress);
+      write_table(dir / table_file_name(p.family), t);
+      double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      progress.clear_line();
+      if (!o->quiet)
+        std::fprintf(stderr, "pdrt tables: %-5s %u tables x %u points%s, %.2f MiB, %.2f s\n", family_name(p.family),
+                     t.table_count(), p.points,
+                     p.family == Family::Pixel ? (" per pixel of a " + std::to_string(p.tile) + "x" +
+                                                  std::to_string(p.tile) + " tile").c_str()
+                                               : "",
+                     t.memory_bytes() / 1048576.0, secs);
+    }
+  });
+}
+
+}  // namespace pdrt::cli

@@ -1,0 +1,405 @@
+#include "renderer/compare/compare.h"
+
+#include "renderer/render/adaptive_metric.h"
+#include "sampling/core/atomic_file.h"
+#include "renderer/compare/convergence.h"
+#include "sampling/core/errors.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/render/image_output.h"
+#include "renderer/render/renderer.h"
+#include "sampling/samplers/sampler.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+namespace pdrt {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+fs::path default_cache_dir() {
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "pdrt" / "references";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "pdrt" / "references";
+  return fs::temp_directory_path() / "pdrt-references";
+}
+
+// A perceptually ordered dark-to-bright colour ramp for error heat maps.
+Vec3 heat(float t) {
+  static const Vec3 stops[] = {{0, 0, 0.02f}, {0.33f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f}, {0.98f, 0.55f, 0.04f},
+                               {0.99f, 1.0f, 0.64f}};
+  t = std::clamp(t, 0.0f, 1.0f) * 4;
+  int i = std::min(int(t), 3);
+  return lerp(t - i, stops[i], stops[i + 1]);
+}
+
+std::vector<float> display_rgb(const Image& im) {
+  std::vector<float> out(im.rgb.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = linear_to_srgb(im.rgb[i]);
+  return out;
+}
+
+struct Run {
+  std::string sampler;
+  int spp = 0;
+  double seconds = 0, render_seconds = 0, rmse = 0, relmse = 0, spp_mean = 0;
+  int64_t samples = 0;
+  RadialSpectrum spectrum;
+  Image image;
+  std::string image_file, error_file;
+};
+
+RenderResult render_with(const SceneDesc& s, const CompareOptions& o) {
+  auto sampler = make_scene_sampler(s.sampler);
+  RenderOptions ro;
+  ro.threads = o.threads;
+  ro.quiet = true;
+  return render(s, *sampler, ro);
+}
+
+// The crop window (side c) where the reference has the most detail (sum of gradient norms).
+std::array<int, 3> detail_window(const Image& ref) {
+  const int W = ref.width, H = ref.height, c = std::max(8, std::min(W, H) / 4);
+  std::vector<double> g(std::size_t(W) * H, 0.0);
+  auto L = [&](int x, int y) {
+    std::size_t i = 3 * (std::size_t(y) * W + x);
+    return double(luminance(Vec3(ref.rgb[i], ref.rgb[i + 1], ref.rgb[i + 2])));
+  };
+  for (int y = 0; y + 1 < H; ++y)
+    for (int x = 0; x + 1 < W; ++x) {
+      double a = L(x, y);
+      g[std::size_t(y) * W + x] = std::abs(L(x + 1, y) - a) + std::abs(L(x, y + 1) - a);
+    }
+  std::array<int, 3> best{0, 0, c};
+  double best_v = -1;
+  const int step = std::max(1, c / 4);
+  for (int y0 = 0; y0 + c <= H; y0 += step)
+    for (int x0 = 0; x0 + c <= W; x0 += step) {
+      double v = 0;
+      for (int y = y0; y < y0 + c; ++y)
+        for (int x = x0; x < x0 + c; ++x) v += g[std::size_t(y) * W + x];
+      if (v > best_v) best_v = v, best = {x0, y0, c};
+    }
+  return best;
+}
+
+}  // namespace
+
+void validate_compare_options(const CompareOptions& o) {
+  if (o.samplers.empty()) throw UsageError("--samplers: give at least one sampler");
+  std::set<std::string> seen;
+  for (const auto& s : o.samplers) {
+    const auto& names = sampler_names();
+    if (std::find(names.begin(), names.end(), s) == names.end())
+      throw UsageError("--samplers: unknown sampler \"" + s + "\" (random, jitter, poisson, sobol)");
+    if (!seen.insert(s).second) throw UsageError("--samplers: \"" + s + "\" given twice");
+  }
+  if (o.spp.empty()) throw UsageError("--spp: give at least one sample count");
+  for (std::size_t i = 0; i < o.spp.size(); ++i) {
+    if (o.spp[i] < 1) throw UsageError("--spp: sample counts must be >= 1, got " + std::to_string(o.spp[i]));
+    if (i && o.spp[i] <= o.spp[i - 1]) throw UsageError("--spp: sample counts must increase");
+  }
+  if (!o.adaptive_metric.empty()) require_adaptive_choice("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
+  if (!o.adaptive_variance.empty())
+    require_adaptive_choice("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
+  if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
+  if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
+    throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +
+                     " must be one of the --spp sample counts");
+  if (o.reference_spp < 1) throw UsageError("--reference-spp must be >= 1, got " + std::to_string(o.reference_spp));
+  if (o.reference_spp < 4 * o.spp.back())
+    throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(o.spp.back()) +
+                     "), i.e. >= " + std::to_string(4 * o.spp.back()) + ", got " + std::to_string(o.reference_spp));
+}
+
+fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
+  validate_compare_options(o);
+  std::error_code ec;
+  for (const char* sub : {"", "images", "errors"}) {
+    fs::create_directories(o.out / sub, ec);
+    if (ec) throw InputError((o.out / sub).string() + ": cannot create directory (" + ec.message() + ")");
+  }
+  check_writable(o.out / "results.json");
+  const int W = base.film.width, H = base.film.height;
+  auto say = [&](const std::string& s) {
+    if (!o.quiet) std::fprintf(stderr, "pdrt compare: %s\n", s.c_str());
+  };
+
+  // The reference: another sampler and seed than any test image, cached by content.
+  SceneDesc rs = base;
+  rs.sampler.type = o.reference_sampler;
+  rs.sampler.seed = base.sampler.seed ^ 0x5eedc0ffee123457ull;
+  rs.sampler.spp = o.reference_spp;
+  rs.sampler.adaptive.enabled = false;
+  std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
+                         rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
+                         std::to_string(rs.sampler.seed) + "|" + PDRT_VERSION + "|samplers-v2";  // bump when sampler output changes
+  char key[32];
+  std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text));
+  fs::path cache = (o.cache_dir.empty() ? default_cache_dir() : o.cache_dir) / (std::string("ref-") + key + ".exr");
+  Image ref;
+  bool cached = false;
+  double ref_seconds = 0;
+  if (fs::exists(cache)) {
+    ref = read_image_rgb(cache);
+    cached = ref.width == W && ref.height == H;
+  }
+  if (!cached) {
+    say("rendering the reference (" + rs.sampler.type + ", " + std::to_string(rs.sampler.spp) + " spp) -> " +
+        cache.string());
+    fs::create_directories(cache.parent_path(), ec);
+    RenderResult r = render_with(rs, o);
+    ref = r.image;
+    ref_seconds = r.stats.seconds;
+    write_image(cache, r.image, {{"pdrt:reference", "true"}, {"pdrt:key", key}});
+  } else {
+    say("using the cached reference " + cache.string());
+  }
+  write_display_png(o.out / "images" / "reference.png", W, H, display_rgb(ref));
+
+  std::vector<Run> runs;
+  for (const auto& name : o.samplers)
+    for (int n : o.spp) {
+      SceneDesc s = base;
+      s.sampler.type = name;
+      s.sampler.spp = n;
+      s.sampler.adaptive.enabled = false;
+      RenderResult r = render_with(s, o);
+      Run run;
+      run.sampler = name, run.spp = n;
+      run.seconds = r.stats.seconds;
+      run.render_seconds = r.stats.seconds - r.stats.build_seconds;
+      run.samples = r.stats.samples, run.spp_mean = r.stats.spp_mean;
+      run.rmse = rmse(r.image, ref), run.relmse = relative_mse(r.image, ref);
+      run.spectrum = error_spectrum(r.image, ref);
+      run.image = std::move(r.image);
+      run.image_file = "images/" + name + "-" + std::to_string(n) + ".png";
+      run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
+      write_display_png(o.out / run.image_file, W, H, display_rgb(run.image));
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "%-8s %5d spp  rmse %.5f  relMSE %.5f  %.2f s", name.c_str(), n, run.rmse,
+                    run.relmse, run.seconds);
+      say(buf);
+      runs.push_back(std::move(run));
+    }
+
+  // Heat maps share one scale per sample count (the 99th percentile over the samplers), so
+  // they compare across samplers.
+  for (int n : o.spp) {
+    std::vector<float> all;
+    std::map<std::string, std::vector<float>> maps;
+    for (const Run& r : runs)
+      if (r.spp == n) {
+        maps[r.sampler] = error_map(r.image, ref);
+        all.insert(all.end(), maps[r.sampler].begin(), maps[r.sampler].end());
+      }
+    std::sort(all.begin(), all.end());
+    float scale = std::max(all[std::size_t(0.99 * (all.size() - 1))], 1e-6f);
+    for (const Run& r : runs)
+      if (r.spp == n) {
+        const auto& m = maps[r.sampler];
+        std::vector<float> rgb(3 * m.size());
+        for (std::size_t i = 0; i < m.size(); ++i) {
+          Vec3 c = heat(m[i] / scale);
+          rgb[3 * i] = c.x, rgb[3 * i + 1] = c.y, rgb[3 * i + 2] = c.z;
+        }
+        write_display_png(o.out / r.error_file, W, H, rgb);
+      }
+  }
+
+  // Side-by-side crops of the most detailed region, at every sample count.
+  auto win = detail_window(ref);
+  const int c = win[2], zoom = std::max(1, 128 / c), gap = 4;
+  const int cols = int(o.samplers.size()) + 1, cw = c * zoom, CW = cols * cw + (cols - 1) * gap;
+  json crops = json::array();
+  for (int n : o.spp) {
+    std::vector<float> rgb(std::size_t(3) * CW * cw, 1.0f);
+    auto paste = [&](const Image& im, int col) {
+      for (int y = 0; y < cw; ++y)
+        for (int x = 0; x < cw; ++x) {
+          std::size_t si = 3 * (std::size_t(win[1] + y / zoom) * W + win[0] + x / zoom);
+          std::size_t di = 3 * (std::size_t(y) * CW + col * (cw + gap) + x);
+          for (int k = 0; k < 3; ++k) rgb[di + k] = linear_to_srgb(im.rgb[si + k]);
+        }
+    };
+    int col = 0;
+    for (const auto& name : o.samplers)
+      for (const Run& r : runs)
+        if (r.sampler == name && r.spp == n) paste(r.image, col++);
+    paste(ref, col);
+    std::string file = "images/crops-" + std::to_string(n) + ".png";
+    write_display_png(o.out / file, CW, cw, rgb);
+    crops.push_back({{"spp", n}, {"file", file}});
+  }
+
+  json j;
+  j["scene"] = o.scene_label;
+  j["width"] = W, j["height"] = H;
+  j["seed"] = base.sampler.seed;
+  j["samplers"] = o.samplers;
+  j["spp"] = o.spp;
+  j["reference"] = {{"sampler", rs.sampler.type}, {"spp", rs.sampler.spp},     {"seed", rs.sampler.seed},
+                    {"cached", cached},           {"file", cache.string()},    {"seconds", ref_seconds},
+                    {"image", "images/reference.png"}};
+  j["crop_window"] = {{"x", win[0]}, {"y", win[1]}, {"size", win[2]}, {"zoom", zoom}};
+  j["crops"] = crops;
+  json jr = json::array();
+  for (const Run& r : runs)
+    jr.push_back({{"sampler", r.sampler},
+                  {"spp", r.spp},
+                  {"seconds", r.seconds},
+                  {"render_seconds", r.render_seconds},
+                  {"samples", r.samples},
+                  {"rmse", r.rmse},
+                  {"relmse", r.relmse},
+                  {"image", r.image_file},
+                  {"error_map", r.error_file},
+                  {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}});
+  j["runs"] = jr;
+
+  // Convergence slopes (RMSE ~ spp^slope) and the equal-time view.
+  json slopes, eq_time;
+  double t_lo = 0, t_hi = 1e300;
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> by_time;
+  for (const auto& name : o.samplers) {
+    std::vector<double> x, y, t;
+    for (const Run& r : runs)
+      if (r.sampler == name) x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.render_seconds);
+    slopes[name] = loglog_slope(x, y);
+    t_lo = std::max(t_lo, t.front()), t_hi = std::min(t_hi, t.back());
+    by_time[name] = {t, y};
+  }
+  j["slopes"] = slopes;
+  std::vector<double> grid;
+  if (t_hi > t_lo && t_lo > 0)
+    for (int i = 0; i < 8; ++i) grid.push_back(t_lo * std::pow(t_hi / t_lo, i / 7.0));
+  eq_time["seconds"] = grid;
+  for (const auto& [name, ty] : by_time) {
+    std::vector<double> v;
+    for (double g : grid) v.push_back(loglog_interp(ty.first, ty.second, g));
+    eq_time["rmse"][name] = v;
+  }
+  j["equal_time"] = eq_time;
+
+  // Adaptive refinement: a threshold sweep per sampler, each run compared with uniform
+  // sampling at equal samples, and the samples needed to reach the uniform RMSE at the
+  // target spp. The default threshold's run also gets its image and sample-count map.
+  if (o.adaptive) {
+    json ja = json::array(), sweep = json::array(), target;
+    std::vector<std::string> csv;
+    for (const auto& name : o.samplers) {
+      SceneDesc s = base;
+      s.sampler.type = name;
+      AdaptiveDesc& ad = s.sampler.adaptive;
+      if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
+      ad.min_spp = std::max(2, o.spp.front());
+      ad.max_spp = std::max(ad.min_spp, o.spp.back());
+      if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
+      if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
+      const double base_threshold = o.adaptive_threshold > 0 ? o.adaptive_threshold : effective_threshold(ad);
+      std::vector<double> x, y;
+      const Run* at_target = nullptr;
+      for (const Run& u : runs)
+        if (u.sampler == name) {
+          x.push_back(u.spp_mean), y.push_back(u.rmse);  // traced, like the adaptive mean
+          if (u.spp == o.adaptive_target_spp) at_target = &u;
+        }
+      std::vector<double> cost, err;
+      // k = -4..4, and on (up to 8) while even the cheapest run reaches the target, so that
+      // the crossing is interpolated rather than only bounded.
+      for (int k = -4; k <= 8; ++k) {
+        if (k > 4 && !cost_to_reach(cost, err, at_target->rmse).upper_bound) break;
+        const double threshold = std::ldexp(base_threshold, k);
+        ad.threshold = float(threshold);
+        RenderResult r = render_with(s, o);
+        const double e = rmse(r.image, ref), uniform = loglog_interp(x, y, r.stats.spp_mean);
+        cost.push_back(double(r.stats.samples)), err.push_back(e);
+        sweep.push_back({{"sampler", name},
+                         {"threshold", threshold},
+                         {"samples", r.stats.samples},
+                         {"spp_mean", r.stats.spp_mean},
+                         {"rmse", e},
+                         {"rounds", r.stats.adaptive_rounds},
+                         {"seconds", r.stats.seconds}});
+        char row[200];
+        std::snprintf(row, sizeof row, "%s,%s,%s,%.9g,%lld,%.6g,%.9g,%d,%.4g", name.c_str(), ad.metric.c_str(),
+                      ad.variance.c_str(), threshold, (long long)r.stats.samples, r.stats.spp_mean, e,
+                      r.stats.adaptive_rounds, r.stats.seconds);
+        csv.push_back(row);
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%-8s adaptive t=%.5g: %.1f spp mean, rmse %.5f (uniform at equal samples %.5f)",
+                      name.c_str(), threshold, r.stats.spp_mean, e, uniform);
+        say(buf);
+        if (k != 0) continue;
+        std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
+        write_display_png(o.out / img, W, H, display_rgb(r.image));
+        std::vector<float> rgb(std::size_t(3) * W * H);
+        for (std::size_t i = 0; i < r.image.samples.size(); ++i) {
+          float t = std::log2(std::max(1.0f, r.image.samples[i])) / std::log2(float(ad.max_spp));
+          Vec3 col = heat(t);
+          rgb[3 * i] = col.x, rgb[3 * i + 1] = col.y, rgb[3 * i + 2] = col.z;
+        }
+        write_display_png(o.out / map, W, H, rgb);
+        ja.push_back({{"sampler", name},
+                      {"metric", ad.metric},
+                      {"variance", ad.variance},
+                      {"threshold", threshold},
+                      {"min_spp", ad.min_spp},
+                      {"max_spp", ad.max_spp},
+                      {"rounds", r.stats.adaptive_rounds},
+                      {"spp_mean", r.stats.spp_mean},
+                      {"samples", r.stats.samples},
+                      {"seconds", r.stats.seconds},
+                      {"rmse", e},
+                      {"uniform_rmse_at_equal_samples", std::isnan(uniform) ? json(nullptr) : json(uniform)},
+                      {"image", img},
+                      {"sample_map", map}});
+      }
+      // Traced samples on both sides: the filter's support skips the same share of either.
+      const CostToReach c = cost_to_reach(cost, err, at_target->rmse);
+      const double ratio = c.cost / double(at_target->samples);
+      target[name] = {{"uniform_samples", at_target->samples},
+                      {"uniform_rmse", at_target->rmse},
+                      {"adaptive_samples", std::isnan(c.cost) ? json(nullptr) : json(c.cost)},
+                      {"ratio", std::isnan(ratio) ? json(nullptr) : json(ratio)},
+                      {"upper_bound", c.upper_bound}};
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "%-8s adaptive reaches the uniform %d-spp RMSE %.5f with %s%.3f of its samples",
+                    name.c_str(), o.adaptive_target_spp, at_target->rmse, c.upper_bound ? "<= " : "", ratio);
+      say(buf);
+    }
+    j["adaptive"] = ja;
+    j["adaptive_sweep"] = sweep;
+    j["adaptive_target"] = {{"spp", o.adaptive_target_spp}, {"samplers", target}};
+    j["adaptive_csv"] = "adaptive.csv";
+    j["adaptive_plot"] = "adaptive_vs_spp.png";
+    write_file_atomically(o.out / "adaptive.csv", [&](std::ostream& os) {
+      os << "sampler,metric,variance,threshold,samples,spp_mean,rmse,rounds,seconds\n";
+      for (const auto& row : csv) os << row << "\n";
+    });
+  }
+
+  write_file_atomically(o.out / "results.csv", [&](std::ostream& os) {
+    os << "sampler,spp,seconds,render_seconds,samples,rmse,relmse\n";
+    for (const Run& r : runs)
+      os << r.sampler << "," << r.spp << "," << r.seconds << "," << r.render_seconds << "," << r.samples << ","
+         << r.rmse << "," << r.relmse << "\n";
+  });
+  fs::path results = o.out / "results.json";
+  write_file_atomically(results, [&](std::ostream& os) { os << j.dump(1) << "\n"; });
+  return results;
+}
+
+}  // namespace pdrt

@@ -1,0 +1,37 @@
+#pragma once
+// `pdrt compare`: renders a scene with several samplers at several sample counts, measures
+// each image's error against an independent high-spp reference, and writes a report
+// (results.json/csv, images, heat maps, crops, plots, index.html).
+#include "renderer/scene/scene_desc.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pdrt {
+
+struct CompareOptions {
+  std::vector<std::string> samplers{"random", "jitter", "poisson", "sobol"};
+  std::vector<int> spp{1, 4, 16, 64, 256};
+  bool adaptive = false;
+  double adaptive_threshold = 0;    // > 0: the centre of the threshold sweep (else the scene's, else the metric's default)
+  std::string adaptive_metric;      // non-empty overrides the metric
+  std::string adaptive_variance;    // non-empty overrides the variance estimator
+  int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
+  int reference_spp = 4096;
+  std::string reference_sampler = "sobol";
+  int threads = 0;
+  bool quiet = false;
+  std::filesystem::path out;
+  std::filesystem::path cache_dir;  // reference cache; empty = $XDG_CACHE_HOME/pdrt or ~/.cache/pdrt
+  std::string scene_label;          // for the report
+  std::string scene_content;        // the scene file's bytes, part of the reference cache key
+};
+
+// Validates options (UsageError) before any rendering.
+void validate_compare_options(const CompareOptions& o);
+
+// Renders and writes everything except the plots; returns the path of results.json.
+std::filesystem::path run_compare(const SceneDesc& scene, const CompareOptions& o);
+
+}  // namespace pdrt

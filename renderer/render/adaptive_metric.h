@@ -1,0 +1,45 @@
+#pragma once
+// When a pixel of an adaptive render has converged: the metrics of `sampler.adaptive.metric`,
+// their default thresholds, and the `variance` estimators they read (docs/renderer.md).
+#include "renderer/render/film.h"
+#include "renderer/scene/scene_desc.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace pdrt {
+
+// The accepted names, in the order messages list them.
+inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-per-sample", "relative-error",
+                                                                        "contrast"};
+inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
+
+// Throws UsageError "`flag` must be one of a, b, c, got "value"" unless `value` is a name.
+void require_adaptive_choice(const std::string& flag, const std::string& value,
+                             std::initializer_list<const char*> names);
+
+// Each metric's own default: error-per-sample 1/16, relative-error 0.01, contrast 0.4.
+double default_threshold(const std::string& metric);
+
+// The threshold in force: the scene's (or command line's) if given, else the metric's default.
+double effective_threshold(const AdaptiveDesc& ad);
+
+class AdaptiveMetric {
+ public:
+  explicit AdaptiveMetric(const AdaptiveDesc& ad);
+
+  // error-per-sample compares against the image's mean luminance; call before converged()
+  // with the mean over all pixels of the current round.
+  void set_image_mean(double mean_luminance) { image_mean_ = mean_luminance; }
+  bool needs_image_mean() const { return kind_ == Kind::ErrorPerSample; }
+
+  bool converged(const PixelAccum& p) const;
+
+ private:
+  enum class Kind { ErrorPerSample, RelativeError, Contrast } kind_;
+  bool halves_;
+  double threshold_;
+  double image_mean_ = 0;
+};
+
+}  // namespace pdrt

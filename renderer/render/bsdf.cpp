@@ -1,0 +1,277 @@
+#include "renderer/render/bsdf.h"
+
+#include "renderer/render/fresnel.h"
+#include "renderer/render/microfacet_ggx.h"
+
+namespace pdrt {
+namespace {
+
+bool same_hemisphere_up(const Vec3& wo, const Vec3& wi) { return wo.z > 0 && wi.z > 0; }
+
+Vec3 mirror_z(const Vec3& w) { return {-w.x, -w.y, w.z}; }
+
+// The microfacet normal that refracts wo (upper side) into wi (lower side) for relative index eta:
+// the generalised half vector of Walter 2007 eq. 16, oriented up. In double, with wo and wi
+// renormalised: at grazing wo.m, 1 - F depends steeply on wo.m, and a float's 1e-7 error in
+// |w| would otherwise break Snell's law at m by 1e-4 and with it reciprocity.
+struct Refraction {
+  Vec3 m;
+  double wo_m, wi_m;  // wo_m > 0 > wi_m
+};
+bool refraction_normal(const Vec3& wo, const Vec3& wi, double eta, Refraction* r) {
+  double o[3], i[3], h[3], lo = 0, li = 0, len2 = 0;
+  for (int k = 0; k < 3; ++k) lo += double(wo[k]) * wo[k], li += double(wi[k]) * wi[k];
+  lo = std::sqrt(lo), li = std::sqrt(li);
+  for (int k = 0; k < 3; ++k) {
+    o[k] = wo[k] / lo, i[k] = wi[k] / li;
+    h[k] = o[k] + eta * i[k], len2 += h[k] * h[k];
+  }
+  if (len2 == 0) return false;
+  double s = (h[2] < 0 ? -1.0 : 1.0) / std::sqrt(len2);
+  r->wo_m = r->wi_m = 0;
+  for (int k = 0; k < 3; ++k) h[k] *= s, r->wo_m += o[k] * h[k], r->wi_m += i[k] * h[k];
+  r->m = {float(h[0]), float(h[1]), float(h[2])};
+  return r->wo_m > 0 && r->wi_m < 0;
+}
+
+}  // namespace
+
+Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
+  float alpha = std::max(kMinGgxAlpha, m.roughness * m.roughness);
+  switch (m.type) {
+    case MaterialType::Emitter:
+      kind_ = Kind::Black;
+      albedo_ = Vec3(0.0f);
+      break;
+    case MaterialType::Diffuse:
+      kind_ = Kind::Lambert;
+      break;
+    case MaterialType::Glossy:
+      kind_ = m.lobe == GlossLobe::Phong ? Kind::Phong : Kind::Ggx;
+      alpha_ = alpha;
+      exponent_ = std::max(0.0f, m.exponent);
+      break;
+    case MaterialType::Mirror:
+      kind_ = Kind::Mirror;
+      break;
+    case MaterialType::Dielectric:
+      // Index-matched: the interface is invisible, a pure pass-through (delta).
+      kind_ = m.roughness > 0 && m.ior != 1.0f ? Kind::RoughDielectric : Kind::SmoothDielectric;
+      alpha_ = alpha;
+      ior_ = m.ior;
+      break;
+  }
+}
+
+bool Bsdf::is_delta() const { return kind_ == Kind::Mirror || kind_ == Kind::SmoothDielectric; }
+bool Bsdf::scatters() const { return kind_ != Kind::Black; }
+Vec3 Bsdf::albedo() const { return albedo_; }
+
+Vec3 Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
+  switch (kind_) {
+    case Kind::Lambert:
+      return same_hemisphere_up(wo, wi) ? albedo_ * kInvPi : Vec3(0.0f);
+    case Kind::Ggx: {
+      if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
+      Vec3 h = wo + wi;
+      if (dot(h, h) == 0) return Vec3(0.0f);
+      h = normalize(h);
+      MicrofacetGgx ggx(alpha_);
+      // Cook-Torrance / Walter 2007 eq. 20.
+      return fresnel_schlick(albedo_, dot(wi, h)) * (ggx.d(h) * ggx.g2(wo, wi) / (4.0f * wo.z * wi.z));
+    }
+    case Kind::Phong: {
+      if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
+      float c = dot(wi, mirror_z(wo));
+      if (c <= 0) return Vec3(0.0f);
+      // Lafortune & Willems 1994 modified Phong, normalised so normal incidence reflects albedo.
+      return albedo_ * ((exponent_ + 2.0f) * (0.5f * kInvPi) * std::pow(c, exponent_));
+    }
+    case Kind::RoughDielectric:
+      return eval_rough_dielectric(wo, wi);
+    default:
+      return Vec3(0.0f);
+  }
+}
+
+float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+  switch (kind_) {
+    case Kind::Lambert:
+      return same_hemisphere_up(wo, wi) ? wi.z * kInvPi : 0.0f;
+    case Kind::Ggx: {
+      if (!same_hemisphere_up(wo, wi)) return 0.0f;
+      Vec3 h = wo + wi;
+      if (dot(h, h) == 0) return 0.0f;
+      h = normalize(h);
+      // Visible-normal density times the reflection Jacobian dm/dwi = 1 / (4 wo.m).
+      return MicrofacetGgx(alpha_).pdf_visible(wo, h) / (4.0f * dot(wo, h));
+    }
+    case Kind::Phong: {
+      if (!same_hemisphere_up(wo, wi)) return 0.0f;
+      float c = dot(wi, mirror_z(wo));
+      if (c <= 0) return 0.0f;
+      return (exponent_ + 1.0f) * (0.5f * kInvPi) * std::pow(c, exponent_);
+    }
+    case Kind::RoughDielectric:
+      return pdf_rough_dielectric(wo, wi);
+    default:
+      return 0.0f;
+  }
+}
+
+bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const {
+  *out = BsdfSample{};
+  switch (kind_) {
+    case Kind::Lambert: {
+      if (wo.z <= 0) return false;
+      // Malley's method: uniform on the disk, projected up to the hemisphere.
+      float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+      float z = std::sqrt(std::max(0.0f, 1.0f - u1));
+      if (z <= 0) return false;
+      out->wi = {r * std::cos(phi), r * std::sin(phi), z};
+      out->pdf = z * kInvPi;
+      out->weight = albedo_;
+      return true;
+    }
+    case Kind::Ggx: {
+      if (wo.z <= 0) return false;
+      MicrofacetGgx ggx(alpha_);
+      Vec3 m = ggx.sample_visible(wo, u1, u2);
+      float c = dot(wo, m);
+      if (c <= 0) return false;
+      Vec3 wi = reflect(wo, m);
+      if (wi.z <= 0) return false;
+      out->wi = normalize(wi);
+      out->pdf = ggx.pdf_visible(wo, m) / (4.0f * c);
+      // f cos / pdf with the visible-normal pdf: D and the Jacobian cancel, G1(wo) remains.
+      out->weight = fresnel_schlick(albedo_, c) * (ggx.g2(wo, wi) / ggx.g1(wo));
+      return true;
+    }
+    case Kind::Phong: {
+      if (wo.z <= 0) return false;
+      // cos(alpha) distributed as (n+1) c^n dc by inversion; 1 - u1 keeps c > 0.
+      float c = std::pow(1.0f - u1, 1.0f / (exponent_ + 1.0f));
+      float s = std::sqrt(std::max(0.0f, 1.0f - c * c)), phi = 2.0f * kPi * u2;
+      Vec3 wi = Frame(mirror_z(wo)).to_world({s * std::cos(phi), s * std::sin(phi), c});
+      if (wi.z <= 0) return false;  // below the horizon: the lobe is clipped there
+      out->wi = normalize(wi);
+      out->pdf = (exponent_ + 1.0f) * (0.5f * kInvPi) * std::pow(c, exponent_);
+      out->weight = albedo_ * ((exponent_ + 2.0f) / (exponent_ + 1.0f) * wi.z);
+      return true;
+    }
+    case Kind::Mirror:
+      if (wo.z <= 0) return false;
+      out->wi = mirror_z(wo);
+      out->pdf = 1.0f;
+      out->delta = true;
+      out->weight = fresnel_schlick(albedo_, wo.z);
+      return true;
+    case Kind::SmoothDielectric:
+      return sample_smooth_dielectric(wo, uc, out);
+    case Kind::RoughDielectric:
+      return sample_rough_dielectric(wo, u1, u2, uc, out);
+    default:
+      return false;
+  }
+}
+
+bool Bsdf::sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const {
+  if (wo.z == 0) return false;
+  float eta = wo.z > 0 ? ior_ : 1.0f / ior_;  // transmitted over incident
+  Vec3 n{0, 0, wo.z > 0 ? 1.0f : -1.0f};
+  double f = fresnel_dielectric(std::abs(wo.z), eta);
+  out->delta = true;
+  if (uc < f) {
+    // f R cos / (cos F) with probability F: the weight is 1.
+    out->wi = mirror_z(wo);
+    out->pdf = float(f);
+    out->weight = Vec3(1.0f);
+    return true;
+  }
+  Vec3 wt;
+  if (!refract(wo, n, eta, &wt)) return false;
+  out->wi = normalize(wt);
+  out->pdf = float(1.0 - f);
+  out->transmission = true;
+  // (1 - F) / eta^2 per unit projected solid angle, divided by the choice probability 1 - F.
+  out->weight = albedo_ / (eta * eta);
+  return true;
+}
+
+// Rough dielectric after Walter et al. 2007. Evaluated with wo flipped to the upper side: the
+// microfacet distribution is symmetric about the macro surface, so looking from inside is
+// looking from outside at an interface of relative index 1 / ior.
+
+Vec3 Bsdf::eval_rough_dielectric(Vec3 wo, Vec3 wi) const {
+  if (wo.z == 0 || wi.z == 0) return Vec3(0.0f);
+  double eta = ior_;  // double: 1 / ior in float alone moves Snell's law at grazing m by 1e-4
+  if (wo.z < 0) wo.z = -wo.z, wi.z = -wi.z, eta = 1.0 / ior_;
+  MicrofacetGgx ggx(alpha_);
+  if (wi.z > 0) {
+    Vec3 h = wo + wi;
+    if (dot(h, h) == 0) return Vec3(0.0f);
+    h = normalize(h);
+    return Vec3(ggx.d(h) * ggx.g2(wo, wi) * float(fresnel_dielectric(dot(wo, h), eta)) / (4.0f * wo.z * wi.z));
+  }
+  Refraction r;
+  if (!refraction_normal(wo, wi, eta, &r)) return Vec3(0.0f);
+  double denom = r.wo_m + eta * r.wi_m;
+  double t = 1.0 - fresnel_dielectric(r.wo_m, eta);
+  // Walter eq. 21 for radiance: the eta_o^2 factor is 1 on the side of wo.
+  double g = double(ggx.d(r.m)) * ggx.g2(wo, wi) * t * -r.wo_m * r.wi_m / (double(wo.z) * -wi.z * denom * denom);
+  return albedo_ * float(g);
+}
+
+float Bsdf::pdf_rough_dielectric(Vec3 wo, Vec3 wi) const {
+  if (wo.z == 0 || wi.z == 0) return 0.0f;
+  double eta = ior_;  // double: 1 / ior in float alone moves Snell's law at grazing m by 1e-4
+  if (wo.z < 0) wo.z = -wo.z, wi.z = -wi.z, eta = 1.0 / ior_;
+  MicrofacetGgx ggx(alpha_);
+  if (wi.z > 0) {
+    Vec3 h = wo + wi;
+    if (dot(h, h) == 0) return 0.0f;
+    h = normalize(h);
+    float ho = dot(wo, h);
+    return ggx.pdf_visible(wo, h) * float(fresnel_dielectric(ho, eta)) / (4.0f * ho);
+  }
+  Refraction r;
+  if (!refraction_normal(wo, wi, eta, &r)) return 0.0f;
+  double denom = r.wo_m + eta * r.wi_m;
+  // Refraction Jacobian dm/dwi = eta^2 |wi.m| / (wo.m + eta wi.m)^2 (Walter eq. 17).
+  double t = 1.0 - fresnel_dielectric(r.wo_m, eta);
+  return float(ggx.pdf_visible(wo, r.m) * t * eta * eta * -r.wi_m / (denom * denom));
+}
+
+bool Bsdf::sample_rough_dielectric(Vec3 wo, float u1, float u2, float uc, BsdfSample* out) const {
+  if (wo.z == 0) return false;
+  bool inside = wo.z < 0;
+  float eta = ior_;
+  if (inside) wo.z = -wo.z, eta = 1.0f / ior_;
+  MicrofacetGgx ggx(alpha_);
+  Vec3 m = ggx.sample_visible(wo, u1, u2);
+  float ho = dot(wo, m);
+  if (ho <= 0) return false;
+  double f = fresnel_dielectric(ho, eta);
+  float pm = ggx.pdf_visible(wo, m);
+  Vec3 wi;
+  if (uc < f) {
+    wi = normalize(reflect(wo, m));
+    if (wi.z <= 0) return false;
+    out->pdf = float(pm * f / (4.0f * ho));
+    out->weight = Vec3(ggx.g2(wo, wi) / ggx.g1(wo));
+  } else {
+    if (!refract(wo, m, eta, &wi)) return false;
+    wi = normalize(wi);
+    if (wi.z >= 0) return false;
+    float hi = dot(wi, m);
+    float denom = ho + eta * hi;
+    out->pdf = float(pm * (1.0 - f) * eta * eta * -hi / (denom * denom));
+    out->weight = albedo_ * (ggx.g2(wo, wi) / (ggx.g1(wo) * eta * eta));
+    out->transmission = true;
+  }
+  if (inside) wi.z = -wi.z;
+  out->wi = wi;
+  return true;
+}
+
+}  // namespace pdrt

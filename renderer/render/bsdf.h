@@ -1,0 +1,58 @@
+#pragma once
+// The BSDF a Material describes, in the local shading frame (normal = +z). wo points away
+// from the surface, toward the viewer; wi toward the light. Opaque materials reflect only when
+// wo.z > 0 and wi.z > 0; dielectrics treat wo.z > 0 as outside and scale transmitted radiance by
+// 1/eta^2 (camera-path radiance transport, as pbrt-v4's TransportMode::Radiance).
+//   Diffuse     Lambert, cosine-weighted sampling.
+//   Glossy      GGX: Schlick Fresnel with F0 = albedo, alpha = roughness^2, height-correlated
+//               Smith G2, visible-normal sampling. Phong: normalised modified Phong about the
+//               mirror direction, exponent as given (no mapping from roughness).
+//   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
+//   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
+//               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
+#include "renderer/scene/material.h"
+#include "renderer/scene/vec3.h"
+
+namespace pdrt {
+
+struct BsdfSample {
+  Vec3 wi;             // local shading frame (normal = +z), unit length
+  Vec3 weight;         // f(wo, wi) |cos wi| / pdf: the path-throughput factor
+  float pdf = 0;       // solid-angle pdf of wi (for a delta lobe: the discrete probability of that lobe)
+  bool delta = false;  // chosen lobe is a Dirac delta (mirror / smooth dielectric): not usable for MIS
+  bool transmission = false;
+};
+
+class Bsdf {
+ public:
+  explicit Bsdf(const Material& m);  // Emitter material -> a black, non-scattering BSDF
+
+  Vec3 eval(const Vec3& wo, const Vec3& wi) const;  // f(wo, wi), without the cosine; 0 for delta lobes
+  float pdf(const Vec3& wo, const Vec3& wi) const;  // solid-angle pdf that sample() produces wi (non-delta part)
+  // u1, u2 in [0, 1) choose the direction, uc in [0, 1) the lobe (Fresnel reflect vs transmit).
+  // False when no direction is produced (below the horizon, wo grazing, non-scattering).
+  bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+
+  bool is_delta() const;  // every lobe is a delta (mirror, dielectric with roughness 0)
+  bool scatters() const;  // false for emitters
+  Vec3 albedo() const;    // for the albedo AOV
+
+ private:
+  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothDielectric, RoughDielectric };
+
+  Vec3 eval_rough_dielectric(Vec3 wo, Vec3 wi) const;
+  float pdf_rough_dielectric(Vec3 wo, Vec3 wi) const;
+  bool sample_rough_dielectric(Vec3 wo, float u1, float u2, float uc, BsdfSample* out) const;
+  bool sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const;
+
+  Kind kind_ = Kind::Black;
+  Vec3 albedo_{0.0f};
+  float alpha_ = 1.0f;     // GGX roughness, alpha = roughness^2 clamped to >= kMinGgxAlpha
+  float exponent_ = 0.0f;  // Phong
+  float ior_ = 1.5f;       // inside / outside
+};
+
+// Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.
+inline constexpr float kMinGgxAlpha = 1e-3f;
+
+}  // namespace pdrt

@@ -1,0 +1,233 @@
+#include "renderer/render/embree_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pdrt {
+
+namespace {
+
+// Uniform time steps for a keyframed motion: the keys themselves when they are evenly
+// spaced, else a resampling fine enough that Embree's interpolation follows ours.
+std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys) {
+  const int n = int(keys.size());
+  const float t0 = keys.front().time, t1 = keys.back().time, dt = (t1 - t0) / (n - 1);
+  bool even = true;
+  for (int i = 0; i < n; ++i) even = even && std::abs(keys[i].time - (t0 + i * dt)) <= 1e-6f * (1 + std::abs(t1));
+  if (even) return keys;
+  const int steps = std::min(129, 16 * (n - 1) + 1);
+  std::vector<MotionKey> out(steps);
+  for (int i = 0; i < steps; ++i) out[i] = interpolate(keys.data(), n, t0 + (t1 - t0) * i / (steps - 1));
+  return out;
+}
+
+Affine from_row_major(const float m[12]) {
+  Affine a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) a.m[r][c] = m[r * 4 + c];
+  return a;
+}
+
+}  // namespace
+
+Vec3 offset_origin(const Vec3& p, const Vec3& ng, const Vec3& dir) {
+  // Scale with the coordinates' magnitude: float spacing grows with |p|.
+  float m = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+  float eps = 4e-5f * m;
+  return p + ng * (dot(ng, dir) >= 0 ? eps : -eps);
+}
+
+RTCGeometry EmbreeScene::make_geometry(const Shape& s) const {
+  RTCDevice dev = device_.get();
+  if (s.sphere) {
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 16, 1));
+    v[0] = s.center.x, v[1] = s.center.y, v[2] = s.center.z, v[3] = s.radius;
+    rtcCommitGeometry(g);
+    return g;
+  }
+  RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, s.positions.size()));
+  for (std::size_t i = 0; i < s.positions.size(); ++i)
+    v[3 * i] = s.positions[i].x, v[3 * i + 1] = s.positions[i].y, v[3 * i + 2] = s.positions[i].z;
+  auto* ix = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, s.indices.size() / 3));
+  std::copy(s.indices.begin(), s.indices.end(), ix);
+  rtcCommitGeometry(g);
+  return g;
+}
+
+EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : desc_(desc), device_(device) {
+  RTCDevice dev = device.get();
+  scene_ = rtcNewScene(dev);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  shapes_.resize(desc.shapes.size());
+  for (std::size_t i = 0; i < desc.shapes.size(); ++i) {
+    const ShapeDesc& d = desc.shapes[i];
+    Shape& s = shapes_[i];
+    const Affine& m = d.transform;
+    if (d.kind == ShapeDesc::Kind::Sphere) {
+      s.sphere = true;
+      s.center = m.point(d.center);
+      // Spheres stay spheres: a non-uniform scale is replaced by its geometric mean.
+      s.radius = d.radius * std::cbrt(std::abs(m.determinant()));
+    } else {
+      s.positions.reserve(d.mesh.positions.size());
+      for (const Vec3& p : d.mesh.positions) s.positions.push_back(m.point(p));
+      for (const Vec3& n : d.mesh.normals) s.normals.push_back(normalize(m.normal(n)));
+      s.indices = d.mesh.indices;
+      triangles_ += s.indices.size() / 3;
+    }
+    RTCGeometry g = make_geometry(s);
+    if (d.motion.empty()) {
+      rtcAttachGeometryByID(scene_, g, unsigned(i));
+      rtcReleaseGeometry(g);
+      continue;
+    }
+    s.child = rtcNewScene(dev);
+    rtcAttachGeometryByID(s.child, g, 0);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(s.child);
+    std::vector<MotionKey> steps = time_steps(d.motion);
+    RTCGeometry inst = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(inst, s.child);
+    rtcSetGeometryTimeStepCount(inst, unsigned(steps.size()));
+    // Keyframe times are in shutter units; rays carry time normalised to the shutter.
+    const CameraDesc& c = desc.camera;
+    float span = c.shutter_close - c.shutter_open;
+    auto norm = [&](float t) { return span > 0 ? (t - c.shutter_open) / span : 0.0f; };
+    float r0 = norm(steps.front().time), r1 = norm(steps.back().time);
+    if (r1 > r0) rtcSetGeometryTimeRange(inst, r0, r1);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      RTCQuaternionDecomposition q;
+      rtcInitQuaternionDecomposition(&q);
+      rtcQuaternionDecompositionSetScale(&q, steps[k].scale.x, steps[k].scale.y, steps[k].scale.z);
+      rtcQuaternionDecompositionSetQuaternion(&q, steps[k].rotate.w, steps[k].rotate.x, steps[k].rotate.y,
+                                              steps[k].rotate.z);
+      rtcQuaternionDecompositionSetTranslation(&q, steps[k].translate.x, steps[k].translate.y, steps[k].translate.z);
+      rtcSetGeometryTransformQuaternion(inst, unsigned(k), &q);
+    }
+    rtcCommitGeometry(inst);
+    rtcAttachGeometryByID(scene_, inst, unsigned(i));
+    s.instance = inst;  // keeps a reference for transform queries (released in the destructor)
+  }
+  rtcCommitScene(scene_);
+  device.check();
+
+  RTCLinearBounds lb;
+  rtcGetSceneLinearBounds(scene_, &lb);
+  Vec3 lo(std::min(lb.bounds0.lower_x, lb.bounds1.lower_x), std::min(lb.bounds0.lower_y, lb.bounds1.lower_y),
+          std::min(lb.bounds0.lower_z, lb.bounds1.lower_z));
+  Vec3 hi(std::max(lb.bounds0.upper_x, lb.bounds1.upper_x), std::max(lb.bounds0.upper_y, lb.bounds1.upper_y),
+          std::max(lb.bounds0.upper_z, lb.bounds1.upper_z));
+  if (desc.shapes.empty() || !(hi.x >= lo.x)) lo = hi = Vec3(0.0f);
+  bounds_center_ = (lo + hi) * 0.5f;
+  bounds_radius_ = std::max(length(hi - lo) * 0.5f, 1e-3f);
+}
+
+EmbreeScene::~EmbreeScene() {
+  for (Shape& s : shapes_) {
+    if (s.instance) rtcReleaseGeometry(s.instance);
+    if (s.child) rtcReleaseScene(s.child);
+  }
+  if (scene_) rtcReleaseScene(scene_);
+}
+
+Affine EmbreeScene::transform(int shape, float time) const {
+  const Shape& s = shapes_[shape];
+  if (!s.instance) return Affine{};
+  float m[12];
+  rtcGetGeometryTransform(s.instance, time, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+  return from_row_major(m);
+}
+
+bool EmbreeScene::intersect(const Ray& ray, SurfaceHit* hit) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRayHit rh;
+  rh.ray.org_x = ray.org.x, rh.ray.org_y = ray.org.y, rh.ray.org_z = ray.org.z;
+  rh.ray.dir_x = ray.dir.x, rh.ray.dir_y = ray.dir.y, rh.ray.dir_z = ray.dir.z;
+  rh.ray.tnear = ray.tmin, rh.ray.tfar = ray.tmax, rh.ray.time = ray.time;
+  rh.ray.mask = ~0u, rh.ray.flags = 0, rh.ray.id = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  finish_hit(ray, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v,
+             Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z), rh.ray.tfar, hit);
+  return true;
+}
+
+void EmbreeScene::intersect4(const Ray* rays, const bool* live, SurfaceHit* hits, bool* found) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // camera rays of one pixel
+  alignas(16) RTCRayHit4 rh;
+  alignas(16) int valid[4];
+  for (int k = 0; k < 4; ++k) {
+    const Ray& r = rays[k];
+    valid[k] = live[k] ? -1 : 0;
+    rh.ray.org_x[k] = r.org.x, rh.ray.org_y[k] = r.org.y, rh.ray.org_z[k] = r.org.z;
+    rh.ray.dir_x[k] = r.dir.x, rh.ray.dir_y[k] = r.dir.y, rh.ray.dir_z[k] = r.dir.z;
+    rh.ray.tnear[k] = r.tmin, rh.ray.tfar[k] = r.tmax, rh.ray.time[k] = r.time;
+    rh.ray.mask[k] = ~0u, rh.ray.flags[k] = 0, rh.ray.id[k] = unsigned(k);
+    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect4(valid, scene_, &ctx, &rh);
+  for (int k = 0; k < 4; ++k) {
+    found[k] = live[k] && rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+    if (found[k])
+      finish_hit(rays[k], rh.hit.instID[0][k], rh.hit.geomID[k], rh.hit.primID[k], rh.hit.u[k], rh.hit.v[k],
+                 Vec3(rh.hit.Ng_x[k], rh.hit.Ng_y[k], rh.hit.Ng_z[k]), rh.ray.tfar[k], &hits[k]);
+  }
+}
+
+void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim_id, float u, float v,
+                             const Vec3& embree_ng, float t, SurfaceHit* hit) const {
+  const bool inst = inst_id != RTC_INVALID_GEOMETRY_ID;
+  const int shape = int(inst ? inst_id : geom_id);
+  const Shape& s = shapes_[shape];
+  hit->t = t;
+  hit->p = ray.org + ray.dir * t;
+  hit->shape = shape;
+  hit->prim = int(prim_id);
+  Vec3 ng, ns;
+  if (s.sphere) {
+    ng = ns = embree_ng;  // centre to hit, instance space
+  } else {
+    const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
+    const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
+    ng = cross(b - a, c - a);  // counter-clockwise winding is the front face
+    if (!s.normals.empty()) {
+      ns = s.normals[tri[0]] * (1 - u - v) + s.normals[tri[1]] * u + s.normals[tri[2]] * v;
+    } else {
+      ns = ng;
+    }
+  }
+  if (inst) {
+    Affine inv = transform(shape, ray.time).inverse();  // once for both normals
+    ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
+  }
+  ng = normalize(ng), ns = normalize(ns);
+  if (!is_finite(ns) || dot(ns, ns) == 0) ns = ng;
+  hit->ng = ng;
+  hit->ns = dot(ns, ng) < 0 ? -ns : ns;
+  hit->front = dot(ray.dir, ng) < 0;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  RTCRay r;
+  r.org_x = ray.org.x, r.org_y = ray.org.y, r.org_z = ray.org.z;
+  r.dir_x = ray.dir.x, r.dir_y = ray.dir.y, r.dir_z = ray.dir.z;
+  r.tnear = ray.tmin, r.tfar = ray.tmax, r.time = ray.time;
+  r.mask = ~0u, r.flags = 0, r.id = 0;
+  rtcOccluded1(scene_, &ctx, &r);
+  return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace pdrt

@@ -1,0 +1,89 @@
+#pragma once
+// The scene as Embree sees it: one top-level BVH holding every static shape (already in
+// world space) and, for each moving shape, a motion-blurred instance of a child scene whose
+// transform is keyframed over the shutter (Embree slerps the rotation between time steps).
+// Top-level geometry IDs equal shape indices, so a hit names its ShapeDesc directly.
+#include "renderer/render/embree_device.h"
+#include "renderer/render/ray.h"
+#include "renderer/scene/scene_desc.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <vector>
+
+namespace pdrt {
+
+struct SurfaceHit {
+  float t = 0;
+  Vec3 p;        // world position
+  Vec3 ng;       // unit geometric normal, on the front side (CCW winding / sphere outside)
+  Vec3 ns;       // unit shading normal (interpolated vertex normals), same side as ng
+  int shape = -1;
+  int prim = -1;
+  bool front = true;  // the ray arrived from the side ng points to
+};
+
+class EmbreeScene {
+ public:
+  EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const;
+  bool occluded(const Ray& ray) const;
+  // Four camera rays of one pixel as an Embree packet (much cheaper per ray when they are
+  // coherent); lanes with live[k] false are not traced. found[k] says whether hits[k] is set.
+  // Packet and single-ray kernels may differ in the last bit of t, u, v, so a caller that
+  // needs replayable images must always trace the same rays the same way.
+  void intersect4(const Ray* rays, const bool* live, SurfaceHit* hits, bool* found) const;
+
+  // Object-to-world transform of `shape` at normalised shutter time (identity for static
+  // shapes, whose geometry is stored in world space).
+  Affine transform(int shape, float time) const;
+  bool moving(int shape) const { return shapes_[shape].instance != nullptr; }
+
+  // Geometry after the static transform (world space for static shapes, instance space
+  // for moving ones).
+  const std::vector<Vec3>& positions(int shape) const { return shapes_[shape].positions; }
+  const std::vector<uint32_t>& indices(int shape) const { return shapes_[shape].indices; }
+  Vec3 sphere_center(int shape) const { return shapes_[shape].center; }
+  float sphere_radius(int shape) const { return shapes_[shape].radius; }
+
+  const SceneDesc& desc() const { return desc_; }
+  // Centre and radius of a sphere bounding the scene (over the whole shutter).
+  Vec3 bounds_center() const { return bounds_center_; }
+  float bounds_radius() const { return bounds_radius_; }
+  std::size_t triangle_count() const { return triangles_; }
+  RTCScene rtc_scene() const { return scene_; }
+
+ private:
+  void finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim_id, float u, float v,
+                  const Vec3& embree_ng, float t, SurfaceHit* hit) const;
+
+  struct Shape {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<uint32_t> indices;
+    Vec3 center;
+    float radius = 0;
+    bool sphere = false;
+    RTCScene child = nullptr;
+    RTCGeometry instance = nullptr;
+  };
+  RTCGeometry make_geometry(const Shape& s) const;
+
+  const SceneDesc& desc_;
+  const EmbreeDevice& device_;
+  RTCScene scene_ = nullptr;
+  std::vector<Shape> shapes_;
+  Vec3 bounds_center_;
+  float bounds_radius_ = 1;
+  std::size_t triangles_ = 0;
+};
+
+// Offsets a ray origin off a surface along the normal, on the side `dir` leaves to.
+Vec3 offset_origin(const Vec3& p, const Vec3& ng, const Vec3& dir);
+
+}  // namespace pdrt

@@ -1,0 +1,64 @@
+#pragma once
+// Per-pixel accumulation of filtered samples and the AOVs (sample count, variance of the
+// mean, albedo, normal, depth). A pixel is only ever written by the thread rendering it, so
+// no locks are needed and results do not depend on scheduling.
+#include "renderer/scene/vec3.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pdrt {
+
+struct PixelAccum {
+  double w = 0, w2 = 0;          // sum of weights and of squared weights
+  double rgb[3] = {0, 0, 0};     // sum w L
+  double lum = 0, lum2 = 0;      // sum w Y, sum w Y^2 (for the variance of the mean)
+  double half_w[2] = {0, 0}, half_lum[2] = {0, 0};  // sum w, sum w Y over even / odd sample indices
+  double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, depth = 0;
+  double abs_w = 0;              // sum |w|: AOV weights (filter weights may be negative: Mitchell)
+  double depth_w = 0;            // sum |w| over samples that hit something
+  int64_t samples = 0;           // samples traced for this pixel
+  int64_t prefix = 0;            // sample indices consumed (>= samples: rank selection skips some)
+  float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
+
+  // `half` is the sample index's parity: the two half buffers of the `halves` variance.
+  void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half);
+  Vec3 value() const;            // normalised weighted mean (Cook §4.2)
+  double mean_luminance() const;
+  double variance_of_mean() const;  // of the luminance
+  // The same from the two half buffers (Cycles): (mean_even - mean_odd)^2 / 4; falls back to
+  // variance_of_mean() while a half is empty.
+  double half_variance_of_mean() const;
+  // Mitchell (1987) contrast (max - min) / (max + min) of the samples, per channel.
+  double contrast(int channel) const;
+};
+
+// The finished image: linear RGB plus AOV planes, row-major from the top-left.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;       // 3 per pixel
+  std::vector<float> samples;   // 1 per pixel
+  std::vector<float> variance;  // 1 per pixel
+  std::vector<float> albedo;    // 3 per pixel
+  std::vector<float> normal;    // 3 per pixel
+  std::vector<float> depth;     // 1 per pixel (infinity where nothing was hit)
+};
+
+class Film {
+ public:
+  Film(int width, int height) : width_(width), height_(height), px_(std::size_t(width) * height) {}
+  PixelAccum& at(int x, int y) { return px_[std::size_t(y) * width_ + x]; }
+  const PixelAccum& at(int x, int y) const { return px_[std::size_t(y) * width_ + x]; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  Image image(float exposure_stops) const;
+
+  // Bytes the film and its output image need per pixel (for the memory check).
+  static constexpr std::size_t kBytesPerPixel = sizeof(PixelAccum) + 12 * sizeof(float);
+
+ private:
+  int width_, height_;
+  std::vector<PixelAccum> px_;
+};
+
+}  // namespace pdrt

@@ -1,0 +1,32 @@
+#include "renderer/render/fresnel.h"
+
+namespace pdrt {
+
+// Snell: sin_t = sin_i / eta; the result is -w / eta + (cos_i / eta - cos_t) n.
+bool refract(const Vec3& w, const Vec3& n, float eta, Vec3* wt) {
+  float cos_i = dot(w, n);
+  float sin2_t = std::max(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1.0f) return false;
+  float cos_t = std::sqrt(1.0f - sin2_t);
+  *wt = -w / eta + n * (cos_i / eta - cos_t);
+  return true;
+}
+
+double fresnel_dielectric(double cos_i, double eta) {
+  cos_i = std::clamp(cos_i, 0.0, 1.0);
+  double sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1.0) return 1.0;
+  double cos_t = std::sqrt(1.0 - sin2_t);
+  // Amplitude coefficients for s and p polarisation (Born & Wolf §1.5.2), averaged in power.
+  double rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  double rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  return 0.5f * (rs * rs + rp * rp);
+}
+
+Vec3 fresnel_schlick(const Vec3& f0, float cos_i) {
+  float m = std::clamp(1.0f - cos_i, 0.0f, 1.0f);
+  float m5 = (m * m) * (m * m) * m;
+  return f0 + (Vec3(1.0f) - f0) * m5;
+}
+
+}  // namespace pdrt

@@ -1,0 +1,23 @@
+#pragma once
+// Reflection and refraction at a smooth interface: mirror and refracted directions, exact
+// dielectric Fresnel reflectance and Schlick's approximation.
+#include "renderer/scene/vec3.h"
+
+namespace pdrt {
+
+// Mirror image of w about the unit normal n.
+inline Vec3 reflect(const Vec3& w, const Vec3& n) { return n * (2.0f * dot(w, n)) - w; }
+
+// Direction refracted through the plane with unit normal n, where w is on the side of n
+// (dot(w, n) > 0) and eta = eta_transmitted / eta_incident. False under total internal reflection.
+bool refract(const Vec3& w, const Vec3& n, float eta, Vec3* wt);
+
+// Exact unpolarised Fresnel reflectance of a dielectric interface for cos_i > 0 on the incident
+// side, eta = eta_transmitted / eta_incident. 1 under total internal reflection. In double: near
+// the critical angle 1 - F loses all float precision (cos_t = sqrt(1 - sin_t^2)).
+double fresnel_dielectric(double cos_i, double eta);
+
+// Schlick 1994: f0 + (1 - f0)(1 - cos)^5.
+Vec3 fresnel_schlick(const Vec3& f0, float cos_i);
+
+}  // namespace pdrt

@@ -1,0 +1,201 @@
+#include "renderer/render/light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pdrt {
+
+namespace {
+
+float sphere_radius_at(const EmbreeScene& s, int shape, const Affine& m) {
+  return s.sphere_radius(shape) * (s.moving(shape) ? std::cbrt(std::abs(m.determinant())) : 1.0f);
+}
+
+}  // namespace
+
+LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
+  const SceneDesc& d = scene.desc();
+  std::vector<double> power;
+  first_entry_.assign(d.shapes.size(), -1);
+  for (std::size_t i = 0; i < d.shapes.size(); ++i) {
+    const ShapeDesc& s = d.shapes[i];
+    const Material& m = d.materials[s.material];
+    if (m.type != MaterialType::Emitter || is_black(m.radiance)) continue;
+    double sides = m.two_sided ? 2.0 : 1.0, lum = std::max(luminance(m.radiance), 1e-6f);
+    Affine xf = scene.transform(int(i), 0.0f);
+    first_entry_[i] = int64_t(entries_.size());
+    if (s.kind == ShapeDesc::Kind::Sphere) {
+      float r = sphere_radius_at(scene, int(i), xf);
+      entries_.push_back({int(i), -1});
+      power.push_back(lum * sides * 4 * kPi * r * r);
+      continue;
+    }
+    const auto& pos = scene.positions(int(i));
+    const auto& idx = scene.indices(int(i));
+    for (std::size_t t = 0; t < idx.size() / 3; ++t) {
+      Vec3 a = xf.point(pos[idx[3 * t]]), b = xf.point(pos[idx[3 * t + 1]]), c = xf.point(pos[idx[3 * t + 2]]);
+      entries_.push_back({int(i), int(t)});
+      power.push_back(lum * sides * 0.5 * length(cross(b - a, c - a)));
+    }
+  }
+  env_ = d.environment.radiance;
+  if (!is_black(env_)) {
+    env_entry_ = int64_t(entries_.size());
+    entries_.push_back({-1, -1});
+    float r = scene.bounds_radius();
+    power.push_back(std::max(luminance(env_), 1e-6f) * kPi * r * r * 4 * kPi);
+  }
+  double total = 0;
+  for (double p : power) total += p;
+  cdf_.resize(power.size());
+  double run = 0;
+  for (std::size_t i = 0; i < power.size(); ++i) run += power[i], cdf_[i] = run / total;
+  if (!cdf_.empty()) cdf_.back() = 1.0;
+}
+
+void LightSampler::triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const {
+  const auto& pos = scene_.positions(shape);
+  const uint32_t* t = &scene_.indices(shape)[3 * std::size_t(prim)];
+  *a = pos[t[0]], *b = pos[t[1]], *c = pos[t[2]];
+  if (scene_.moving(shape)) {
+    Affine m = scene_.transform(shape, time);
+    *a = m.point(*a), *b = m.point(*b), *c = m.point(*c);
+  }
+}
+
+float LightSampler::select_pdf(std::size_t e) const {
+  return float(cdf_[e] - (e ? cdf_[e - 1] : 0.0));
+}
+
+bool LightSampler::sample(const Vec3& ref, float time, float u_pick, std::array<double, 2> u,
+                          LightSample* out) const {
+  if (cdf_.empty()) return false;
+  std::size_t e = std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u_pick)) - cdf_.begin());
+  e = std::min(e, cdf_.size() - 1);
+  const Entry& en = entries_[e];
+  bool ok;
+  if (en.shape < 0) {
+    // Uniform over the sphere of directions.
+    float z = float(1 - 2 * u[0]), r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
+    out->wi = {r * std::cos(phi), r * std::sin(phi), z};
+    out->dist = 1e30f;
+    out->radiance = env_;
+    out->pdf = 1.0f / (4 * kPi);
+    ok = true;
+  } else if (en.prim < 0) {
+    ok = sample_sphere(en, ref, time, u, out);
+  } else {
+    ok = sample_triangle(en, ref, time, u, out);
+  }
+  if (!ok) return false;
+  out->pdf *= select_pdf(e);
+  return out->pdf > 0;
+}
+
+bool LightSampler::sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u,
+                                   LightSample* out) const {
+  Vec3 a, b, c;
+  triangle_at(e.shape, e.prim, time, &a, &b, &c);
+  // Uniform barycentrics (square-root map).
+  float su = std::sqrt(float(u[0])), b0 = 1 - su, b1 = float(u[1]) * su;
+  Vec3 p = a * b0 + b * b1 + c * (1 - b0 - b1);
+  Vec3 n = cross(b - a, c - a);
+  float area = 0.5f * length(n);
+  if (area <= 0) return false;
+  n = n / (2 * area);
+  Vec3 d = p - ref;
+  float d2 = dot(d, d);
+  if (d2 <= 0) return false;
+  float dist = std::sqrt(d2);
+  out->wi = d / dist;
+  out->dist = dist;
+  float cos_l = -dot(n, out->wi);
+  const Material& m = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
+  if (std::abs(cos_l) < 1e-7f) return false;
+  out->radiance = (cos_l > 0 || m.two_sided) ? m.radiance : Vec3(0.0f);
+  out->pdf = d2 / (std::abs(cos_l) * area);
+  return true;
+}
+
+bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u,
+                                 LightSample* out) const {
+  Affine m = scene_.transform(e.shape, time);
+  Vec3 c = m.point(scene_.sphere_center(e.shape));
+  float r = sphere_radius_at(scene_, e.shape, m);
+  const Material& mat = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
+  Vec3 to_c = c - ref;
+  float dc2 = dot(to_c, to_c);
+  if (dc2 <= r * r * 1.0001f) {
+    // Inside (or on) the sphere: uniform area sampling.
+    float z = float(1 - 2 * u[0]), s = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
+    Vec3 n(s * std::cos(phi), s * std::sin(phi), z);
+    Vec3 p = c + n * r, d = p - ref;
+    float d2 = dot(d, d), dist = std::sqrt(d2);
+    if (dist <= 0) return false;
+    out->wi = d / dist, out->dist = dist;
+    float cos_l = -dot(n, out->wi);
+    if (std::abs(cos_l) < 1e-7f) return false;
+    out->radiance = (cos_l > 0 || mat.two_sided) ? mat.radiance : Vec3(0.0f);
+    out->pdf = d2 / (std::abs(cos_l) * 4 * kPi * r * r);
+    return true;
+  }
+  // Outside: uniform over the cone of directions the sphere subtends (pbrt-v3 §14.2.2).
+  float dc = std::sqrt(dc2);
+  float sin2_max = r * r / dc2, cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
+  float one_minus_cos_max = sin2_max / (1 + cos_max);  // no cancellation for small spheres
+  float one_minus_cos = float(u[0]) * one_minus_cos_max;
+  float cos_t = 1 - one_minus_cos, sin_t = std::sqrt(std::max(0.0f, one_minus_cos * (2 - one_minus_cos)));
+  float phi = float(2 * kPi * u[1]);
+  Frame f(to_c / dc);
+  Vec3 wi = f.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t});
+  // Distance to the near intersection of the sampled direction with the sphere.
+  float b = dot(wi, to_c), disc = std::max(0.0f, r * r - (dc2 - b * b));
+  float dist = b - std::sqrt(disc);
+  out->wi = wi, out->dist = dist;
+  out->radiance = mat.radiance;
+  out->pdf = 1.0f / (2 * kPi * one_minus_cos_max);
+  return dist > 0;
+}
+
+float LightSampler::sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const Vec3& n, float time) const {
+  Affine m = scene_.transform(shape, time);
+  Vec3 c = m.point(scene_.sphere_center(shape));
+  float r = sphere_radius_at(scene_, shape, m);
+  Vec3 to_c = c - ref;
+  float dc2 = dot(to_c, to_c);
+  if (dc2 <= r * r * 1.0001f) {
+    Vec3 d = p - ref;
+    float d2 = dot(d, d), cos_l = std::abs(dot(n, d)) / std::sqrt(d2);
+    return cos_l > 0 ? d2 / (cos_l * 4 * kPi * r * r) : 0.0f;
+  }
+  float sin2_max = r * r / dc2, cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
+  return 1.0f / (2 * kPi * (sin2_max / (1 + cos_max)));
+}
+
+float LightSampler::pdf(const Vec3& ref, const SurfaceHit& hit, float time) const {
+  int64_t first = first_entry_[hit.shape];
+  if (first < 0) return 0;
+  const ShapeDesc& s = scene_.desc().shapes[hit.shape];
+  if (s.kind == ShapeDesc::Kind::Sphere) return select_pdf(first) * sphere_pdf(hit.shape, ref, hit.p, hit.ng, time);
+  std::size_t e = std::size_t(first + hit.prim);
+  Vec3 a, b, c;
+  triangle_at(hit.shape, hit.prim, time, &a, &b, &c);
+  float area = 0.5f * length(cross(b - a, c - a));
+  Vec3 d = hit.p - ref;
+  float d2 = dot(d, d);
+  float cos_l = std::abs(dot(hit.ng, d)) / std::sqrt(d2);
+  if (area <= 0 || cos_l <= 0) return 0;
+  return select_pdf(e) * d2 / (cos_l * area);
+}
+
+float LightSampler::environment_pdf() const {
+  return env_entry_ < 0 ? 0.0f : select_pdf(std::size_t(env_entry_)) / (4 * kPi);
+}
+
+Vec3 LightSampler::emitted(const SurfaceHit& hit, const Vec3& /*dir*/) const {
+  const Material& m = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
+  if (m.type != MaterialType::Emitter) return Vec3(0.0f);
+  return (hit.front || m.two_sided) ? m.radiance : Vec3(0.0f);
+}
+
+}  // namespace pdrt

@@ -1,0 +1,58 @@
+#pragma once
+// Next-event estimation targets (Cook §5.3 "light area" dimension): every emissive triangle,
+// every emissive sphere and the constant environment, chosen in proportion to their power.
+// Triangles are sampled uniformly by area, spheres by the cone they subtend, the
+// environment uniformly over the sphere of directions. Moving emitters are sampled where
+// they are at the ray's time, using the same transform Embree intersects.
+#include "renderer/render/embree_scene.h"
+
+#include <array>
+#include <vector>
+
+namespace pdrt {
+
+struct LightSample {
+  Vec3 wi;          // unit direction from the reference point to the light
+  float dist = 0;   // distance to the sampled point (infinite for the environment)
+  Vec3 radiance;    // emitted radiance toward the reference point (0 if back-facing)
+  float pdf = 0;    // solid-angle pdf, including the choice of this light
+};
+
+class LightSampler {
+ public:
+  LightSampler(const EmbreeScene& scene);
+  bool empty() const { return cdf_.empty(); }
+
+  // u_pick chooses the light; u samples a point on it.
+  bool sample(const Vec3& ref, float time, float u_pick, std::array<double, 2> u, LightSample* out) const;
+
+  // Solid-angle pdf that sample() would have produced the emitter point `hit` seen from
+  // `ref` (for MIS after BSDF sampling hit an emitter).
+  float pdf(const Vec3& ref, const SurfaceHit& hit, float time) const;
+  float environment_pdf() const;
+
+  // Radiance leaving an emitter at `hit` toward -dir (0 for non-emitters / back faces).
+  Vec3 emitted(const SurfaceHit& hit, const Vec3& dir) const;
+  const Vec3& environment() const { return env_; }
+
+ private:
+  struct Entry {
+    int shape;  // -1 = environment
+    int prim;   // triangle index, -1 for spheres
+  };
+  float select_pdf(std::size_t entry) const;
+  // World-space corners of a triangle of `shape` at the normalised shutter time.
+  void triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const;
+  bool sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
+  bool sample_sphere(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
+  float sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const Vec3& n, float time) const;
+
+  const EmbreeScene& scene_;
+  std::vector<Entry> entries_;
+  std::vector<double> cdf_;           // inclusive prefix sums of power, normalised to 1
+  std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1
+  int64_t env_entry_ = -1;
+  Vec3 env_;
+};
+
+}  // namespace pdrt

@@ -1,0 +1,132 @@
+#include "renderer/render/path_integrator.h"
+
+#include <cmath>
+#include <limits>
+
+namespace pdrt {
+
+namespace {
+
+float power_heuristic(float a, float b) {
+  float a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0f;
+}
+
+}  // namespace
+
+PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const IntegratorDesc& settings)
+    : scene_(scene), lights_(lights), settings_(settings) {
+  for (const Material& m : scene.desc().materials) bsdfs_.emplace_back(m);
+}
+
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const { return trace(ray, ps, nullptr, false); }
+
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit& first, bool found) const {
+  return trace(ray, ps, &first, found);
+}
+
+PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit* first, bool first_found) const {
+  PathResult res;
+  res.depth = std::numeric_limits<float>::infinity();
+  Vec3 beta(1.0f);
+  float prev_pdf = 0;    // solid-angle pdf of the BSDF sample that produced `ray`
+  bool prev_delta = true;  // camera rays and delta lobes: emitters hit are counted fully
+  Vec3 prev_p;
+  const float time = ray.time;
+  for (int depth = 0;; ++depth) {
+    SurfaceHit hit;
+    ++res.rays;
+    bool found;
+    if (depth == 0 && first) {
+      found = first_found;
+      if (found) hit = *first;
+    } else {
+      found = scene_.intersect(ray, &hit);
+    }
+    if (!found) {
+      const Vec3& env = lights_.environment();
+      if (!is_black(env)) {
+        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf());
+        res.radiance += beta * env * w;
+      }
+      break;
+    }
+    const Material& mat = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
+    const Bsdf& bsdf = bsdfs_[scene_.desc().shapes[hit.shape].material];
+    const Vec3 wo_world = -ray.dir;
+    if (depth == 0) {
+      res.albedo = bsdf.albedo();
+      res.normal = hit.ns;
+      res.depth = hit.t;
+    }
+    if (mat.type == MaterialType::Emitter) {
+      Vec3 le = lights_.emitted(hit, ray.dir);
+      if (!is_black(le)) {
+        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.pdf(prev_p, hit, time));
+        res.radiance += beta * le * w;
+      }
+      break;  // emitters do not scatter
+    }
+    if (depth + 1 > settings_.max_depth) break;
+
+    // Shading frame: opaque surfaces shade on the side the ray came from; dielectrics keep
+    // the outward normal so the BSDF can tell entering from leaving.
+    const bool dielectric = mat.type == MaterialType::Dielectric;
+    Vec3 ns = hit.ns, ng = hit.ng;
+    if (!dielectric && !hit.front) ns = -ns, ng = -ng;
+    Frame frame(ns);
+    Vec3 wo = frame.to_local(wo_world);
+
+    // Next-event estimation (not for delta lobes: a light sample has zero BSDF value).
+    if (!bsdf.is_delta() && !lights_.empty()) {
+      LightSample ls;
+      float u_pick = float(ps.get_1d(Family::Time, salt_light_pick(depth)));
+      if (lights_.sample(hit.p, time, u_pick, ps.get_2d(Family::Light, depth), &ls) && !is_black(ls.radiance)) {
+        Vec3 wi = frame.to_local(ls.wi);
+        Vec3 f = bsdf.eval(wo, wi);
+        // Light leaking through the geometric surface is rejected (shading normals).
+        bool same_side = dielectric || dot(ls.wi, ng) > 0;
+        if (!is_black(f) && same_side) {
+          Ray shadow;
+          shadow.org = offset_origin(hit.p, hit.ng, ls.wi);
+          shadow.dir = ls.wi;
+          shadow.tmax = ls.dist * (1 - 1e-4f);
+          shadow.time = time;
+          ++res.rays;
+          if (!scene_.occluded(shadow)) {
+            float w = power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
+            res.radiance += beta * f * ls.radiance * (std::abs(wi.z) * w / ls.pdf);
+          }
+        }
+      }
+    }
+
+    // BSDF sampling (Cook's gloss dimension).
+    BsdfSample bs;
+    float uc = float(ps.get_1d(Family::Time, salt_lobe(depth)));
+    auto u = ps.get_2d(Family::Gloss, depth);
+    if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs)) break;
+    Vec3 wi_world = frame.to_world(bs.wi);
+    // Reflection must leave on the front of the geometric surface, transmission behind it.
+    if (!dielectric && dot(wi_world, ng) <= 0) break;
+    beta *= bs.weight;
+    if (is_black(beta) || !is_finite(beta)) break;
+    prev_pdf = bs.pdf;
+    prev_delta = bs.delta;
+    prev_p = hit.p;
+
+    // Russian roulette (pbrt-v4): survive with probability max(beta), at least 5 %.
+    if (depth + 1 >= settings_.rr_depth) {
+      float q = std::max(0.05f, 1 - max_component(beta));
+      if (float(ps.get_1d(Family::Time, salt_roulette(depth))) < q) break;
+      beta /= 1 - q;
+    }
+    ray.org = offset_origin(hit.p, hit.ng, wi_world);
+    ray.dir = wi_world;
+    ray.tmin = 0;
+    ray.tmax = 1e30f;
+  }
+  return res;
+}
+
+}  // namespace pdrt

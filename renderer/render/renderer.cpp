@@ -1,0 +1,226 @@
+#include "renderer/render/renderer.h"
+
+#include "renderer/render/adaptive_metric.h"
+#include "renderer/render/embree_scene.h"
+#include "sampling/core/errors.h"
+#include "renderer/render/filter.h"
+#include "renderer/render/light_sampler.h"
+#include "renderer/render/path_integrator.h"
+#include "sampling/samplers/poisson_sampler.h"
+#include "sampling/core/progress.h"
+#include "renderer/render/thin_lens_camera.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+
+namespace pdrt {
+
+std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) {
+  if (d.type == "poisson") return make_poisson_sampler(d.seed, default_tables());
+  return make_sampler(d.type, d.seed);
+}
+
+void check_film_memory(int width, int height) {
+  double need = double(width) * double(height) * double(Film::kBytesPerPixel);
+  double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (need > 0.75 * have) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "film %dx%d needs %.1f GiB of buffers; this machine has %.1f GiB", width, height,
+                  need / (1 << 30), have / (1 << 30));
+    throw InputError(buf);
+  }
+}
+
+namespace {
+
+constexpr int kTile = 16;
+
+struct PixelRenderer {
+  const ThinLensCamera& camera;
+  const EmbreeScene& scene;
+  const PathIntegrator& integrator;
+  const Filter& filter;
+  const Sampler& sampler;
+  int spp;
+  bool rank_selection;
+
+  // Camera ray and filter weight of sample i of pixel (x, y); false when the sample is not
+  // taken (outside the filter, or not selected by rank).
+  bool camera_sample(int x, int y, int64_t i, PixelSample& ps, Ray* ray, float* weight) const {
+    ps.start_pixel_sample(x, y, i);
+    const float r = filter.radius();
+    auto u = ps.get_2d(Family::Pixel);
+    float ox = float(2 * u[0] - 1) * r, oy = float(2 * u[1] - 1) * r;
+    float w = filter.eval(ox, oy);
+    if (rank_selection) {
+      // McCool–Fiume §5.2: keep sample i of n when its rank i/n is below the normalised
+      // filter value x; the kept set has density ~ x, so the weight becomes f / x.
+      const float fmin = filter.min_value(), fmax = filter.max_value();
+      float xv = (w - fmin) / (fmax - fmin);
+      if (double(i + 1) / double(spp) > xv) return false;
+      w = w / xv;
+    } else if (w == 0) {
+      return false;  // outside the filter's support: contributes nothing
+    }
+    float time = float(ps.get_1d(Family::Time, 0));
+    *ray = camera.generate(float(x) + 0.5f + ox, float(y) + 0.5f + oy, ps.get_2d(Family::Lens), time);
+    *weight = w;
+    return true;
+  }
+
+  // Samples [begin, end) of pixel (x, y); returns rays traced. Camera rays go to Embree as
+  // packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is, because
+  // packet and single-ray kernels may differ in the last bit; so a pixel's samples are the
+  // same whether it is rendered at once or over adaptive rounds.
+  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSample& ps) const {
+    int64_t rays = 0;
+    for (int64_t g = begin & ~int64_t(3); g < end; g += 4) {
+      Ray ray[4];
+      float w[4] = {0, 0, 0, 0};
+      bool live[4], found[4];
+      SurfaceHit hit[4];
+      for (int k = 0; k < 4; ++k) live[k] = camera_sample(x, y, g + k, ps, &ray[k], &w[k]);
+      if (!(live[0] || live[1] || live[2] || live[3])) continue;
+      scene.intersect4(ray, live, hit, found);
+      for (int k = 0; k < 4; ++k) {
+        const int64_t i = g + k;
+        if (!live[k]) continue;
+        if (i < begin || i >= end) {
+          ++rays;  // traced for the packet's sake only
+          continue;
+        }
+        ps.start_pixel_sample(x, y, i);
+        PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
+        Vec3 L = is_finite(pr.radiance) ? pr.radiance : Vec3(0.0f);  // a NaN must not poison the pixel
+        acc.add(L, w[k], pr.albedo, pr.normal, pr.depth, int(i & 1));
+        rays += pr.rays;
+      }
+    }
+    acc.prefix = end;
+    return rays;
+  }
+};
+
+}  // namespace
+
+RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
+  check_film_memory(desc.film.width, desc.film.height);
+  std::optional<tbb::global_control> limit;
+  if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
+  auto t0 = std::chrono::steady_clock::now();
+
+  EmbreeDevice device(opt.threads > 0 ? "threads=" + std::to_string(opt.threads) : "");
+  EmbreeScene scene(desc, device);
+  LightSampler lights(scene);
+  PathIntegrator integrator(scene, lights, desc.integrator);
+  ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
+  Filter filter(desc.film.filter);
+  Film film(desc.film.width, desc.film.height);
+  // Rank selection ranks against the full sample budget of a pixel (max_spp when adaptive).
+  const int rank_n = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
+  PixelRenderer pr{camera, scene, integrator, filter, sampler, rank_n, desc.film.filter.rank_selection};
+
+  const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int W = desc.film.width, H = desc.film.height;
+  const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
+  tbb::enumerable_thread_specific<int64_t> rays(0);
+  bool stopped = false;
+
+  // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
+  auto pass = [&](const char* label, auto&& end_of) {
+    std::atomic<bool> cancelled{false};
+    Progress progress(label, double(tx) * ty, opt.quiet);
+    tbb::parallel_for(tbb::blocked_range<int>(0, tx * ty, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int t = r.begin(); t != r.end(); ++t) {
+        if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
+          cancelled = true;
+          return;
+        }
+        int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
+        int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
+        int64_t& local = rays.local();
+        PixelSample ps(sampler);
+        for (int y = y0; y < y1; ++y)
+          for (int x = x0; x < x1; ++x) {
+            PixelAccum& acc = film.at(x, y);
+            int64_t end = end_of(x, y);
+            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc, ps);
+          }
+        progress.advance();
+      }
+    });
+    stopped = stopped || cancelled;
+    return !cancelled;
+  };
+
+  const AdaptiveDesc& ad = desc.sampler.adaptive;
+  int rounds = 0;
+  if (!ad.enabled) {
+    pass("render", [&](int, int) { return int64_t(desc.sampler.spp); });
+  } else if (pass("render (adaptive, round 0)", [&](int, int) { return int64_t(ad.min_spp); })) {
+    // McCool–Fiume §5.1 / Cook §6: refine by extending prefixes. A pixel whose error is above
+    // the threshold doubles its sample count; its 3x3 neighbours refine with it, so edges
+    // are not left blocky. Samples already taken are never moved or discarded.
+    AdaptiveMetric metric(ad);
+    std::vector<uint8_t> bad(std::size_t(W) * H), active(std::size_t(W) * H);
+    std::vector<double> row_mean(H);
+    for (;;) {
+      if (metric.needs_image_mean()) {
+        // Rows in parallel, then summed in order: the same mean at any thread count.
+        tbb::parallel_for(0, H, [&](int y) {
+          double s = 0;
+          for (int x = 0; x < W; ++x) s += film.at(x, y).mean_luminance();
+          row_mean[y] = s / W;
+        });
+        double s = 0;
+        for (double r : row_mean) s += r;
+        metric.set_image_mean(s / H);
+      }
+      tbb::parallel_for(0, H, [&](int y) {
+        for (int x = 0; x < W; ++x) bad[std::size_t(y) * W + x] = !metric.converged(film.at(x, y));
+      });
+      int64_t n_active = 0;
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          bool a = false;
+          for (int dy = -1; dy <= 1 && !a; ++dy)
+            for (int dx = -1; dx <= 1 && !a; ++dx) {
+              int xx = x + dx, yy = y + dy;
+              a = xx >= 0 && yy >= 0 && xx < W && yy < H && bad[std::size_t(yy) * W + xx];
+            }
+          a = a && film.at(x, y).prefix < ad.max_spp;
+          active[std::size_t(y) * W + x] = a;
+          n_active += a;
+        }
+      if (n_active == 0) break;
+      ++rounds;
+      std::string label = "render (adaptive, round " + std::to_string(rounds) + ")";
+      if (!pass(label.c_str(), [&](int x, int y) {
+            int64_t p = film.at(x, y).prefix;
+            return active[std::size_t(y) * W + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
+          }))
+        break;
+    }
+  }
+  device.check();
+
+  RenderResult res;
+  res.image = film.image(desc.film.exposure);
+  res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.stats.build_seconds = build_seconds;
+  for (int64_t r : rays) res.stats.rays += r;
+  for (float s : res.image.samples) res.stats.samples += int64_t(s);
+  res.stats.spp_mean = double(res.stats.samples) / (double(desc.film.width) * desc.film.height);
+  res.stats.partial = stopped;
+  res.stats.adaptive_rounds = rounds;
+  res.stats.triangles = scene.triangle_count();
+  return res;
+}
+
+}  // namespace pdrt

@@ -1,0 +1,45 @@
+#pragma once
+// Renders a scene: TBB over 16x16 tiles, each pixel's samples drawn from the replayable
+// sampler in index order, so the image is bit-identical for a seed at any thread count.
+#include "renderer/render/embree_device.h"
+#include "renderer/render/film.h"
+#include "sampling/samplers/sampler.h"
+#include "renderer/scene/scene_desc.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+namespace pdrt {
+
+struct RenderOptions {
+  int threads = 0;                        // 0 = all hardware threads
+  bool quiet = false;                     // no progress on stderr
+  const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
+};
+
+struct RenderStats {
+  double seconds = 0;          // total: scene build + rendering
+  double build_seconds = 0;    // Embree BVH build, lights, camera
+  int64_t rays = 0;        // extension + shadow rays
+  int64_t samples = 0;     // camera samples traced
+  double spp_mean = 0;
+  bool partial = false;    // stopped before every pixel was done
+  int adaptive_rounds = 0; // refinement rounds after the first pass
+  std::size_t triangles = 0;
+};
+
+struct RenderResult {
+  Image image;
+  RenderStats stats;
+};
+
+// The sampler the scene (after command-line overrides) asks for.
+std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d);
+
+// Refuses (InputError) a film whose buffers would not fit in this machine's memory.
+void check_film_memory(int width, int height);
+
+RenderResult render(const SceneDesc& scene, const Sampler& sampler, const RenderOptions& options);
+
+}  // namespace pdrt

@@ -1,0 +1,94 @@
+#include "renderer/render/thin_lens_camera.h"
+
+#include <cmath>
+
+namespace pdrt {
+
+namespace {
+
+Vec3 eye_at(const CameraDesc& d, float shutter_time, Vec3* look_at) {
+  if (d.motion.empty()) {
+    *look_at = d.look_at;
+    return d.position;
+  }
+  const auto& k = d.motion;
+  if (shutter_time <= k.front().time) return *look_at = k.front().look_at, k.front().position;
+  if (shutter_time >= k.back().time) return *look_at = k.back().look_at, k.back().position;
+  std::size_t i = 0;
+  while (i + 2 < k.size() && k[i + 1].time <= shutter_time) ++i;
+  float t = (shutter_time - k[i].time) / (k[i + 1].time - k[i].time);
+  *look_at = lerp(t, k[i].look_at, k[i + 1].look_at);
+  return lerp(t, k[i].position, k[i + 1].position);
+}
+
+}  // namespace
+
+ThinLensCamera::ThinLensCamera(const CameraDesc& desc, int width, int height)
+    : desc_(desc), width_(width), height_(height) {
+  tan_half_ = std::tan(0.5f * desc.vfov_deg * kPi / 180.0f);
+  aspect_ = float(width) / float(height);
+  if (desc_.focus_distance <= 0) desc_.focus_distance = length(desc.look_at - desc.position);
+  static_pose_ = pose_at(0.0f);
+}
+
+ThinLensCamera::Pose ThinLensCamera::pose_at(float time) const {
+  float shutter_time = desc_.shutter_open + time * (desc_.shutter_close - desc_.shutter_open);
+  Vec3 look;
+  Pose p;
+  p.eye = eye_at(desc_, shutter_time, &look);
+  p.forward = normalize(look - p.eye);
+  p.right = normalize(cross(p.forward, desc_.up));
+  p.up = cross(p.right, p.forward);
+  return p;
+}
+
+std::array<float, 2> ThinLensCamera::aperture_point(std::array<double, 2> u, int blades, float rotation) {
+  if (blades < 3) {
+    // Shirley–Chiu concentric map: keeps the stratification of the lens pattern.
+    float a = float(2 * u[0] - 1), b = float(2 * u[1] - 1);
+    if (a == 0 && b == 0) return {0, 0};
+    float r, phi;
+    if (std::abs(a) > std::abs(b)) r = a, phi = (kPi / 4) * (b / a);
+    else r = b, phi = kPi / 2 - (kPi / 4) * (a / b);
+    return {r * std::cos(phi + rotation), r * std::sin(phi + rotation)};
+  }
+  // Regular polygon inscribed in the unit circle: pick a wedge with u0, then a uniform point in
+  // the wedge triangle (sqrt for the radial coordinate keeps density uniform).
+  double w = u[0] * blades;
+  int k = std::min(int(w), blades - 1);
+  float s = float(w - k), t = float(u[1]);
+  float a0 = rotation + 2 * kPi * k / blades, a1 = rotation + 2 * kPi * (k + 1) / blades;
+  float r = std::sqrt(t);
+  float x = r * ((1 - s) * std::cos(a0) + s * std::cos(a1));
+  float y = r * ((1 - s) * std::sin(a0) + s * std::sin(a1));
+  return {x, y};
+}
+
+Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> lens_u, float time) const {
+  const Pose p = desc_.motion.empty() ? static_pose_ : pose_at(time);
+  float sx = (2 * film_x / width_ - 1) * tan_half_ * aspect_;
+  float sy = (1 - 2 * film_y / height_) * tan_half_;
+  Vec3 d = p.forward + p.right * sx + p.up * sy;  // direction through the pixel, forward component 1
+  Ray ray;
+  ray.time = time;
+  if (desc_.aperture_radius <= 0) {
+    ray.org = p.eye;
+    ray.dir = normalize(d);
+    return ray;
+  }
+  Vec3 focus = p.eye + d * desc_.focus_distance;  // on the plane of focus
+  auto a = aperture_point(lens_u, desc_.aperture_blades, desc_.aperture_rotation_deg * kPi / 180.0f);
+  ray.org = p.eye + p.right * (a[0] * desc_.aperture_radius) + p.up * (a[1] * desc_.aperture_radius);
+  ray.dir = normalize(focus - ray.org);
+  return ray;
+}
+
+std::array<float, 2> ThinLensCamera::project(const Vec3& w) const {
+  const Pose& p = static_pose_;
+  Vec3 v = w - p.eye;
+  float z = dot(v, p.forward);
+  float sx = dot(v, p.right) / z, sy = dot(v, p.up) / z;
+  return {(sx / (tan_half_ * aspect_) + 1) * 0.5f * width_, (1 - sy / tan_half_) * 0.5f * height_};
+}
+
+}  // namespace pdrt

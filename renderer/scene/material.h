@@ -1,0 +1,25 @@
+#pragma once
+// A material as the scene file describes it (docs/scene-format.md). The BSDF built from it
+// lives in bsdf.h; emission is a property of the material, so any shape can be a light.
+#include "renderer/scene/vec3.h"
+
+#include <string>
+
+namespace pdrt {
+
+enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter };
+enum class GlossLobe { GGX, Phong };
+
+struct Material {
+  std::string name;
+  MaterialType type = MaterialType::Diffuse;
+  Vec3 albedo{0.8f};       // diffuse reflectance; glossy/mirror F0 (Schlick); dielectric transmission tint
+  GlossLobe lobe = GlossLobe::GGX;
+  float roughness = 0.0f;  // perceptual: GGX alpha = roughness^2; 0 = smooth (delta)
+  float exponent = 0.0f;   // normalised Phong exponent (lobe == Phong)
+  float ior = 1.5f;        // dielectric, relative to the outside medium
+  Vec3 radiance{0.0f};     // emitted radiance (Emitter)
+  bool two_sided = false;  // emitters: emit from both faces (default: front face only)
+};
+
+}  // namespace pdrt

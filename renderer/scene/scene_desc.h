@@ -1,0 +1,98 @@
+#pragma once
+// The parsed, validated scene: what scene_loader produces from a scene JSON file
+// (docs/scene-format.md) and the renderer consumes. Everything here is already checked:
+// finite numbers, positive sizes, material indices in range, non-degenerate triangles.
+#include "renderer/scene/material.h"
+#include "renderer/scene/transform.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pdrt {
+
+struct CameraKey {
+  float time = 0;
+  Vec3 position, look_at;
+};
+
+struct CameraDesc {
+  Vec3 position{0, 0, 5}, look_at{0, 0, 0}, up{0, 1, 0};
+  float vfov_deg = 40;
+  float aperture_radius = 0;   // 0 = pinhole
+  float focus_distance = 0;    // <= 0 in the file means |look_at - position|; resolved by the loader
+  int aperture_blades = 0;     // 0 = circular aperture, >= 3 = regular polygon
+  float aperture_rotation_deg = 0;
+  float shutter_open = 0, shutter_close = 1;
+  std::vector<CameraKey> motion;  // optional; sorted by time; overrides position/look_at when present
+};
+
+enum class FilterType { Box, Tent, Gaussian, Mitchell };
+
+struct FilterDesc {
+  FilterType type = FilterType::Gaussian;
+  float radius = 1.5f;             // pixels (Cook's w = 1.5 for the Gaussian)
+  bool rank_selection = false;     // filter importance by rank threshold (McCool–Fiume §5.2)
+};
+
+struct FilmDesc {
+  int width = 512, height = 512;
+  FilterDesc filter;
+  float exposure = 0;  // stops: pixel values are scaled by 2^exposure
+};
+
+struct AdaptiveDesc {
+  bool enabled = false;
+  int min_spp = 4, max_spp = 256;
+  float threshold = 0;  // 0 = the metric's own default (adaptive_metric.h)
+  std::string metric = "error-per-sample";  // error-per-sample | relative-error | contrast
+  std::string variance = "samples";         // samples | halves: how the mean's variance is estimated
+};
+
+struct SamplerDesc {
+  std::string type = "poisson";
+  int spp = 16;
+  uint64_t seed = 0;
+  AdaptiveDesc adaptive;
+};
+
+struct IntegratorDesc {
+  int max_depth = 8;        // path vertices after the camera
+  int rr_depth = 3;         // Russian roulette from this depth on
+};
+
+struct MeshData {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;        // per vertex, optional (empty = flat shading)
+  std::vector<uint32_t> indices;    // triangles, 3 per face
+};
+
+struct ShapeDesc {
+  enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
+  MeshData mesh;                    // Kind::Mesh, in object space
+  Vec3 center{0.0f};                // Kind::Sphere, object space
+  float radius = 1;
+  int material = 0;                 // index into SceneDesc::materials
+  Affine transform;                 // object to world (static part)
+  std::vector<MotionKey> motion;    // optional: world(t) = interpolate(motion, t) * transform
+  std::string where;                // "scene.json: objects[2]" for messages
+};
+
+struct EnvironmentDesc {
+  Vec3 radiance{0.0f};              // constant radiance from every direction
+};
+
+struct SceneDesc {
+  std::filesystem::path file;       // the scene file; relative paths resolve against its directory
+  CameraDesc camera;
+  FilmDesc film;
+  SamplerDesc sampler;
+  IntegratorDesc integrator;
+  std::vector<Material> materials;
+  std::vector<ShapeDesc> shapes;    // objects and area lights (lights carry emitter materials)
+  EnvironmentDesc environment;
+  int64_t degenerate_triangles = 0; // skipped while loading (the loader warns once)
+};
+
+}  // namespace pdrt

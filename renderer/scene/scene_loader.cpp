@@ -1,0 +1,518 @@
+#include "renderer/scene/scene_loader.h"
+
+#include "renderer/render/adaptive_metric.h"
+#include "sampling/core/errors.h"
+#include "renderer/scene/json_document.h"
+#include "renderer/scene/obj_loader.h"
+#include "renderer/scene/text_file.h"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace pdrt {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+class SceneParser {
+ public:
+  SceneParser(const JsonDocument& doc, fs::path dir) : doc_(doc), root_(doc.root()), dir_(std::move(dir)) {}
+  SceneDesc parse();
+
+ private:
+  void camera(const JsonObject& o);
+  void film(const JsonObject& o);
+  void sampler(const JsonObject& o);
+  void integrator(const JsonObject& o);
+  void materials(const JsonNode& n);
+  void objects(const JsonNode& n);
+  void lights(const JsonNode& n);
+  void load_objs();
+
+  std::pair<float, float> shutter() const { return {scene_.camera.shutter_open, scene_.camera.shutter_close}; }
+  int material_named(const JsonNode& n) const;
+  Affine transform(const JsonNode& n) const;
+  Affine rotation(const JsonNode& n) const;
+  Vec3 scale(const JsonNode& n) const;
+  std::vector<MotionKey> motion(const JsonNode& n) const;
+  void check_time(const JsonNode& t, float previous, bool first) const;
+  MeshData quad(const JsonObject& o);
+  void keep_triangles(MeshData& mesh, const JsonNode& where);
+  void place(ShapeDesc& s, const JsonObject& o, const std::string& where) const;
+
+  const JsonDocument& doc_;
+  JsonNode root_;
+  fs::path dir_;
+  SceneDesc scene_;
+  std::map<std::string, int> material_index_;
+
+  struct PendingObj {  // OBJ files load after the whole JSON is validated
+    size_t shape_slot;  // where in scene_.shapes its parts go
+    fs::path path;
+    JsonNode file;
+    int material;  // -1: the MTL's
+    ShapeDesc placement;
+  };
+  std::vector<PendingObj> pending_;
+};
+
+SceneDesc SceneParser::parse() {
+  JsonObject top(root_);
+  top.allow({"camera", "film", "sampler", "integrator", "materials", "objects", "lights"});
+  camera(top.require("camera").object());
+  film(top.require("film").object());
+  if (auto n = top.get("sampler")) sampler(n->object());
+  if (auto n = top.get("integrator")) integrator(n->object());
+  if (auto n = top.get("materials")) materials(*n);
+  if (auto n = top.get("objects")) objects(*n);
+  if (auto n = top.get("lights")) lights(*n);
+  load_objs();
+  return std::move(scene_);
+}
+
+void SceneParser::camera(const JsonObject& o) {
+  o.allow({"position", "look_at", "up", "vfov_deg", "aperture_radius", "focus_distance", "aperture_blades",
+           "aperture_rotation_deg", "shutter", "motion"});
+  CameraDesc& c = scene_.camera;
+  JsonNode pos = o.require("position"), look = o.require("look_at");
+  c.position = pos.vec3();
+  c.look_at = look.vec3();
+  std::optional<JsonNode> up = o.get("up");
+  if (up) c.up = up->nonzero_vec3();
+  if (up && !std::isfinite(length(c.up))) up->fail_got("is too long to normalise in float");
+  auto check_view = [&](const Vec3& p, const Vec3& l, const JsonNode& at_look) {
+    Vec3 d = l - p;
+    if (is_black(d)) at_look.fail_got("must differ from the position");
+    if (!std::isfinite(length(d))) at_look.fail_got("is too far from the position for float arithmetic");
+    if (length(cross(normalize(c.up), normalize(d))) < 1e-6f) {
+      if (up) up->fail_got("must not be parallel to look_at - position");
+      at_look.fail_got("makes the view direction parallel to camera.up (set \"up\")");
+    }
+  };
+  check_view(c.position, c.look_at, look);
+  if (auto n = o.get("vfov_deg")) {
+    c.vfov_deg = n->number();
+    if (!(c.vfov_deg > 0 && c.vfov_deg < 180)) n->fail_got("must be in (0, 180)");
+  }
+  if (auto n = o.get("aperture_radius")) c.aperture_radius = n->non_negative();
+  c.focus_distance = length(c.look_at - c.position);
+  if (auto n = o.get("focus_distance")) c.focus_distance = n->positive();
+  if (auto n = o.get("aperture_blades")) {
+    c.aperture_blades = int(n->integer(0, 1000));
+    if (c.aperture_blades == 1 || c.aperture_blades == 2) n->fail_got("must be 0 (circle) or >= 3");
+  }
+  if (auto n = o.get("aperture_rotation_deg")) c.aperture_rotation_deg = n->number();
+  if (auto n = o.get("shutter")) {
+    if (!n->value().is_array() || n->value().size() != 2) n->fail_got("must be [open, close]");
+    c.shutter_open = n->at(0).number();
+    c.shutter_close = n->at(1).number();
+    if (c.shutter_open > c.shutter_close) n->fail_got("must have open <= close");
+  }
+  if (auto n = o.get("motion")) {
+    size_t count = n->array_size(2);
+    for (size_t i = 0; i < count; ++i) {
+      JsonObject k = n->at(i).object();
+      k.allow({"time", "position", "look_at"});
+      CameraKey key;
+      JsonNode t = k.require("time");
+      check_time(t, i ? c.motion.back().time : 0, i == 0);
+      key.time = t.number();
+      key.position = k.require("position").vec3();
+      JsonNode kl = k.require("look_at");
+      key.look_at = kl.vec3();
+      check_view(key.position, key.look_at, kl);
+      c.motion.push_back(key);
+    }
+  }
+}
+
+void SceneParser::check_time(const JsonNode& t, float previous, bool first) const {
+  float time = t.number();
+  auto [open, close] = shutter();
+  if (time < open || time > close) {
+    std::ostringstream s;
+    s << "must be within the shutter [" << open << ", " << close << "]";
+    t.fail_got(s.str());
+  }
+  if (!first && !(time > previous)) {
+    std::ostringstream s;
+    s << "must be greater than the previous key's time (" << previous << ")";
+    t.fail_got(s.str());
+  }
+}
+
+void SceneParser::film(const JsonObject& o) {
+  o.allow({"width", "height", "filter", "exposure"});
+  FilmDesc& f = scene_.film;
+  f.width = int(o.require("width").integer(1, 65536));
+  f.height = int(o.require("height").integer(1, 65536));
+  if (auto n = o.get("exposure")) f.exposure = n->number();
+  if (auto n = o.get("filter")) {
+    JsonObject fo = n->object();
+    fo.allow({"type", "radius", "selection"});
+    std::string type = "gaussian";
+    if (auto t = fo.get("type")) type = t->choice({"box", "tent", "gaussian", "mitchell"});
+    static const std::map<std::string, std::pair<FilterType, float>> kinds = {
+        {"box", {FilterType::Box, 0.5f}},
+        {"tent", {FilterType::Tent, 1.0f}},
+        {"gaussian", {FilterType::Gaussian, 1.5f}},
+        {"mitchell", {FilterType::Mitchell, 2.0f}}};
+    std::tie(f.filter.type, f.filter.radius) = kinds.at(type);
+    if (auto r = fo.get("radius")) f.filter.radius = r->positive();
+    if (auto s = fo.get("selection")) f.filter.rank_selection = s->choice({"weights", "rank"}) == "rank";
+  }
+}
+
+void SceneParser::sampler(const JsonObject& o) {
+  o.allow({"type", "spp", "seed", "adaptive"});
+  SamplerDesc& s = scene_.sampler;
+  if (auto n = o.get("type")) s.type = n->choice({"random", "jitter", "poisson", "sobol"});
+  if (auto n = o.get("spp")) s.spp = n->int_at_least(1);
+  if (auto n = o.get("seed")) s.seed = n->unsigned_integer();
+  if (auto n = o.get("adaptive")) {
+    JsonObject a = n->object();
+    a.allow({"min_spp", "max_spp", "threshold", "metric", "variance"});
+    s.adaptive.enabled = true;
+    auto min_n = a.get("min_spp"), max_n = a.get("max_spp");
+    if (min_n) s.adaptive.min_spp = min_n->int_at_least(1);
+    if (max_n) s.adaptive.max_spp = max_n->int_at_least(1);
+    if (s.adaptive.max_spp < s.adaptive.min_spp) {
+      std::string bound = "must be >= min_spp (" + std::to_string(s.adaptive.min_spp) + ")";
+      if (max_n) max_n->fail_got(bound);
+      min_n->fail_got("must be <= max_spp (default " + std::to_string(s.adaptive.max_spp) + ")");
+    }
+    if (auto t = a.get("threshold")) s.adaptive.threshold = t->positive();
+    if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetrics);
+    if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVariances);
+  }
+}
+
+void SceneParser::integrator(const JsonObject& o) {
+  o.allow({"max_depth", "rr_depth"});
+  if (auto n = o.get("max_depth")) scene_.integrator.max_depth = n->int_at_least(1);
+  if (auto n = o.get("rr_depth")) scene_.integrator.rr_depth = n->int_at_least(1);
+}
+
+void SceneParser::materials(const JsonNode& n) {
+  JsonObject all = n.object();
+  for (auto it = n.value().begin(); it != n.value().end(); ++it) {
+    JsonNode mn = all.child(it.key());
+    if (it.key().empty()) mn.fail_key("material name must not be empty");
+    JsonObject o = mn.object();
+    Material m;
+    m.name = it.key();
+    std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter"});
+    if (type == "diffuse") {
+      o.allow({"type", "albedo"});
+      m.type = MaterialType::Diffuse;
+      m.albedo = Vec3(0.8f);
+    } else if (type == "glossy") {
+      o.allow({"type", "albedo", "roughness", "exponent", "lobe"});
+      m.type = MaterialType::Glossy;
+      m.albedo = Vec3(0.9f);
+      auto rough = o.get("roughness"), expo = o.get("exponent"), lobe = o.get("lobe");
+      if (rough && expo)
+        expo->fail_key("cannot be combined with roughness: give roughness (GGX lobe) or exponent (Phong lobe)");
+      if (lobe) {
+        bool phong = lobe->choice({"ggx", "phong"}) == "phong";
+        if (phong && rough) lobe->fail_got("does not match roughness (a GGX parameter)");
+        if (!phong && expo) lobe->fail_got("does not match exponent (a Phong parameter)");
+        if (!rough && !expo) o.require(phong ? "exponent" : "roughness");
+      }
+      if (!rough && !expo) mn.fail("needs roughness (GGX lobe) or exponent (Phong lobe)");
+      if (rough) {
+        m.lobe = GlossLobe::GGX;
+        m.roughness = rough->in_unit_interval();
+      } else {
+        m.lobe = GlossLobe::Phong;
+        m.exponent = expo->positive();
+      }
+    } else if (type == "mirror") {
+      o.allow({"type", "albedo"});
+      m.type = MaterialType::Mirror;
+      m.albedo = Vec3(1.0f);
+    } else if (type == "dielectric") {
+      o.allow({"type", "albedo", "ior", "roughness"});
+      m.type = MaterialType::Dielectric;
+      m.albedo = Vec3(1.0f);
+      if (auto x = o.get("ior")) m.ior = x->positive();
+      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+    } else {
+      o.allow({"type", "radiance", "two_sided"});
+      m.type = MaterialType::Emitter;
+      m.radiance = o.require("radiance").radiance();
+      if (auto x = o.get("two_sided")) m.two_sided = x->boolean();
+    }
+    if (auto a = o.get("albedo")) m.albedo = a->color();
+    material_index_[m.name] = int(scene_.materials.size());
+    scene_.materials.push_back(std::move(m));
+  }
+}
+
+int SceneParser::material_named(const JsonNode& n) const {
+  std::string name = n.string();
+  auto it = material_index_.find(name);
+  if (it == material_index_.end()) n.fail("unknown material " + json_quoted(name));
+  return it->second;
+}
+
+Vec3 SceneParser::scale(const JsonNode& n) const {
+  if (n.value().is_number()) {
+    float s = n.number();
+    if (s == 0) n.fail_got("must be non-zero");
+    return Vec3(s);
+  }
+  Vec3 s = n.vec3();
+  if (s.x == 0 || s.y == 0 || s.z == 0) n.fail_got("must have non-zero components");
+  return s;
+}
+
+Affine SceneParser::rotation(const JsonNode& n) const {
+  JsonObject o = n.object();
+  o.allow({"axis", "degrees"});
+  Vec3 axis = o.require("axis").nonzero_vec3();
+  return Affine::rotate(axis, o.require("degrees").number());
+}
+
+Affine SceneParser::transform(const JsonNode& n) const {
+  JsonObject o = n.object();
+  o.allow({"translate", "rotate", "scale", "matrix"});
+  Affine m;
+  if (auto mat = o.get("matrix")) {
+    for (const char* other : {"translate", "rotate", "scale"})
+      if (o.has(other)) mat->fail_key(std::string("cannot be combined with ") + other);
+    const json& v = mat->value();
+    if (!v.is_array() || (v.size() != 12 && v.size() != 16)) mat->fail_got("must be an array of 12 or 16 numbers");
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) m.m[r][c] = mat->at(size_t(4 * r + c)).number();
+    if (v.size() == 16)
+      for (int c = 0; c < 4; ++c)
+        if (mat->at(size_t(12 + c)).number() != (c == 3 ? 1.0f : 0.0f)) mat->fail("last row must be 0 0 0 1");
+  } else {
+    Affine r;
+    if (auto rot = o.get("rotate")) {
+      if (rot->value().is_array()) {
+        size_t count = rot->array_size(1);
+        for (size_t i = 0; i < count; ++i) r = rotation(rot->at(i)) * r;  // first listed = innermost
+      } else {
+        r = rotation(*rot);
+      }
+    }
+    Affine t, s;
+    if (auto x = o.get("translate")) t = Affine::translate(x->vec3());
+    if (auto x = o.get("scale")) s = Affine::scale(scale(*x));
+    m = t * r * s;
+  }
+  float det = m.determinant();
+  if (!(std::isfinite(det) && det != 0)) n.fail("is singular (determinant " + std::to_string(det) + ")");
+  return m;
+}
+
+std::vector<MotionKey> SceneParser::motion(const JsonNode& n) const {
+  std::vector<MotionKey> keys;
+  size_t count = n.array_size(2);
+  for (size_t i = 0; i < count; ++i) {
+    JsonObject o = n.at(i).object();
+    o.allow({"time", "translate", "rotate", "scale"});
+    MotionKey k;
+    JsonNode t = o.require("time");
+    check_time(t, i ? keys.back().time : 0, i == 0);
+    k.time = t.number();
+    if (auto x = o.get("translate")) k.translate = x->vec3();
+    if (auto x = o.get("rotate")) {
+      JsonObject r = x->object();
+      r.allow({"axis", "degrees"});
+      Vec3 axis = r.require("axis").nonzero_vec3();
+      k.rotate = Quat::from_axis_angle(axis, r.require("degrees").number());
+    }
+    if (auto x = o.get("scale")) k.scale = scale(*x);
+    keys.push_back(k);
+  }
+  return keys;
+}
+
+void SceneParser::place(ShapeDesc& s, const JsonObject& o, const std::string& where) const {
+  if (auto t = o.get("transform")) s.transform = transform(*t);
+  if (auto m = o.get("motion")) s.motion = motion(*m);
+  s.where = doc_.name() + ": " + where;
+}
+
+MeshData SceneParser::quad(const JsonObject& o) {
+  Vec3 corner = o.require("corner").vec3();
+  JsonNode e1n = o.require("edge1"), e2n = o.require("edge2");
+  Vec3 e1 = e1n.nonzero_vec3(), e2 = e2n.nonzero_vec3();
+  if (is_black(cross(e1, e2))) e2n.fail_got("must not be parallel to edge1");
+  MeshData m;
+  m.positions = {corner, corner + e1, corner + e1 + e2, corner + e2};
+  m.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise about cross(edge1, edge2)
+  keep_triangles(m, e2n);
+  return m;
+}
+
+// Drops degenerate triangles (repeated vertex, zero area) and counts them.
+void SceneParser::keep_triangles(MeshData& mesh, const JsonNode& where) {
+  size_t kept = 0, skipped = 0;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+    const auto& p = mesh.positions;
+    if (a == b || b == c || a == c || is_black(cross(p[b] - p[a], p[c] - p[a]))) {
+      ++skipped;
+      continue;
+    }
+    mesh.indices[kept++] = a, mesh.indices[kept++] = b, mesh.indices[kept++] = c;
+  }
+  mesh.indices.resize(kept);
+  scene_.degenerate_triangles += int64_t(skipped);
+  if (kept == 0) where.fail("leaves no triangles (all " + std::to_string(skipped) + " are degenerate)");
+}
+
+void SceneParser::objects(const JsonNode& n) {
+  size_t count = n.array_size(0);
+  for (size_t i = 0; i < count; ++i) {
+    JsonNode on = n.at(i);
+    JsonObject o = on.object();
+    std::string type = o.require("type").choice({"sphere", "quad", "mesh", "obj"});
+    ShapeDesc s;
+    if (type == "sphere") {
+      o.allow({"type", "material", "transform", "motion", "center", "radius"});
+      s.kind = ShapeDesc::Kind::Sphere;
+      if (auto c = o.get("center")) s.center = c->vec3();
+      s.radius = o.require("radius").positive();
+    } else if (type == "quad") {
+      o.allow({"type", "material", "transform", "motion", "corner", "edge1", "edge2"});
+      s.mesh = quad(o);
+    } else if (type == "mesh") {
+      o.allow({"type", "material", "transform", "motion", "vertices", "indices", "normals"});
+      JsonNode vn = o.require("vertices");
+      size_t nv = vn.array_size(1);
+      if (nv > UINT32_MAX) vn.fail("has too many vertices");
+      s.mesh.positions.reserve(nv);
+      for (size_t v = 0; v < nv; ++v) s.mesh.positions.push_back(vn.at(v).vec3());
+      JsonNode in = o.require("indices");
+      size_t ni = in.array_size(3);
+      if (ni % 3) in.fail("length must be a multiple of 3, got " + std::to_string(ni));
+      s.mesh.indices.reserve(ni);
+      for (size_t k = 0; k < ni; ++k) {
+        const json& x = in.value()[k];  // fast path; build the element's node only to report
+        if (!x.is_number_unsigned() || x.get<uint64_t>() >= nv)
+          in.at(k).fail_got("must be a vertex index in [0, " + std::to_string(nv - 1) + "]");
+        s.mesh.indices.push_back(uint32_t(x.get<uint64_t>()));
+      }
+      if (auto nn = o.get("normals")) {
+        if (nn->array_size(0) != nv) nn->fail("must have one normal per vertex (" + std::to_string(nv) + "), got " + std::to_string(nn->value().size()));
+        for (size_t v = 0; v < nv; ++v) s.mesh.normals.push_back(nn->at(v).nonzero_vec3());
+      }
+      keep_triangles(s.mesh, in);
+    } else {
+      o.allow({"type", "material", "transform", "motion", "file"});
+      JsonNode file = o.require("file");
+      fs::path path = dir_ / file.string();
+      std::string reason;
+      if (!can_open_file(path, reason)) file.fail("cannot open " + json_quoted(file.string()) + ": " + reason);
+      int material = -1;
+      if (auto m = o.get("material")) material = material_named(*m);
+      place(s, o, on.path());
+      pending_.push_back({scene_.shapes.size(), path, file, material, std::move(s)});
+      continue;
+    }
+    s.material = material_named(o.require("material"));
+    place(s, o, on.path());
+    scene_.shapes.push_back(std::move(s));
+  }
+}
+
+void SceneParser::lights(const JsonNode& n) {
+  size_t count = n.array_size(0);
+  std::optional<JsonNode> environment;
+  for (size_t i = 0; i < count; ++i) {
+    JsonNode ln = n.at(i);
+    JsonObject o = ln.object();
+    std::string type = o.require("type").choice({"quad", "sphere", "environment"});
+    if (type == "environment") {
+      o.allow({"type", "radiance"});
+      if (environment) ln.fail("is a second environment light (at most one; the first is " + environment->path() + ")");
+      environment = ln;
+      scene_.environment.radiance = o.require("radiance").radiance();
+      continue;
+    }
+    ShapeDesc s;
+    Material m;
+    m.name = ln.path();
+    m.type = MaterialType::Emitter;
+    if (type == "quad") {
+      o.allow({"type", "corner", "edge1", "edge2", "radiance", "two_sided", "transform", "motion"});
+      s.mesh = quad(o);
+      if (auto t = o.get("two_sided")) m.two_sided = t->boolean();
+    } else {
+      o.allow({"type", "center", "radius", "radiance", "transform", "motion"});
+      s.kind = ShapeDesc::Kind::Sphere;
+      if (auto c = o.get("center")) s.center = c->vec3();
+      s.radius = o.require("radius").positive();
+    }
+    m.radiance = o.require("radiance").radiance();
+    s.material = int(scene_.materials.size());
+    scene_.materials.push_back(m);
+    place(s, o, ln.path());
+    scene_.shapes.push_back(std::move(s));
+  }
+}
+
+bool same_material(const Material& a, const Material& b) {
+  return a.name == b.name && a.type == b.type && is_black(a.albedo - b.albedo) && a.lobe == b.lobe &&
+         a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior &&
+         is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided;
+}
+
+void SceneParser::load_objs() {
+  // Insert from the back so earlier slots stay valid.
+  for (auto p = pending_.rbegin(); p != pending_.rend(); ++p) {
+    ObjModel model = load_obj(p->path, p->material >= 0);
+    scene_.degenerate_triangles += model.degenerate_triangles;
+    if (model.parts.empty())
+      p->file.fail("has no triangles (all " + std::to_string(model.degenerate_triangles) + " skipped as degenerate)");
+    std::vector<ShapeDesc> shapes;
+    for (ObjPart& part : model.parts) {
+      ShapeDesc s = p->placement;
+      s.mesh = std::move(part.mesh);
+      s.material = p->material;
+      if (part.material) {
+        // Objects sharing an OBJ share its materials.
+        auto it = material_index_.find(part.material->name);
+        if (it != material_index_.end() && same_material(scene_.materials[it->second], *part.material)) {
+          s.material = it->second;
+        } else {
+          s.material = int(scene_.materials.size());
+          material_index_[part.material->name] = s.material;
+          scene_.materials.push_back(*part.material);
+        }
+      }
+      shapes.push_back(std::move(s));
+    }
+    scene_.shapes.insert(scene_.shapes.begin() + std::ptrdiff_t(p->shape_slot), std::make_move_iterator(shapes.begin()),
+                         std::make_move_iterator(shapes.end()));
+  }
+}
+
+}  // namespace
+
+SceneDesc load_scene(const fs::path& file) {
+  std::string reason;
+  auto text = read_text_file(file, reason);
+  if (!text) throw InputError(file.string() + ": cannot open: " + reason);
+  JsonDocument doc(file.string(), std::move(*text));
+
+  SceneParser parser(doc, file.parent_path());
+  SceneDesc scene = parser.parse();
+  scene.file = file;
+  if (scene.degenerate_triangles > 0)
+    std::cerr << doc.name() << ": warning: skipped " << scene.degenerate_triangles << " degenerate triangle"
+              << (scene.degenerate_triangles == 1 ? "" : "s") << "\n";
+  return scene;
+}
+
+}  // namespace pdrt

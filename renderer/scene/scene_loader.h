@@ -1,0 +1,15 @@
+#pragma once
+// Reads a JSON scene file (docs/scene-format.md) and the OBJ/MTL files it names into a
+// validated SceneDesc. Every problem is an InputError whose one-line message starts with
+// file:line:col and the JSON path, e.g. "scene.json:12:7: objects[2].radius must be > 0, got -1".
+#include "renderer/scene/scene_desc.h"
+
+#include <filesystem>
+
+namespace pdrt {
+
+// Relative paths in the file resolve against the file's directory. Prints one warning line
+// to stderr when degenerate triangles were skipped.
+SceneDesc load_scene(const std::filesystem::path& file);
+
+}  // namespace pdrt

@@ -1,0 +1,62 @@
+#include "sampling/core/atomic_file.h"
+
+#include "sampling/core/errors.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+namespace pdrt {
+namespace fs = std::filesystem;
+
+namespace {
+fs::path temp_beside(const fs::path& path) {
+  std::string name = ".";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "." + string
+  name += path.filename().string();
+  name += ".tmp";
+  name += std::to_string(::getpid());
+  return path.parent_path() / name;
+}
+fs::path dir_of(const fs::path& path) { return path.parent_path().empty() ? fs::path(".") : path.parent_path(); }
+}  // namespace
+
+void check_writable(const fs::path& path) {
+  fs::path dir = dir_of(path);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(path.string() + ": directory '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw InputError(path.string() + ": directory '" + dir.string() + "' is not writable (" + std::strerror(errno) + ")");
+  if (fs::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, expected a file path");
+}
+
+void write_path_atomically(const fs::path& path, const std::function<void(const fs::path&)>& writer) {
+  check_writable(path);
+  fs::path tmp = temp_beside(path);
+  try {
+    writer(tmp);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw;
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError(path.string() + ": cannot write (" + ec.message() + ")");
+  }
+}
+
+void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& writer) {
+  write_path_atomically(path, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw InputError(path.string() + ": cannot open for writing (" + std::strerror(errno) + ")");
+    writer(out);
+    out.flush();
+    if (!out) throw InputError(path.string() + ": write failed (" + std::strerror(errno) + ")");
+  });
+}
+
+}  // namespace pdrt

@@ -1,0 +1,28 @@
+// `random`: independent uniform values (white noise), the baseline. Each value hashes its
+// full coordinates, so it is replayable in any order.
+#include "sampling/core/rng.h"
+#include "sampling/samplers/sampler.h"
+
+namespace pdrt {
+namespace {
+
+double to_unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+class RandomSampler final : public Sampler {
+ public:
+  explicit RandomSampler(uint64_t seed) : Sampler(seed) {}
+  std::string name() const override { return "random"; }
+  double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
+    return to_unit(hash_combine(stream(px, py, f, bounce), uint64_t(index)));
+  }
+  Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
+    uint64_t h = hash_combine(stream(px, py, f, bounce), uint64_t(index));
+    return {to_unit(h), to_unit(mix64(h))};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Sampler> make_random_sampler(uint64_t seed) { return std::make_unique<RandomSampler>(seed); }
+
+}  // namespace pdrt

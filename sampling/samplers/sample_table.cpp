@@ -1,0 +1,323 @@
+// Generation, serialisation and checking of hierarchical Poisson-disk tables.
+#include "sampling/samplers/sample_table.h"
+
+#include "sampling/core/atomic_file.h"
+#include "sampling/generators/balanced_relaxation_1d.h"
+#include "sampling/core/errors.h"
+#include "sampling/generators/generator.h"
+#include "sampling/analysis/min_distance.h"
+#include "sampling/core/progress.h"
+#include "sampling/core/rng.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace pdrt {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'D', 'R', 'T', 'T', 'B', 'L', '1'};
+
+uint32_t to_fixed(double x) {
+  double v = std::floor(x * 4294967296.0);
+  return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
+}
+
+uint64_t fnv1a(const char* data, std::size_t n) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i < n; ++i) h = (h ^ uint8_t(data[i])) * 0x100000001b3ull;
+  return h;
+}
+
+PointSet relaxation_draw(const TableParams& p, int dim, int64_t count, uint64_t seed) {
+  if (dim == 1) {
+    // 1-D relaxation keeps the radius but not the density (balanced_relaxation_1d.h).
+    BalancedRelaxation1D b;
+    b.count = count;
+    b.seed = seed;
+    return balanced_relaxation_1d(b);
+  }
+  GeneratorParams g;
+  g.method = "mccool";
+  g.dim = dim;
+  g.count = count;
+  g.periodic = true;  // tables tile: prefixes stay Poisson-disk across pixel/tile borders
+  g.seed = seed;
+  g.decay = p.decay;
+  g.attempts = int64_t(p.attempts);
+  g.magnification = p.magnification;
+  return generate(g);
+}
+
+// Issue 3's bar for every table: rho >= 0.65 for every prefix of >= 16 points and >= 0.72
+// for the whole set. 2-D relaxation sets clear it as generated; about 1 in 5 balanced 1-D
+// sets ends a little under 0.72 (the last points find no gap twice the final radius), so a
+// table that misses is redrawn with the next attempt.
+constexpr double kPrefixRhoMin = 0.65, kFullRhoMin = 0.72;
+constexpr std::size_t kFirstPrefix = 16;
+constexpr int kMaxDraws = 256;
+
+bool meets_quality_bar(const PointSet& ps) {
+  PointSet q = ps;  // judged as stored: 32-bit fixed point
+  for (double& x : q.coords) x = double(to_fixed(x)) * 0x1.0p-32;
+  const std::vector<double> rho = prefix_relative_radius(q, true);
+  return !rho.empty() && rho.back() >= kFullRhoMin && worst_prefix_rho(rho, kFirstPrefix) >= kPrefixRhoMin;
+}
+
+PointSet relaxation(const TableParams& p, int dim, int64_t count, uint64_t table_index) {
+  const uint64_t first_seed = hash_combine(p.seed, (uint64_t(p.family) << 32) | table_index);
+  for (int draw = 0; draw < kMaxDraws; ++draw) {
+    PointSet ps = relaxation_draw(p, dim, count, draw == 0 ? first_seed : hash_combine(first_seed, uint64_t(draw)));
+    if (meets_quality_bar(ps)) return ps;
+  }
+  std::ostringstream msg;
+  msg << "tables: " << family_name(p.family) << " table " << table_index << " missed rho >= " << kPrefixRhoMin
+      << " (prefixes) / " << kFullRhoMin << " (whole) in " << kMaxDraws << " draws; try other relaxation parameters";
+  throw InputError(msg.str());
+}
+
+// Pixel family: points of one torus pattern grouped by the pixel of the P x P tile they fall
+// in, rank order kept inside each pixel, coordinates rewritten as offsets within the pixel.
+void bucket_by_pixel(const PointSet& ps, uint32_t P, std::vector<uint32_t>& coords, std::vector<float>& radius,
+                     std::vector<uint32_t>& start, std::vector<uint32_t>& count) {
+  std::size_t cells = std::size_t(P) * P;
+  count.assign(cells, 0);
+  std::vector<uint32_t> cell_of(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    auto q = ps.point(i);
+    uint32_t a = std::min(uint32_t(q[0] * P), P - 1), b = std::min(uint32_t(q[1] * P), P - 1);
+    cell_of[i] = b * P + a;
+    ++count[cell_of[i]];
+  }
+  start.assign(cells, 0);
+  for (std::size_t c = 1; c < cells; ++c) start[c] = start[c - 1] + count[c - 1];
+  std::vector<uint32_t> fill = start;
+  coords.assign(ps.size() * 2, 0);
+  radius.assign(ps.size(), 0.0f);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    uint32_t c = cell_of[i], slot = fill[c]++;
+    auto q = ps.point(i);
+    coords[2 * slot] = to_fixed(q[0] * P - double(c % P));
+    coords[2 * slot + 1] = to_fixed(q[1] * P - double(c / P));
+    radius[slot] = float(ps.radius[i] * P);  // in pixel units
+  }
+}
+
+}  // namespace
+
+std::size_t SampleTable::memory_bytes() const {
+  std::size_t b = 0;
+  for (std::size_t t = 0; t < coords.size(); ++t) b += coords[t].size() * 4 + radius[t].size() * 4;
+  for (const auto& v : cell_start) b += v.size() * 4;
+  for (const auto& v : cell_count) b += v.size() * 4;
+  return b;
+}
+
+SampleTable generate_table(const TableParams& p, Progress* progress) {
+  if (p.tables < 1 || p.points < 1) throw UsageError("tables: table count and points must be >= 1");
+  if (p.family == Family::Pixel && p.tile < 1) throw UsageError("tables: pixel tile must be >= 1");
+  SampleTable t;
+  t.params = p;
+  if (p.family != Family::Pixel) t.params.tile = 1;
+  t.dim = family_dim(p.family);
+  t.coords.resize(p.tables);
+  t.radius.resize(p.tables);
+  if (p.family == Family::Pixel) {
+    t.cell_start.resize(p.tables);
+    t.cell_count.resize(p.tables);
+  }
+  std::vector<uint32_t> min_count(p.tables, 0);
+  tbb::parallel_for(uint32_t(0), p.tables, [&](uint32_t k) {
+    if (p.family != Family::Pixel) {
+      PointSet ps = relaxation(p, t.dim, p.points, k);
+      t.coords[k].resize(ps.coords.size());
+      for (std::size_t i = 0; i < ps.coords.size(); ++i) t.coords[k][i] = to_fixed(ps.coords[i]);
+      t.radius[k].assign(ps.radius.begin(), ps.radius.end());
+      if (progress) progress->advance();
+      return;
+    }
+    // Poisson-disk counts per pixel vary only a little; grow the pattern until every pixel
+    // of the tile holds the samples wanted.
+    const double pixels = double(p.tile) * p.tile;
+    double total = pixels * p.points * 1.05 + 16;
+    for (;;) {
+      PointSet ps = relaxation(p, 2, int64_t(total), k);
+      bucket_by_pixel(ps, p.tile, t.coords[k], t.radius[k], t.cell_start[k], t.cell_count[k]);
+      min_count[k] = *std::min_element(t.cell_count[k].begin(), t.cell_count[k].end());
+      if (min_count[k] >= p.points) break;
+      total *= 1.05;
+    }
+    if (progress) progress->advance();
+  });
+  t.per_pixel_min = p.family == Family::Pixel ? *std::min_element(min_count.begin(), min_count.end()) : p.points;
+  return t;
+}
+
+// ---- Serialisation ---------------------------------------------------------------------
+
+namespace {
+
+template <class T>
+void put(std::string& out, T v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+template <class T>
+void put_vec(std::string& out, const std::vector<T>& v) {
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+class Reader {
+ public:
+  Reader(const std::string& data, std::string name) : d_(data), name_(std::move(name)) {}
+  template <class T>
+  T get(const char* what) {
+    need(sizeof(T), what);
+    T v;
+    std::memcpy(&v, d_.data() + pos_, sizeof v);
+    pos_ += sizeof v;
+    return v;
+  }
+  template <class T>
+  void get_vec(std::vector<T>& v, std::size_t n, const char* what) {
+    need(n * sizeof(T), what);
+    v.resize(n);
+    std::memcpy(v.data(), d_.data() + pos_, n * sizeof(T));
+    pos_ += n * sizeof(T);
+  }
+  std::size_t pos() const { return pos_; }
+  [[noreturn]] void fail(const std::string& msg) const { throw InputError(name_ + ": " + msg); }
+
+ private:
+  void need(std::size_t n, const char* what) const {
+    if (n > d_.size() - pos_) fail(std::string("truncated: file ends inside ") + what);
+  }
+  const std::string& d_;
+  std::string name_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+void write_table(const std::filesystem::path& path, const SampleTable& t) {
+  std::string out;
+  out.append(kMagic, sizeof kMagic);
+  put<uint32_t>(out, kTableVersion);
+  put<uint8_t>(out, uint8_t(t.params.family));
+  put<uint8_t>(out, uint8_t(t.dim));
+  put<uint16_t>(out, 0);
+  put<uint32_t>(out, t.table_count());
+  put<uint32_t>(out, t.params.points);
+  put<uint32_t>(out, t.params.tile);
+  put<uint32_t>(out, t.per_pixel_min);
+  put<uint64_t>(out, t.params.seed);
+  put<double>(out, t.params.decay);
+  put<double>(out, t.params.attempts);
+  put<double>(out, t.params.magnification);
+  for (uint32_t k = 0; k < t.table_count(); ++k) {
+    put<uint32_t>(out, uint32_t(t.radius[k].size()));
+    if (t.params.family == Family::Pixel) {
+      put_vec(out, t.cell_start[k]);
+      put_vec(out, t.cell_count[k]);
+    }
+    put_vec(out, t.coords[k]);
+    put_vec(out, t.radius[k]);
+  }
+  put<uint64_t>(out, fnv1a(out.data(), out.size()));
+  write_file_atomically(path, [&](std::ostream& os) { os.write(out.data(), std::streamsize(out.size())); });
+}
+
+SampleTable read_table(const std::filesystem::path& path, const Family* expected) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open table file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string data = ss.str();
+  Reader r(data, name);
+  char magic[8];
+  for (char& c : magic) c = r.get<char>("the magic number");
+  if (std::memcmp(magic, kMagic, 8) != 0) r.fail("not a pdrt sample table (bad magic number)");
+  uint32_t version = r.get<uint32_t>("the header");
+  if (version != kTableVersion)
+    r.fail("table format version " + std::to_string(version) + ", this pdrt reads version " +
+           std::to_string(kTableVersion) + "; regenerate with `pdrt tables`");
+  if (data.size() < 8 + 8) r.fail("truncated: no checksum");
+  uint64_t stored;
+  std::memcpy(&stored, data.data() + data.size() - 8, 8);
+  if (fnv1a(data.data(), data.size() - 8) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");
+
+  SampleTable t;
+  uint8_t family = r.get<uint8_t>("the header");
+  if (family >= kFamilyCount) r.fail("unknown family " + std::to_string(family));
+  t.params.family = Family(family);
+  if (expected && *expected != t.params.family)
+    r.fail(std::string("holds the ") + family_name(t.params.family) + " family, expected " + family_name(*expected));
+  t.dim = r.get<uint8_t>("the header");
+  if (t.dim != family_dim(t.params.family)) r.fail("dimension " + std::to_string(t.dim) + " does not match its family");
+  r.get<uint16_t>("the header");
+  uint32_t tables = r.get<uint32_t>("the header");
+  t.params.tables = tables;
+  t.params.points = r.get<uint32_t>("the header");
+  t.params.tile = r.get<uint32_t>("the header");
+  t.per_pixel_min = r.get<uint32_t>("the header");
+  t.params.seed = r.get<uint64_t>("the header");
+  t.params.decay = r.get<double>("the header");
+  t.params.attempts = r.get<double>("the header");
+  t.params.magnification = r.get<double>("the header");
+  const bool pixel = t.params.family == Family::Pixel;
+  if (tables == 0 || t.params.tile == 0 || (pixel && t.params.tile > 4096) || (!pixel && t.params.tile != 1))
+    r.fail("bad table header (tables " + std::to_string(tables) + ", tile " + std::to_string(t.params.tile) + ")");
+  const std::size_t cells = std::size_t(t.params.tile) * t.params.tile;
+  t.coords.resize(tables);
+  t.radius.resize(tables);
+  if (pixel) t.cell_start.resize(tables), t.cell_count.resize(tables);
+  for (uint32_t k = 0; k < tables; ++k) {
+    uint32_t n = r.get<uint32_t>("a table header");
+    if (pixel) {
+      r.get_vec(t.cell_start[k], cells, "a pixel index");
+      r.get_vec(t.cell_count[k], cells, "a pixel index");
+      uint64_t sum = 0;
+      for (std::size_t c = 0; c < cells; ++c) {
+        if (t.cell_start[k][c] != sum) r.fail("pixel index of table " + std::to_string(k) + " is inconsistent");
+        sum += t.cell_count[k][c];
+      }
+      if (sum != n) r.fail("pixel index of table " + std::to_string(k) + " does not cover its points");
+    } else if (n != t.params.points) {
+      r.fail("table " + std::to_string(k) + " has " + std::to_string(n) + " points, header says " +
+             std::to_string(t.params.points));
+    }
+    r.get_vec(t.coords[k], std::size_t(n) * t.dim, "coordinates");
+    r.get_vec(t.radius[k], n, "radii");
+  }
+  if (r.pos() != data.size() - 8) r.fail("trailing bytes after the last table");
+  return t;
+}
+
+std::vector<TableParams> default_table_params() {
+  // See docs/sampling.md for the reasoning behind these sizes.
+  std::vector<TableParams> v;
+  TableParams pixel;
+  pixel.family = Family::Pixel;
+  pixel.tables = 4;
+  pixel.points = 1024;
+  pixel.tile = 4;
+  v.push_back(pixel);
+  for (Family f : {Family::Lens, Family::Time, Family::Light, Family::Gloss}) {
+    TableParams p;
+    p.family = f;
+    p.tables = 16;
+    // Time: twice the samples a pixel uses, so 1024 spp reads a prefix, which is more even
+    // than a whole balanced table (its last points must saturate the gaps for the rho bar).
+    p.points = f == Family::Time ? 2048 : 1024;
+    v.push_back(p);
+  }
+  return v;
+}
+
+std::string table_file_name(Family family) { return std::string(family_name(family)) + ".pdrttbl"; }
+
+}  // namespace pdrt

@@ -1,0 +1,208 @@
+// `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
+#include "tests/support/cli_runner.h"
+#include "renderer/render/image_output.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using namespace pdrt;
+using pdrt::test::run_pdrt;
+using pdrt::test::scratch_dir;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path write_scene(const fs::path& dir, const std::string& film = R"("width": 24, "height": 16)") {
+  fs::path p = dir / "scene.json";
+  std::ofstream(p) << R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {)" << film << R"(},
+  "sampler": {"spp": 4},
+  "materials": {"grey": {"type": "glossy", "albedo": [0.8, 0.8, 0.8], "roughness": 0.4}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1}],
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+}
+)";
+  return p;
+}
+
+}  // namespace
+
+TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
+  fs::path d = scratch_dir("render_exr");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --spp 3 --seed 5 --stats " +
+                    (d / "stats.json").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto in = OIIO::ImageInput::open((d / "out.exr").string());
+  ASSERT_TRUE(in);
+  const auto& spec = in->spec();
+  EXPECT_EQ(spec.width, 24);
+  EXPECT_EQ(spec.nchannels, 12);
+  for (const char* c : {"samples", "variance", "albedo.R", "N.X", "Z"})
+    EXPECT_NE(std::find(spec.channelnames.begin(), spec.channelnames.end(), c), spec.channelnames.end()) << c;
+  EXPECT_EQ(spec.get_string_attribute("pdrt:sampler"), "poisson");
+  EXPECT_EQ(spec.get_string_attribute("pdrt:spp"), "3");
+  EXPECT_EQ(spec.get_string_attribute("pdrt:seed"), "5");
+  EXPECT_EQ(spec.get_string_attribute("pdrt:partial"), "false");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  for (const char* k : {"seconds", "rays", "mrays_per_second", "samples", "spp_mean"}) EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_GT(j["rays"].get<int64_t>(), 0);
+}
+
+TEST(CliRender, PngIsSrgbAndCommandLineOverridesTheScene) {
+  fs::path d = scratch_dir("render_png");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.png").string() +
+                    " --width 10 --height 6 --sampler jitter --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto in = OIIO::ImageInput::open((d / "out.png").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 10);
+  EXPECT_EQ(in->spec().height, 6);
+  EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
+}
+
+TEST(CliRender, BadArgumentsAreRefusedBeforeRendering) {
+  fs::path d = scratch_dir("render_bad");
+  fs::path scene = write_scene(d);
+  const std::string out = (d / "out.exr").string();
+  struct Case {
+    std::string args, needle;
+    int code;
+  } cases[] = {
+      {"--spp 0", "--spp", 2},
+      {"--sampler halton", "halton", 2},
+      {"--width -3", "--width", 2},
+      {"--threads -1", "--threads", 2},
+      {"--min-spp 0", "--min-spp", 2},
+      {"--adaptive-threshold -1", "--adaptive-threshold", 2},
+      {"--adaptive-metric foo", "foo", 2},
+      {"--adaptive-variance foo", "foo", 2},
+      {"--min-spp 8 --max-spp 4", "min_spp", 2},
+  };
+  for (const auto& c : cases) {
+    auto r = run_pdrt("render " + scene.string() + " -o " + out + " " + c.args);
+    EXPECT_EQ(r.exit_code, c.code) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << r.err;
+    EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.bmp").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "missing-dir" / "out.exr").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+  r = run_pdrt("render " + (d / "nope.json").string() + " -o " + out);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliRender, AdaptiveFlagsRefineAndStatsReportTheSppDistribution) {
+  fs::path d = scratch_dir("render_adaptive");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() +
+                    " --min-spp 2 --max-spp 16 --adaptive-metric contrast --stats " + (d / "stats.json").string() +
+                    " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  ASSERT_TRUE(j.contains("adaptive")) << j.dump();
+  EXPECT_EQ(j["adaptive"]["min_spp"], 2);
+  EXPECT_EQ(j["adaptive"]["max_spp"], 16);
+  EXPECT_EQ(j["adaptive"]["metric"], "contrast");
+  EXPECT_DOUBLE_EQ(j["adaptive"]["threshold"].get<double>(), 0.4);  // the metric's own default
+  const auto& dist = j["spp_distribution"];
+  EXPECT_LE(dist["max"].get<double>(), 16.0);
+  EXPECT_LE(dist["min"].get<double>(), dist["p50"].get<double>());
+  int64_t pixels = 0;
+  for (const auto& b : dist["histogram"]) pixels += b["pixels"].get<int64_t>();
+  EXPECT_EQ(pixels, j["width"].get<int64_t>() * j["height"].get<int64_t>());
+}
+
+TEST(CliRender, FramebufferTooLargeForMemoryIsRefused) {
+  fs::path d = scratch_dir("render_huge");
+  fs::path scene = write_scene(d, R"("width": 65536, "height": 65536)");
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "out.exr"));
+}
+
+TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
+  fs::path d = scratch_dir("compare");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers jitter,poisson --spp 2,8,32 --reference-spp 512 --cache-dir " +
+                    (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  ASSERT_EQ(j["runs"].size(), 6u);
+  for (const char* s : {"jitter", "poisson"}) {
+    std::vector<double> e;
+    for (const auto& run : j["runs"])
+      if (run["sampler"] == s) e.push_back(run["rmse"]);
+    ASSERT_EQ(e.size(), 3u);
+    EXPECT_LT(e[2], e[0]) << s;
+    EXPECT_LT(j["slopes"][s].get<double>(), -0.3) << s;
+  }
+  EXPECT_TRUE(fs::exists(d / "report" / "results.csv"));
+  EXPECT_TRUE(fs::exists(d / "report" / "errors" / "poisson-8.png"));
+  EXPECT_FALSE(j["reference"]["cached"].get<bool>());
+  // The second run reuses the cached reference.
+  r = run_pdrt("compare " + scene.string() + " --out " + (d / "report2").string() +
+               " --samplers jitter --spp 2,8 --reference-spp 512 --cache-dir " + (d / "cache").string() +
+               " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j2 = nlohmann::json::parse(std::ifstream(d / "report2" / "results.json"));
+  EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
+}
+
+TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
+  fs::path d = scratch_dir("compare_adaptive");
+  fs::path scene = write_scene(d, R"("width": 16, "height": 12)");
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers poisson --spp 2,8,32 --reference-spp 256 --adaptive --adaptive-target-spp 8"
+                    " --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  ASSERT_GE(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4 (more while the target is not crossed)";
+  ASSERT_LE(j["adaptive_sweep"].size(), 13u);
+  EXPECT_DOUBLE_EQ(j["adaptive_sweep"][4]["threshold"].get<double>(), 1.0 / 16) << "the metric's default in the middle";
+  EXPECT_EQ(j["adaptive_target"]["spp"], 8);
+  const auto& t = j["adaptive_target"]["samplers"]["poisson"];
+  ASSERT_TRUE(t["ratio"].is_number()) << t.dump();
+  EXPECT_GT(t["ratio"].get<double>(), 0);
+  std::stringstream csv;
+  csv << std::ifstream(d / "report" / "adaptive.csv").rdbuf();
+  EXPECT_EQ(pdrt::test::line_count(csv.str()), int(j["adaptive_sweep"].size()) + 1) << "a header and one row per run";
+}
+
+TEST(CliCompare, BadOptionsAreUsageErrors) {
+  fs::path d = scratch_dir("compare_bad");
+  fs::path scene = write_scene(d);
+  for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
+                        "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive --adaptive-target-spp 3"}) {
+    auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
+    EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
+    EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(d / "r" / "results.json"));
+}
+
+// Ctrl-C: the render stops, the image so far is written and marked partial, exit 130.
+TEST(CliRender, InterruptWritesPartialImage) {
+  fs::path d = scratch_dir("render_int");
+  fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
+  fs::path out = d / "out.exr";
+  std::string cmd = "timeout --preserve-status -s INT 3 '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
+                    out.string() + " --spp 4096 --quiet 2>/dev/null";
+  int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  auto in = OIIO::ImageInput::open(out.string());
+  ASSERT_TRUE(in) << "the partial image must be written";
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
+}

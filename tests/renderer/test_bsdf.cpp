@@ -1,0 +1,655 @@
+// BSDFs: sampling matches pdf (chi-square), weights match eval, energy, reciprocity, Fresnel.
+#include "renderer/render/bsdf.h"
+#include "renderer/render/fresnel.h"
+#include "sampling/analysis/incomplete_gamma.h"
+#include "renderer/render/microfacet_ggx.h"
+#include "sampling/core/rng.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+// Rng::uniform() is a double in [0, 1); rounding to float can give 1.0f, which is out of range.
+float uniform_float(Rng& rng) { return std::min(float(rng.uniform()), 0x1.fffffep-1f); }
+
+Vec3 direction(float theta_deg, float phi = 0.7f) {
+  float t = theta_deg * kPi / 180.0f;
+  return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
+}
+
+Vec3 uniform_sphere(Rng& rng) {
+  double z = 1.0 - 2.0 * rng.uniform(), phi = 2.0 * M_PI * rng.uniform();
+  double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
+}
+
+Material diffuse(Vec3 albedo) {
+  Material m;
+  m.type = MaterialType::Diffuse;
+  m.albedo = albedo;
+  return m;
+}
+
+Material ggx(float roughness, Vec3 albedo = Vec3(1.0f)) {
+  Material m;
+  m.type = MaterialType::Glossy;
+  m.lobe = GlossLobe::GGX;
+  m.roughness = roughness;
+  m.albedo = albedo;
+  return m;
+}
+
+Material phong(float exponent, Vec3 albedo = Vec3(1.0f)) {
+  Material m;
+  m.type = MaterialType::Glossy;
+  m.lobe = GlossLobe::Phong;
+  m.exponent = exponent;
+  m.albedo = albedo;
+  return m;
+}
+
+Material dielectric(float roughness, float ior = 1.5f, Vec3 albedo = Vec3(1.0f)) {
+  Material m;
+  m.type = MaterialType::Dielectric;
+  m.roughness = roughness;
+  m.ior = ior;
+  m.albedo = albedo;
+  return m;
+}
+
+Material mirror(Vec3 albedo) {
+  Material m;
+  m.type = MaterialType::Mirror;
+  m.albedo = albedo;
+  return m;
+}
+
+double rel_diff(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+
+// ---- Chi-square goodness of fit of sample() against pdf() (after pbrt-v3's and Mitsuba's test).
+
+constexpr int kCosBins = 20, kPhiBins = 40;
+
+Vec3 from_theta_phi(double theta, double phi) {
+  return {float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta))};
+}
+
+// Integral of f over [x0,x1]x[y0,y1] by adaptive tensor-product Simpson: one 3x3 rule against
+// four, split where they disagree (Richardson-corrected on acceptance). Agreement is absolute
+// (eps) or relative (rel: for the chi-square bins 1e-4 is above the float noise of a peaked pdf,
+// which would otherwise force refinement to the depth limit, and ~0.01 sigma of any bin count).
+template <class F>
+double simpson3x3(F& f, double x0, double x1, double y0, double y1) {
+  const double w[3] = {1, 4, 1};
+  double s = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) s += w[i] * w[j] * f(x0 + 0.5 * i * (x1 - x0), y0 + 0.5 * j * (y1 - y0));
+  return s * (x1 - x0) * (y1 - y0) / 36.0;
+}
+
+template <class F>
+double adaptive_simpson(F& f, double x0, double x1, double y0, double y1, double whole, double eps, double rel,
+                        int depth) {
+  double xm = 0.5 * (x0 + x1), ym = 0.5 * (y0 + y1);
+  double q[4] = {simpson3x3(f, x0, xm, y0, ym), simpson3x3(f, xm, x1, y0, ym), simpson3x3(f, x0, xm, ym, y1),
+                 simpson3x3(f, xm, x1, ym, y1)};
+  double halves = q[0] + q[1] + q[2] + q[3];
+  if (depth == 0 || std::abs(halves - whole) <= 15.0 * std::max(eps, rel * std::abs(halves))) return halves + (halves - whole) / 15.0;
+  return adaptive_simpson(f, x0, xm, y0, ym, q[0], eps / 4, rel, depth - 1) +
+         adaptive_simpson(f, xm, x1, y0, ym, q[1], eps / 4, rel, depth - 1) +
+         adaptive_simpson(f, x0, xm, ym, y1, q[2], eps / 4, rel, depth - 1) +
+         adaptive_simpson(f, xm, x1, ym, y1, q[3], eps / 4, rel, depth - 1);
+}
+
+struct FitResult {
+  double statistic = 0, dof = 0, p = 0;
+  double pdf_integral = 0;      // of pdf() over the sphere
+  double success_fraction = 0;  // of sample() calls returning true
+  int64_t zero_pdf_samples = 0;  // successful samples where pdf() is 0 (must never happen)
+  int64_t pdf_mismatches = 0;    // samples whose pdf differs from pdf() by > 1e-3 relative
+};
+
+FitResult chi_square_fit(const Bsdf& bsdf, const Vec3& wo, uint64_t seed, int64_t n) {
+  FitResult r;
+  std::vector<double> observed(kCosBins * kPhiBins + 1, 0.0), expected(observed.size(), 0.0);
+  Rng rng(seed);
+  int64_t successes = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    float u1 = uniform_float(rng), u2 = uniform_float(rng), uc = uniform_float(rng);
+    BsdfSample s;
+    if (!bsdf.sample(wo, u1, u2, uc, &s)) continue;
+    ++successes;
+    float p = bsdf.pdf(wo, s.wi);
+    r.zero_pdf_samples += p == 0;
+    r.pdf_mismatches += rel_diff(p, s.pdf) > 1e-3;
+    double phi = std::atan2(double(s.wi.y), double(s.wi.x));
+    if (phi < 0) phi += 2 * M_PI;
+    int ic = std::clamp(int((double(s.wi.z) + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
+    int ip = std::clamp(int(phi / (2 * M_PI) * kPhiBins), 0, kPhiBins - 1);
+    observed[ic * kPhiBins + ip] += 1;
+  }
+  observed.back() = double(n - successes);  // failures are a category of their own
+  r.success_fraction = double(successes) / double(n);
+
+  // Expected counts: pdf integrated over each (cos theta, phi) bin. The quadrature runs in
+  // (theta, phi) with the sin theta Jacobian, which is smooth at the poles where pdf(cos, phi)
+  // has a square-root singularity. Each bin starts as 2x2 cells so that a narrow lobe inside a
+  // bin is seen before adaptivity decides.
+  auto f = [&](double theta, double phi) {
+    return double(bsdf.pdf(wo, from_theta_phi(theta, phi))) * std::sin(theta);
+  };
+  const double dc = 2.0 / kCosBins, dp = 2 * M_PI / kPhiBins;
+  const int split = 2;
+  const double eps = 1e-7 / (split * split);  // absolute, per cell; ~0.05 counts per bin at n = 5e5
+  for (int ic = 0; ic < kCosBins; ++ic)
+    for (int ip = 0; ip < kPhiBins; ++ip) {
+      double t0 = std::acos(std::min(1.0, -1 + (ic + 1) * dc)), t1 = std::acos(-1 + ic * dc);
+      double sum = 0;
+      for (int a = 0; a < split; ++a)
+        for (int b = 0; b < split; ++b) {
+          double x0 = t0 + a * (t1 - t0) / split, x1 = t0 + (a + 1) * (t1 - t0) / split;
+          double y0 = ip * dp + b * dp / split, y1 = y0 + dp / split;
+          sum += adaptive_simpson(f, x0, x1, y0, y1, simpson3x3(f, x0, x1, y0, y1), eps, 1e-4, 6);
+        }
+      expected[ic * kPhiBins + ip] = sum * double(n);
+      r.pdf_integral += sum;
+    }
+  expected.back() = std::max(0.0, 1.0 - r.pdf_integral) * double(n);
+
+  // Pool the categories with the smallest expectations until the pool expects at least 5.
+  std::vector<int> order(observed.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return expected[a] < expected[b]; });
+  double pool_e = 0, pool_o = 0;
+  int categories = 0;
+  size_t k = 0;
+  for (; k < order.size() && pool_e < 5.0; ++k) pool_e += expected[order[k]], pool_o += observed[order[k]];
+  if (pool_e > 0) {
+    r.statistic += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
+    ++categories;
+  }
+  for (; k < order.size(); ++k) {
+    double e = expected[order[k]], o = observed[order[k]];
+    r.statistic += (o - e) * (o - e) / e;
+    ++categories;
+  }
+  r.dof = categories - 1;
+  r.p = chi_square_p_value(r.statistic, r.dof);
+  return r;
+}
+
+struct FitCase {
+  std::string name;
+  Material material;
+  Vec3 wo;
+};
+
+std::vector<FitCase> fit_cases() {
+  std::vector<FitCase> cases;
+  for (float t : {0.0f, 45.0f, 80.0f}) cases.push_back({"Diffuse_theta" + std::to_string(int(t)), diffuse(Vec3(0.5f)), direction(t)});
+  for (int r : {2, 5, 9})
+    for (float t : {0.0f, 30.0f, 60.0f, 80.0f})
+      cases.push_back({"Ggx_r0p" + std::to_string(r) + "_theta" + std::to_string(int(t)), ggx(0.1f * r, Vec3(0.7f)), direction(t)});
+  for (float n : {10.0f, 100.0f})
+    for (float t : {0.0f, 45.0f, 80.0f})
+      cases.push_back({"Phong_n" + std::to_string(int(n)) + "_theta" + std::to_string(int(t)), phong(n), direction(t)});
+  for (int r : {3, 7}) {
+    for (float t : {20.0f, 70.0f})
+      cases.push_back({"RoughDielectric_r0p" + std::to_string(r) + "_outside_theta" + std::to_string(int(t)),
+                       dielectric(0.1f * r), direction(t)});
+    // From inside (ior 1.5: critical angle 41.8 deg): one below, one beyond the critical angle.
+    for (float t : {20.0f, 60.0f})
+      cases.push_back({"RoughDielectric_r0p" + std::to_string(r) + "_inside_theta" + std::to_string(int(t)),
+                       dielectric(0.1f * r), -direction(t)});
+  }
+  return cases;
+}
+
+void PrintTo(const FitCase& c, std::ostream* os) { *os << c.name; }
+
+class SampleMatchesPdf : public ::testing::TestWithParam<FitCase> {};
+
+TEST_P(SampleMatchesPdf, ChiSquareAndTotalProbability) {
+  const FitCase& c = GetParam();
+  Bsdf bsdf(c.material);
+  const int64_t n = 500000;
+  uint64_t seed = 1234;  // from the case name, not std::hash: the same on every standard library
+  for (char ch : c.name) seed = hash_combine(seed, uint64_t(ch));
+  FitResult r = chi_square_fit(bsdf, c.wo, seed, n);
+  // Significance 0.01 for the whole family, Sidak-corrected over its cases.
+  const double alpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / double(fit_cases().size()));
+  EXPECT_GT(r.p, alpha) << "chi2 = " << r.statistic << " dof = " << r.dof;
+  EXPECT_EQ(r.zero_pdf_samples, 0);
+  EXPECT_EQ(r.pdf_mismatches, 0);
+  // pdf() integrates to the probability that sample() succeeds: 4 binomial sigma, plus 1e-4
+  // for the quadrature (its tolerance sums to 8e-5 over the sphere).
+  double s = r.success_fraction;
+  EXPECT_NEAR(r.pdf_integral, s, 4.0 * std::sqrt(s * (1 - s) / double(n)) + 1e-4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bsdf, SampleMatchesPdf, ::testing::ValuesIn(fit_cases()),
+                         [](const ::testing::TestParamInfo<FitCase>& info) { return info.param.name; });
+
+// ---- Weights and pdfs reported by sample() agree with eval() and pdf().
+
+TEST(Bsdf, SampleWeightIsEvalCosOverPdf) {
+  std::vector<Material> materials = {diffuse(Vec3(0.2f, 0.5f, 0.9f)), ggx(0.2f, Vec3(0.9f, 0.5f, 0.1f)), ggx(0.5f),
+                                     ggx(0.9f, Vec3(0.3f)), phong(10), phong(100, Vec3(0.5f, 0.6f, 0.7f)),
+                                     dielectric(0.3f, 1.5f, Vec3(0.9f, 0.8f, 0.7f)), dielectric(0.7f, 1.33f)};
+  Rng rng(77);
+  for (const Material& m : materials) {
+    Bsdf bsdf(m);
+    for (float t : {0.0f, 30.0f, 60.0f, 80.0f, 89.0f}) {
+      for (Vec3 wo : {direction(t, 0.3f), -direction(t, 1.9f)}) {
+        if (m.type != MaterialType::Dielectric && wo.z < 0) continue;
+        for (int i = 0; i < 2000; ++i) {
+          BsdfSample s;
+          if (!bsdf.sample(wo, uniform_float(rng), uniform_float(rng), uniform_float(rng), &s)) continue;
+          ASSERT_FALSE(s.delta);
+          ASSERT_NEAR(length(s.wi), 1.0f, 1e-5f);
+          ASSERT_EQ(s.transmission, (s.wi.z < 0) != (wo.z < 0));
+          float p = bsdf.pdf(wo, s.wi);
+          ASSERT_LE(rel_diff(p, s.pdf), 1e-3) << "theta " << t;
+          Vec3 expect = bsdf.eval(wo, s.wi) * (std::abs(s.wi.z) / p);
+          for (int k = 0; k < 3; ++k) ASSERT_LE(rel_diff(s.weight[k], expect[k]), 1e-3) << "theta " << t << " k " << k;
+        }
+      }
+    }
+  }
+}
+
+// ---- Microfacet distribution identities (numerical quadrature over the hemisphere).
+
+// Integral of f(direction) over the upper hemisphere, in (theta, phi) like the chi-square bins.
+template <class F>
+double integrate_hemisphere(F f) {
+  auto g = [&](double theta, double phi) {
+    return f(from_theta_phi(theta, phi)) * std::sin(theta);
+  };
+  double sum = 0;
+  const int nt = 16, np = 16;
+  for (int i = 0; i < nt; ++i)
+    for (int j = 0; j < np; ++j) {
+      double x0 = 0.5 * M_PI * i / nt, x1 = 0.5 * M_PI * (i + 1) / nt, y0 = 2 * M_PI * j / np, y1 = 2 * M_PI * (j + 1) / np;
+      sum += adaptive_simpson(g, x0, x1, y0, y1, simpson3x3(g, x0, x1, y0, y1), 1e-9, 1e-6, 8);
+    }
+  return sum;
+}
+
+TEST(MicrofacetGgx, ProjectedNormalAreaIsOne) {
+  // Walter 2007 eq. 4: the projected microfacet area equals the macro area. Quadrature to 1e-4.
+  for (float a : {0.1f, 0.3f, 0.7f, 1.0f}) {
+    MicrofacetGgx d(a);
+    EXPECT_NEAR(integrate_hemisphere([&](const Vec3& m) { return d.d(m) * m.z; }), 1.0, 1e-4) << "alpha " << a;
+  }
+}
+
+TEST(MicrofacetGgx, VisibleNormalsIntegrateToOne) {
+  // Heitz 2014 eq. 17: with Smith's G1, the visible projected area equals wo.z. Quadrature to 1e-4.
+  for (float a : {0.1f, 0.4f, 1.0f})
+    for (float t : {0.0f, 45.0f, 80.0f}) {
+      MicrofacetGgx d(a);
+      Vec3 w = direction(t);
+      EXPECT_NEAR(integrate_hemisphere([&](const Vec3& m) { return d.pdf_visible(w, m); }), 1.0, 1e-4)
+          << "alpha " << a << " theta " << t;
+    }
+}
+
+TEST(MicrofacetGgx, HeightCorrelatedMaskingIsBelowUncorrelatedAndAboveZero) {
+  // G1(o) G1(i) <= G2(o, i) <= min(G1(o), G1(i)) (Heitz 2014 §6).
+  MicrofacetGgx d(0.5f);
+  for (float to : {0.0f, 40.0f, 85.0f})
+    for (float ti : {10.0f, 60.0f, 89.0f}) {
+      Vec3 o = direction(to), i = direction(ti, 2.0f);
+      float g2 = d.g2(o, i);
+      EXPECT_GE(g2, d.g1(o) * d.g1(i) * (1 - 1e-6f));
+      EXPECT_LE(g2, std::min(d.g1(o), d.g1(i)) * (1 + 1e-6f));
+    }
+}
+
+// ---- Energy.
+
+struct Estimate {
+  double mean, sigma;  // per channel 0 (all tests use grey albedo)
+};
+
+Estimate mean_weight(const Bsdf& bsdf, const Vec3& wo, uint64_t seed, int n, bool remove_eta2 = false, float ior = 1) {
+  Rng rng(seed);
+  double sum = 0, sum2 = 0;
+  for (int i = 0; i < n; ++i) {
+    BsdfSample s;
+    double w = 0;
+    if (bsdf.sample(wo, uniform_float(rng), uniform_float(rng), uniform_float(rng), &s)) {
+      w = s.weight.x;
+      if (remove_eta2 && s.transmission) {
+        double eta = wo.z > 0 ? ior : 1.0 / ior;
+        w *= eta * eta;
+      }
+    }
+    sum += w, sum2 += w * w;
+  }
+  double mean = sum / n;
+  return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
+}
+
+TEST(Bsdf, GlossyGgxNeverCreatesEnergy) {
+  // White furnace: mean of weights (failed samples count 0) <= 1 + 3 sigma.
+  for (float r : {0.05f, 0.2f, 0.5f, 0.9f, 1.0f})
+    for (float t : {0.0f, 45.0f, 70.0f, 85.0f, 89.5f}) {
+      Estimate e = mean_weight(Bsdf(ggx(r)), direction(t), 11, 50000);
+      EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma) << "roughness " << r << " theta " << t;
+    }
+}
+
+TEST(Bsdf, SmoothGgxAtNormalIncidenceLosesAlmostNothing) {
+  // Single-scattering GGX at alpha = 0.04 loses well under 0.5 % at normal incidence (no
+  // multiple-scattering compensation); a wrong D, G or Jacobian would show here.
+  Estimate e = mean_weight(Bsdf(ggx(0.2f)), direction(0), 12, 50000);
+  EXPECT_GT(e.mean, 0.995);
+  EXPECT_LE(e.mean, 1.0);
+}
+
+TEST(Bsdf, GlossyPhongNeverCreatesEnergy) {
+  for (float n : {0.0f, 1.0f, 10.0f, 100.0f, 1000.0f})
+    for (float t : {0.0f, 45.0f, 70.0f, 85.0f, 89.5f}) {
+      Estimate e = mean_weight(Bsdf(phong(n)), direction(t), 13, 50000);
+      EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma) << "exponent " << n << " theta " << t;
+    }
+}
+
+TEST(Bsdf, PhongAtNormalIncidenceReflectsAlbedo) {
+  // The (n+2)/(2 pi) normalisation makes the lobe about the normal integrate to exactly albedo.
+  for (float n : {1.0f, 10.0f, 100.0f}) {
+    Estimate e = mean_weight(Bsdf(phong(n, Vec3(0.6f))), direction(0), 14, 100000);
+    EXPECT_NEAR(e.mean, 0.6, 4.0 * e.sigma + 1e-6) << "exponent " << n;
+  }
+}
+
+TEST(Bsdf, DiffuseReflectsExactlyItsAlbedo) {
+  // Two estimates within 0.5 %: the sampled weights, and eval() integrated by uniform hemisphere
+  // sampling (sigma ~ 0.06 % at 1e6 samples, so 0.5 % is > 8 sigma).
+  Vec3 albedo{0.2f, 0.5f, 0.9f};
+  Bsdf bsdf(diffuse(albedo));
+  Rng rng(5);
+  for (float t : {0.0f, 50.0f, 85.0f}) {
+    Vec3 wo = direction(t);
+    double sampled[3] = {0, 0, 0}, uniform[3] = {0, 0, 0};
+    const int n = 1000000;
+    for (int i = 0; i < n; ++i) {
+      BsdfSample s;
+      if (bsdf.sample(wo, uniform_float(rng), uniform_float(rng), uniform_float(rng), &s))
+        for (int k = 0; k < 3; ++k) sampled[k] += s.weight[k];
+      Vec3 wi = uniform_sphere(rng);
+      Vec3 f = bsdf.eval(wo, wi) * (std::abs(wi.z) * 4 * kPi);
+      for (int k = 0; k < 3; ++k) uniform[k] += f[k];
+    }
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(sampled[k] / n, albedo[k], 0.005 * albedo[k]);
+      EXPECT_NEAR(uniform[k] / n, albedo[k], 0.005 * albedo[k]);
+    }
+  }
+}
+
+TEST(Bsdf, SmoothDielectricConservesEnergy) {
+  // White glass: R + T with the 1/eta^2 radiance scaling undone is 1; both sides, incl. TIR.
+  for (float t : {0.0f, 30.0f, 60.0f, 85.0f}) {
+    for (Vec3 wo : {direction(t), -direction(t)}) {
+      Estimate e = mean_weight(Bsdf(dielectric(0.0f)), wo, 21, 100000, true, 1.5f);
+      EXPECT_NEAR(e.mean, 1.0, 1e-3) << "theta " << t << " z " << wo.z;
+    }
+  }
+}
+
+TEST(Bsdf, SmoothDielectricChoosesReflectionWithFresnelProbability) {
+  // The fraction of reflected samples is F: binomial, 4 sigma.
+  Bsdf bsdf(dielectric(0.0f));
+  Rng rng(22);
+  for (float t : {0.0f, 45.0f, 75.0f, 88.0f}) {
+    for (Vec3 wo : {direction(t), -direction(t * 0.45f)}) {
+      double f = fresnel_dielectric(std::abs(wo.z), wo.z > 0 ? 1.5f : 1.0f / 1.5f);
+      const int n = 100000;
+      int reflected = 0;
+      for (int i = 0; i < n; ++i) {
+        BsdfSample s;
+        ASSERT_TRUE(bsdf.sample(wo, 0.5f, 0.5f, uniform_float(rng), &s));
+        reflected += !s.transmission;
+        ASSERT_FLOAT_EQ(s.pdf, s.transmission ? 1 - f : f);
+      }
+      EXPECT_NEAR(double(reflected) / n, f, 4.0 * std::sqrt(f * (1 - f) / n) + 1e-9) << "theta " << t;
+    }
+  }
+}
+
+TEST(Bsdf, RoughDielectricNeverCreatesEnergy) {
+  for (float r : {0.1f, 0.3f, 0.7f, 1.0f})
+    for (float t : {0.0f, 45.0f, 80.0f})
+      for (Vec3 wo : {direction(t), -direction(t)}) {
+        Estimate e = mean_weight(Bsdf(dielectric(r)), wo, 23, 50000, true, 1.5f);
+        EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma) << "roughness " << r << " theta " << t << " z " << wo.z;
+      }
+}
+
+TEST(Bsdf, WhiteMirrorReturnsWeightOne) {
+  Bsdf bsdf(mirror(Vec3(1.0f)));
+  for (float t : {0.0f, 30.0f, 60.0f, 89.0f}) {
+    BsdfSample s;
+    Vec3 wo = direction(t);
+    ASSERT_TRUE(bsdf.sample(wo, 0.3f, 0.6f, 0.9f, &s));
+    EXPECT_TRUE(s.delta);
+    EXPECT_EQ(s.pdf, 1.0f);
+    EXPECT_EQ(s.weight.x, 1.0f);
+    EXPECT_EQ(s.weight.y, 1.0f);
+    EXPECT_EQ(s.weight.z, 1.0f);
+    EXPECT_NEAR(s.wi.x, -wo.x, 1e-7f);
+    EXPECT_NEAR(s.wi.y, -wo.y, 1e-7f);
+    EXPECT_EQ(s.wi.z, wo.z);
+  }
+}
+
+TEST(Bsdf, MirrorWeightIsSchlickFresnel) {
+  Bsdf bsdf(mirror(Vec3(0.5f, 0.2f, 0.9f)));
+  BsdfSample s;
+  ASSERT_TRUE(bsdf.sample(direction(0), 0, 0, 0, &s));
+  EXPECT_NEAR(s.weight.y, 0.2f, 1e-6f);
+  ASSERT_TRUE(bsdf.sample(direction(60), 0, 0, 0, &s));
+  EXPECT_NEAR(s.weight.y, 0.2f + 0.8f * std::pow(0.5f, 5.0f), 1e-6f);
+}
+
+// ---- Reciprocity.
+
+TEST(Bsdf, ReflectionIsReciprocal) {
+  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.2f, Vec3(0.3f)), ggx(0.5f), ggx(0.9f), phong(10),
+                                     phong(100), dielectric(0.3f), dielectric(0.7f)};
+  Rng rng(31);
+  for (const Material& m : materials) {
+    Bsdf bsdf(m);
+    int nonzero = 0;
+    for (int i = 0; i < 20000; ++i) {
+      Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
+      if (m.type == MaterialType::Dielectric) {
+        if ((wo.z > 0) != (wi.z > 0)) wi.z = -wi.z;  // reflection lobe only
+      } else {
+        wo.z = std::abs(wo.z), wi.z = std::abs(wi.z);
+      }
+      // Phong n = 100 against the mirror direction of wo, so most pairs test a nonzero value.
+      if (m.lobe == GlossLobe::Phong && m.type == MaterialType::Glossy && i % 2)
+        wi = normalize(Vec3{-wo.x, -wo.y, wo.z} + 0.1f * uniform_sphere(rng)), wi.z = std::abs(wi.z);
+      Vec3 a = bsdf.eval(wo, wi), b = bsdf.eval(wi, wo);
+      if (a.x < 1e-12f && b.x < 1e-12f) continue;
+      ++nonzero;
+      ASSERT_LE(rel_diff(a.x, b.x), 1e-4) << "wo " << wo.x << "," << wo.y << "," << wo.z;
+    }
+    EXPECT_GT(nonzero, 1000);
+  }
+}
+
+TEST(Bsdf, RoughDielectricTransmissionIsReciprocalUpToEta2) {
+  // Radiance transport: f(wo outside -> wi inside) * ior^2 = f(wi inside -> wo outside)
+  // (Veach 1997 §5.2, non-symmetric BTDF). Relative 1e-4.
+  for (float r : {0.3f, 0.7f}) {
+    Bsdf bsdf(dielectric(r, 1.5f));
+    Rng rng(32);
+    int nonzero = 0;
+    for (int i = 0; i < 20000; ++i) {
+      Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
+      wo.z = std::abs(wo.z), wi.z = -std::abs(wi.z);
+      Vec3 a = bsdf.eval(wo, wi), b = bsdf.eval(wi, wo);
+      if (a.x < 1e-12f && b.x < 1e-12f) continue;
+      ++nonzero;
+      ASSERT_LE(rel_diff(a.x * 1.5f * 1.5f, b.x), 1e-4) << "wo " << wo.x << "," << wo.y << "," << wo.z << " wi " << wi.x
+                                                        << "," << wi.y << "," << wi.z << " f " << a.x << " " << b.x;
+    }
+    EXPECT_GT(nonzero, 1000);
+  }
+}
+
+// ---- Smooth dielectric optics.
+
+TEST(Bsdf, SmoothDielectricFresnelAtNormalIncidence) {
+  for (float n : {1.33f, 1.5f, 2.4f}) {
+    Bsdf bsdf(dielectric(0.0f, n));
+    double f0 = ((n - 1.0) / (n + 1.0)) * ((n - 1.0) / (n + 1.0));
+    for (Vec3 wo : {Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+      BsdfSample s;
+      ASSERT_TRUE(bsdf.sample(wo, 0.5f, 0.5f, 0.0f, &s));
+      EXPECT_FALSE(s.transmission);
+      EXPECT_NEAR(s.pdf, f0, 1e-6);
+      EXPECT_EQ(s.wi.z, wo.z);
+      ASSERT_TRUE(bsdf.sample(wo, 0.5f, 0.5f, 0.999f, &s));
+      EXPECT_TRUE(s.transmission);
+      EXPECT_NEAR(s.pdf, 1.0 - f0, 1e-6);
+      EXPECT_EQ(s.wi.z, -wo.z);
+    }
+  }
+}
+
+TEST(Fresnel, BrewsterAngleReflectsOnlyTheSPolarisation) {
+  // At tan(theta) = eta, r_p = 0 and r_s = (1 - eta^2) / (1 + eta^2), so F = r_s^2 / 2.
+  for (double eta : {1.33, 1.5, 2.4}) {
+    double rs = (1 - eta * eta) / (1 + eta * eta);
+    EXPECT_NEAR(fresnel_dielectric(1.0 / std::sqrt(1 + eta * eta), eta), 0.5 * rs * rs, 1e-12) << "eta " << eta;
+  }
+}
+
+TEST(Fresnel, SameReflectanceFromBothSides) {
+  // Stokes relations: F(theta_i, eta) = F(theta_t, 1 / eta) for Snell-related angles.
+  for (double eta : {1.33, 1.5, 2.4})
+    for (double ti : {0.0, 0.3, 0.8, 1.2, 1.5}) {
+      double tt = std::asin(std::sin(ti) / eta);
+      EXPECT_NEAR(fresnel_dielectric(std::cos(ti), eta), fresnel_dielectric(std::cos(tt), 1.0 / eta), 1e-12);
+    }
+  EXPECT_EQ(fresnel_dielectric(std::cos(0.8), 1.0 / 1.5), 1.0);  // beyond the critical angle (0.73)
+}
+
+TEST(Bsdf, SmoothDielectricTotalInternalReflectionBeyondCriticalAngle) {
+  Bsdf bsdf(dielectric(0.0f, 1.5f));
+  float critical = std::asin(1.0f / 1.5f) * 180.0f / kPi;  // 41.81 deg
+  for (float t : {critical + 0.05f, 50.0f, 70.0f, 89.0f}) {
+    Vec3 wo = -direction(t);
+    BsdfSample s;
+    ASSERT_TRUE(bsdf.sample(wo, 0.5f, 0.5f, 0.99999f, &s));
+    EXPECT_FALSE(s.transmission) << "theta " << t;
+    EXPECT_EQ(s.pdf, 1.0f);
+    EXPECT_EQ(s.weight.x, 1.0f);
+    EXPECT_LT(s.wi.z, 0.0f);
+  }
+  // Just inside the critical angle some light still leaves.
+  BsdfSample s;
+  ASSERT_TRUE(bsdf.sample(-direction(critical - 0.5f), 0.5f, 0.5f, 0.99999f, &s));
+  EXPECT_TRUE(s.transmission);
+  EXPECT_GT(s.wi.z, 0.0f);
+}
+
+TEST(Bsdf, SmoothDielectricRefractionObeysSnell) {
+  const float ior = 1.5f;
+  Vec3 tint{0.9f, 0.8f, 0.7f};
+  Bsdf bsdf(dielectric(0.0f, ior, tint));
+  for (float t : {5.0f, 30.0f, 60.0f, 85.0f}) {
+    for (bool inside : {false, true}) {
+      float ti = inside ? t * 0.45f : t;  // stay below the critical angle inside
+      Vec3 wo = inside ? -direction(ti) : direction(ti);
+      float eta = inside ? 1.0f / ior : ior;
+      BsdfSample s;
+      ASSERT_TRUE(bsdf.sample(wo, 0.5f, 0.5f, 0.99999f, &s));
+      ASSERT_TRUE(s.transmission);
+      EXPECT_TRUE(s.delta);
+      EXPECT_NEAR(length(s.wi), 1.0f, 1e-6f);
+      float sin_o = std::sqrt(wo.x * wo.x + wo.y * wo.y), sin_i = std::sqrt(s.wi.x * s.wi.x + s.wi.y * s.wi.y);
+      EXPECT_NEAR(sin_o, eta * sin_i, 1e-6f) << "theta " << ti << " inside " << inside;
+      // Opposite side, opposite azimuth: wi is wo continued through the surface.
+      EXPECT_LT(s.wi.z * wo.z, 0.0f);
+      EXPECT_NEAR(s.wi.x * wo.y - s.wi.y * wo.x, 0.0f, 1e-6f);
+      EXPECT_LE(s.wi.x * wo.x + s.wi.y * wo.y, 0.0f);
+      // Tinted and scaled by 1/eta^2 for radiance.
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(s.weight[k], tint[k] / (eta * eta), 1e-6f);
+    }
+  }
+}
+
+// ---- Degenerate inputs and the emitter.
+
+TEST(Bsdf, SamplesAreFiniteAtTheCornersOfTheUnitSquare) {
+  const float one_minus = 0x1.fffffep-1f;
+  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.0f), ggx(0.2f), ggx(1.0f), phong(0), phong(1000),
+                                     mirror(Vec3(0.9f)), dielectric(0.0f), dielectric(0.001f), dielectric(1.0f)};
+  for (const Material& m : materials) {
+    Bsdf bsdf(m);
+    for (float t : {0.0f, 45.0f, 89.9f})
+      for (float z : {1.0f, -1.0f})
+        for (float u1 : {0.0f, 0.5f, one_minus})
+          for (float u2 : {0.0f, 0.5f, one_minus})
+            for (float uc : {0.0f, one_minus}) {
+              Vec3 wo = direction(t) * Vec3(1, 1, z);
+              BsdfSample s;
+              if (!bsdf.sample(wo, u1, u2, uc, &s)) continue;
+              ASSERT_TRUE(is_finite(s.wi) && is_finite(s.weight) && std::isfinite(s.pdf));
+              ASSERT_GT(s.pdf, 0.0f);
+              ASSERT_NEAR(length(s.wi), 1.0f, 1e-5f);
+              ASSERT_TRUE(is_finite(bsdf.eval(wo, s.wi)) && std::isfinite(bsdf.pdf(wo, s.wi)));
+            }
+  }
+}
+
+TEST(Bsdf, OpaqueMaterialsIgnoreDirectionsBelowTheSurface) {
+  for (const Material& m : {diffuse(Vec3(0.5f)), ggx(0.5f), phong(10), mirror(Vec3(1.0f))}) {
+    Bsdf bsdf(m);
+    Vec3 up = direction(30), down = -direction(40);
+    BsdfSample s;
+    EXPECT_FALSE(bsdf.sample(down, 0.3f, 0.4f, 0.5f, &s));
+    EXPECT_TRUE(is_black(bsdf.eval(down, up)));
+    EXPECT_TRUE(is_black(bsdf.eval(up, down)));
+    EXPECT_EQ(bsdf.pdf(up, down), 0.0f);
+    EXPECT_EQ(bsdf.pdf(down, up), 0.0f);
+  }
+}
+
+TEST(Bsdf, EmitterIsBlackAndDoesNotScatter) {
+  Material m;
+  m.type = MaterialType::Emitter;
+  m.radiance = Vec3(5.0f);
+  Bsdf bsdf(m);
+  BsdfSample s;
+  EXPECT_FALSE(bsdf.scatters());
+  EXPECT_FALSE(bsdf.sample(direction(10), 0.3f, 0.4f, 0.5f, &s));
+  EXPECT_TRUE(is_black(bsdf.eval(direction(10), direction(20))));
+  EXPECT_TRUE(is_black(bsdf.albedo()));
+}
+
+TEST(Bsdf, DeltaFlagsFollowRoughness) {
+  EXPECT_TRUE(Bsdf(mirror(Vec3(1.0f))).is_delta());
+  EXPECT_TRUE(Bsdf(dielectric(0.0f)).is_delta());
+  EXPECT_FALSE(Bsdf(dielectric(0.01f)).is_delta());
+  EXPECT_FALSE(Bsdf(ggx(0.0f)).is_delta());  // alpha clamped to 1e-3
+  EXPECT_FALSE(Bsdf(diffuse(Vec3(0.5f))).is_delta());
+  EXPECT_FALSE(Bsdf(phong(10)).is_delta());
+  EXPECT_TRUE(Bsdf(diffuse(Vec3(0.5f))).scatters());
+}
+
+}  // namespace
+}  // namespace pdrt

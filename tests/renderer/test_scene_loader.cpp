@@ -1,0 +1,662 @@
+// Scene loading (renderer/scene_loader.h): the example scene's values, and for bad input,
+// that the message names file:line:col and the JSON path. Expected positions are counted by
+// hand from the scene text in each test (lines from 1 at the opening brace, columns from 1).
+#include "sampling/core/errors.h"
+#include "renderer/scene/json_locations.h"
+#include "renderer/scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace pdrt;
+
+namespace {
+
+const fs::path kData = fs::path(PDRT_TEST_DATA_DIR) / "scenes";
+const fs::path kExamples = PDRT_EXAMPLES_DIR;
+const fs::path kDocs = PDRT_DOCS_DIR;
+const fs::path kScenes = PDRT_SCENES_DIR;
+
+// A fresh directory per test and process (the ASan and plain suites may run side by side).
+fs::path temp_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  fs::path dir = fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write(const fs::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+  return file;
+}
+
+// Writes s.json (and copies the named fixtures beside it).
+fs::path scene(const std::string& text, std::initializer_list<const char*> fixtures = {}) {
+  fs::path dir = temp_dir();
+  for (const char* f : fixtures) fs::copy_file(kData / f, dir / f);
+  return write(dir / "s.json", text);
+}
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string load_error(const fs::path& file) {
+  try {
+    load_scene(file);
+  } catch (const InputError& e) {
+    std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "messages are one line: " << m;
+    return m;
+  }
+  ADD_FAILURE() << "expected an InputError for " << file;
+  return "";
+}
+
+#define EXPECT_ERROR(file, text) EXPECT_NE(load_error(file).find(text), std::string::npos) << load_error(file)
+
+void expect_vec(const Vec3& v, float x, float y, float z) {
+  EXPECT_FLOAT_EQ(v.x, x);
+  EXPECT_FLOAT_EQ(v.y, y);
+  EXPECT_FLOAT_EQ(v.z, z);
+}
+
+// A valid camera and film on lines 2 and 3, for tests about the other sections.
+const std::string kHead =
+    "{\n"
+    "  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+    "  \"film\": {\"width\": 8, \"height\": 8},\n";
+
+const Material& material_of(const SceneDesc& s, const ShapeDesc& shape) { return s.materials.at(shape.material); }
+
+}  // namespace
+
+// Removes the test's temporary directory afterwards.
+class SceneLoader : public ::testing::Test {
+ protected:
+  void TearDown() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::error_code ec;
+    fs::remove_all(fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid())), ec);
+  }
+};
+
+// --- the example scene (docs/scene-format.md) ---------------------------------------------
+
+TEST_F(SceneLoader, ExampleCameraValues) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  EXPECT_EQ(s.file, kExamples / "all-features.json");
+  expect_vec(s.camera.position, 0, 1, 6);
+  EXPECT_FLOAT_EQ(s.camera.vfov_deg, 35);
+  EXPECT_FLOAT_EQ(s.camera.aperture_radius, 0.05f);
+  EXPECT_FLOAT_EQ(s.camera.focus_distance, 6);
+  EXPECT_EQ(s.camera.aperture_blades, 6);
+  EXPECT_FLOAT_EQ(s.camera.aperture_rotation_deg, 15);
+  ASSERT_EQ(s.camera.motion.size(), 2u);
+  EXPECT_FLOAT_EQ(s.camera.motion[1].time, 1);
+  expect_vec(s.camera.motion[1].position, 0.5f, 1, 6);
+}
+
+TEST_F(SceneLoader, ExampleFilmSamplerIntegratorValues) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  EXPECT_EQ(s.film.width, 320);
+  EXPECT_EQ(s.film.height, 240);
+  EXPECT_EQ(s.film.filter.type, FilterType::Mitchell);
+  EXPECT_TRUE(s.film.filter.rank_selection);
+  EXPECT_FLOAT_EQ(s.film.exposure, 0.5f);
+  EXPECT_EQ(s.sampler.type, "poisson");
+  EXPECT_EQ(s.sampler.spp, 32);
+  EXPECT_EQ(s.sampler.seed, 7u);
+  EXPECT_TRUE(s.sampler.adaptive.enabled);
+  EXPECT_EQ(s.sampler.adaptive.max_spp, 128);
+  EXPECT_EQ(s.sampler.adaptive.metric, "contrast");
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
+  EXPECT_EQ(s.integrator.max_depth, 6);
+  EXPECT_EQ(s.integrator.rr_depth, 2);
+}
+
+TEST_F(SceneLoader, ExampleShapesMaterialsAndLights) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  // quad, sphere, mesh, 4 tetrahedron faces (one per MTL material), 1 overridden tetrahedron,
+  // 2 spheres, then the quad and sphere lights.
+  ASSERT_EQ(s.shapes.size(), 12u);
+  EXPECT_EQ(material_of(s, s.shapes[0]).name, "white");
+  EXPECT_EQ(s.shapes[1].kind, ShapeDesc::Kind::Sphere);
+  EXPECT_EQ(material_of(s, s.shapes[2]).lobe, GlossLobe::Phong);
+  EXPECT_EQ(s.shapes[2].mesh.normals.size(), 3u);
+  EXPECT_EQ(material_of(s, s.shapes[7]).name, "chrome");
+  EXPECT_EQ(s.shapes[7].mesh.indices.size(), 12u);
+  const ShapeDesc& light = s.shapes[10];
+  EXPECT_EQ(material_of(s, light).name, "lights[0]");
+  EXPECT_EQ(material_of(s, light).type, MaterialType::Emitter);
+  expect_vec(material_of(s, light).radiance, 10, 10, 10);
+  expect_vec(s.environment.radiance, 0.05f, 0.05f, 0.08f);
+  EXPECT_EQ(s.shapes[11].where, (kExamples / "all-features.json").string() + ": lights[1]");
+  EXPECT_EQ(s.degenerate_triangles, 0);
+}
+
+TEST_F(SceneLoader, ExampleMtlMapping) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  auto find = [&](const std::string& name) -> const Material& {
+    for (const Material& m : s.materials)
+      if (m.name == name) return m;
+    ADD_FAILURE() << "no material " << name;
+    return s.materials.at(0);
+  };
+  const Material& clay = find("tetrahedron/clay");
+  EXPECT_EQ(clay.type, MaterialType::Diffuse);
+  expect_vec(clay.albedo, 0.7f, 0.4f, 0.3f);
+  const Material& gold = find("tetrahedron/gold");
+  EXPECT_EQ(gold.type, MaterialType::Glossy);
+  EXPECT_EQ(gold.lobe, GlossLobe::Phong);
+  EXPECT_FLOAT_EQ(gold.exponent, 200);
+  expect_vec(gold.albedo, 0.9f, 0.7f, 0.3f);
+  const Material& glass = find("tetrahedron/glass");
+  EXPECT_EQ(glass.type, MaterialType::Dielectric);
+  EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+  const Material& lamp = find("tetrahedron/lamp");
+  EXPECT_EQ(lamp.type, MaterialType::Emitter);
+  expect_vec(lamp.radiance, 4, 4, 3);
+  // One shape per material; each tetrahedron face becomes a one-triangle mesh.
+  for (int i = 3; i < 7; ++i) EXPECT_EQ(s.shapes[i].mesh.indices.size(), 3u);
+}
+
+TEST_F(SceneLoader, ExampleTransforms) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  // Sphere: translate [-1.5, 0.5, 0] * rotate x 30 * rotate y 90 (first listed innermost).
+  Affine expected = Affine::translate({-1.5f, 0.5f, 0}) * Affine::rotate({1, 0, 0}, 30) * Affine::rotate({0, 1, 0}, 90);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(s.shapes[1].transform.m[r][c], expected.m[r][c], 1e-6f);
+  // Tetrahedron: translate [0, 0, 1] * scale 0.8.
+  expect_vec(s.shapes[3].transform.point({1, 1, 1}), 0.8f, 0.8f, 1.8f);
+  // Matrix transform (3x4 row-major).
+  expect_vec(s.shapes[7].transform.point({0, 0, 0}), 2.5f, 0, 0);
+}
+
+TEST_F(SceneLoader, ExampleMotionKeys) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  const auto& m = s.shapes[1].motion;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_FLOAT_EQ(m[1].time, 0.5f);
+  expect_vec(m[1].translate, 0, 0.25f, 0);
+  expect_vec(m[2].scale, 1, 1.2f, 1);
+  Quat q = Quat::from_axis_angle({0, 0, 1}, 45);
+  EXPECT_FLOAT_EQ(m[2].rotate.w, q.w);
+  EXPECT_FLOAT_EQ(m[2].rotate.z, q.z);
+  expect_vec(m[0].scale, 1, 1, 1);  // keys default to identity
+  ASSERT_EQ(s.shapes[11].motion.size(), 2u);
+}
+
+TEST_F(SceneLoader, DocumentedExampleMatchesTheExampleFile) {
+  std::string doc = read(kDocs / "scene-format.md");
+  const std::string fence = "```json\n";
+  size_t begin = doc.rfind(fence);
+  ASSERT_NE(begin, std::string::npos);
+  begin += fence.size();
+  size_t end = doc.find("```", begin);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(doc.substr(begin, end - begin), read(kExamples / "all-features.json"));
+}
+
+TEST_F(SceneLoader, EverySceneInTheRepositoryLoads) {
+  int count = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    EXPECT_NO_THROW(load_scene(entry.path())) << entry.path();
+  }
+  EXPECT_GT(count, 0);
+}
+
+// --- defaults and geometry ----------------------------------------------------------------
+
+TEST_F(SceneLoader, DefaultsFilledIn) {
+  SceneDesc s = load_scene(scene(kHead + "  \"objects\": []\n}\n"));
+  expect_vec(s.camera.up, 0, 1, 0);
+  EXPECT_FLOAT_EQ(s.camera.vfov_deg, 40);
+  EXPECT_FLOAT_EQ(s.camera.focus_distance, 5);  // resolved from |look_at - position|
+  EXPECT_FLOAT_EQ(s.camera.shutter_open, 0);
+  EXPECT_FLOAT_EQ(s.camera.shutter_close, 1);
+  EXPECT_EQ(s.film.filter.type, FilterType::Gaussian);
+  EXPECT_FLOAT_EQ(s.film.filter.radius, 1.5f);
+  EXPECT_FALSE(s.film.filter.rank_selection);
+  EXPECT_EQ(s.sampler.type, "poisson");
+  EXPECT_EQ(s.sampler.spp, 16);
+  EXPECT_FALSE(s.sampler.adaptive.enabled);
+  EXPECT_EQ(s.integrator.max_depth, 8);
+  EXPECT_EQ(s.integrator.rr_depth, 3);
+}
+
+TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {
+  SceneDesc s = load_scene(scene(
+      "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+      " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"box\"}}}"));
+  EXPECT_EQ(s.film.filter.type, FilterType::Box);
+  EXPECT_FLOAT_EQ(s.film.filter.radius, 0.5f);
+}
+
+TEST_F(SceneLoader, MaterialTypeDefaults) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {
+    "d": {"type": "diffuse"}, "g": {"type": "glossy", "roughness": 0.5},
+    "m": {"type": "mirror"}, "t": {"type": "dielectric"}
+  }
+})"));
+  ASSERT_EQ(s.materials.size(), 4u);  // sorted by name: d, g, m, t
+  expect_vec(s.materials[0].albedo, 0.8f, 0.8f, 0.8f);
+  expect_vec(s.materials[1].albedo, 0.9f, 0.9f, 0.9f);
+  EXPECT_EQ(s.materials[1].lobe, GlossLobe::GGX);
+  expect_vec(s.materials[2].albedo, 1, 1, 1);
+  EXPECT_FLOAT_EQ(s.materials[3].ior, 1.5f);
+  EXPECT_FLOAT_EQ(s.materials[3].roughness, 0);
+}
+
+TEST_F(SceneLoader, AdaptiveDefaultsLeaveTheThresholdToTheMetric) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"metric\": \"contrast\"}}\n}\n"));
+  EXPECT_TRUE(s.sampler.adaptive.enabled);
+  EXPECT_EQ(s.sampler.adaptive.threshold, 0) << "unset: the renderer uses the metric's default";
+  EXPECT_EQ(s.sampler.adaptive.variance, "samples");
+  SceneDesc d = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {}}\n}\n"));
+  EXPECT_EQ(d.sampler.adaptive.metric, "error-per-sample");
+}
+
+TEST_F(SceneLoader, AdaptiveVarianceHalves) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"halves\"}}\n}\n"));
+  EXPECT_EQ(s.sampler.adaptive.variance, "halves");
+}
+
+TEST_F(SceneLoader, UnknownAdaptiveVariance) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"adaptive\": {\"variance\": \"pixels\"}}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.variance must be one of samples, halves, got \"pixels\"");
+}
+
+TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "quad", "material": "grey", "corner": [1, 2, 3], "edge1": [2, 0, 0], "edge2": [0, 3, 0]}]
+})"));
+  const MeshData& m = s.shapes.at(0).mesh;
+  ASSERT_EQ(m.positions.size(), 4u);
+  expect_vec(m.positions[2], 3, 5, 3);
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
+  for (int t = 0; t < 2; ++t) {  // both face along cross(edge1, edge2) = +z
+    const Vec3 &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+               &c = m.positions[m.indices[3 * t + 2]];
+    EXPECT_GT(cross(b - a, c - a).z, 0);
+  }
+}
+
+TEST_F(SceneLoader, SixteenNumberMatrixAccepted) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "transform": {"matrix": [2, 0, 0, 1, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]}}]
+})"));
+  expect_vec(s.shapes.at(0).transform.point({1, 1, 1}), 3, 2, 2);
+}
+
+TEST_F(SceneLoader, DegenerateTrianglesCountedNotError) {
+  fs::path file = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [
+    {"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [2, 0, 0]],
+     "indices": [0, 1, 2, 0, 0, 1, 0, 1, 3]},
+    {"type": "obj", "file": "degenerate.obj"}
+  ]
+})",
+                        {"degenerate.obj"});
+  ::testing::internal::CaptureStderr();
+  SceneDesc s = load_scene(file);
+  std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(s.degenerate_triangles, 2 + 3);
+  EXPECT_EQ(s.shapes.at(0).mesh.indices, (std::vector<uint32_t>{0, 1, 2}));
+  EXPECT_EQ(s.shapes.at(1).mesh.indices.size(), 3u);
+  EXPECT_EQ(err, file.string() + ": warning: skipped 5 degenerate triangles\n");
+}
+
+// --- bad input: JSON ----------------------------------------------------------------------
+
+TEST_F(SceneLoader, SyntaxErrorHasLineAndColumn) {
+  // Line 3: the '}' after the trailing comma is column 36.
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": 8,}
+})");
+  EXPECT_ERROR(f, "s.json:3:36: JSON syntax error");
+}
+
+TEST_F(SceneLoader, SyntaxErrorAtEndOfInput) {
+  fs::path f = scene("{\n  \"camera\": {\n");
+  EXPECT_ERROR(f, "s.json:3:1: JSON syntax error");
+}
+
+TEST_F(SceneLoader, UnknownTopLevelKey) {
+  fs::path f = scene(kHead + "  \"lights\": [],\n  \"light\": []\n}\n");
+  EXPECT_ERROR(f, "s.json:5:3: light unknown key (did you mean \"lights\"?)");
+}
+
+TEST_F(SceneLoader, UnknownNestedKeySuggestsNearest) {
+  fs::path f = scene(R"({
+  "camera": {
+    "position": [0, 0, 5],
+    "look_at": [0, 0, 0],
+    "fov_deg": 30
+  },
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:5:5: camera.fov_deg unknown key (did you mean \"vfov_deg\"?)");
+}
+
+TEST_F(SceneLoader, UnknownKeyInsideObjectArray) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1, "colour": 3}]
+})");
+  EXPECT_ERROR(f, "s.json:5:67: objects[0].colour unknown key (expected one of:");
+}
+
+TEST_F(SceneLoader, WrongType) {
+  fs::path f = scene(R"({
+  "camera": {"position": "origin", "look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:2:26: camera.position must be an array of 3 numbers, got \"origin\"");
+}
+
+TEST_F(SceneLoader, MissingRequiredKey) {
+  fs::path f = scene(R"({
+  "camera": {"look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:2:13: camera missing required key \"position\"");
+}
+
+TEST_F(SceneLoader, MissingRequiredTopLevelKey) {
+  fs::path f = scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]}}");
+  EXPECT_ERROR(f, "s.json:1:1: missing required key \"film\"");
+}
+
+TEST_F(SceneLoader, InfiniteNumberRejected) {
+  // nlohmann reads 1e999 as inf; the message shows the number as written.
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "vfov_deg": 1e999},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:2:71: camera.vfov_deg must be a finite number, got 1e999");
+}
+
+TEST_F(SceneLoader, NegativeRadius) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [
+    {"type": "sphere", "material": "grey", "radius": 1},
+    {"type": "sphere", "material": "grey",
+     "radius": -1}
+  ]
+})");
+  EXPECT_ERROR(f, "s.json:8:16: objects[1].radius must be > 0, got -1");
+}
+
+TEST_F(SceneLoader, ZeroResolution) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "film": {"width": 0, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer >= 1, got 0");
+}
+
+TEST_F(SceneLoader, NegativeResolution) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": -4}
+})");
+  EXPECT_ERROR(f, "s.json:3:34: film.height must be an integer >= 1, got -4");
+}
+
+TEST_F(SceneLoader, FractionalResolution) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "film": {"width": 8.5, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer, got 8.5");
+}
+
+TEST_F(SceneLoader, ZeroLengthUpVector) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0],
+             "up": [0, 0, 0]},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:3:20: camera.up must be non-zero, got [0,0,0]");
+}
+
+TEST_F(SceneLoader, UpParallelToViewDirection) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0],
+             "up": [0, 0, 2]},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:3:20: camera.up must not be parallel to look_at - position");
+}
+
+TEST_F(SceneLoader, UnknownMaterialName) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "radius": 1, "material": "gold"}]
+})");
+  EXPECT_ERROR(f, "s.json:5:59: objects[0].material unknown material \"gold\"");
+}
+
+TEST_F(SceneLoader, DuplicateKeyRejected) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": 8, "width": 16}
+})");
+  EXPECT_ERROR(f, "s.json:3:37: film.width duplicate key");
+}
+
+TEST_F(SceneLoader, MotionTimeOutsideShutter) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "motion": [{"time": 0}, {"time": 1.5}]}]
+})");
+  EXPECT_ERROR(f, "s.json:6:49: objects[0].motion[1].time must be within the shutter [0, 1], got 1.5");
+}
+
+TEST_F(SceneLoader, MotionTimesNotIncreasing) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "motion": [{"time": 0.5}, {"time": 0.5}]}]
+})");
+  EXPECT_ERROR(f, "s.json:6:51: objects[0].motion[1].time must be greater than the previous key's time (0.5), got 0.5");
+}
+
+TEST_F(SceneLoader, CameraMotionOutsideShutter) {
+  fs::path f = scene(R"({
+  "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "shutter": [0, 0.5],
+             "motion": [{"time": 0, "position": [0, 0, 5], "look_at": [0, 0, 0]},
+                        {"time": 1, "position": [1, 0, 5], "look_at": [0, 0, 0]}]},
+  "film": {"width": 8, "height": 8}
+})");
+  EXPECT_ERROR(f, "s.json:4:34: camera.motion[1].time must be within the shutter [0, 0.5], got 1");
+}
+
+TEST_F(SceneLoader, GlossyWithRoughnessAndExponent) {
+  fs::path f = scene(kHead + R"(  "materials": {
+    "shiny": {"type": "glossy", "roughness": 0.2, "exponent": 50}
+  }
+})");
+  EXPECT_ERROR(f, "s.json:5:51: materials.shiny.exponent cannot be combined with roughness");
+}
+
+TEST_F(SceneLoader, AlbedoOutOfRange) {
+  fs::path f = scene(kHead + R"(  "materials": {"hot": {"type": "diffuse", "albedo": [1.2, 0, 0]}}
+})");
+  EXPECT_ERROR(f, "s.json:4:54: materials.hot.albedo must have components in [0,1], got [1.2,0,0]");
+}
+
+TEST_F(SceneLoader, SingularMatrix) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "transform": {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0]}}]
+})");
+  EXPECT_ERROR(f, "s.json:6:29: objects[0].transform is singular");
+}
+
+TEST_F(SceneLoader, SecondEnvironmentLight) {
+  fs::path f = scene(kHead + R"(  "lights": [{"type": "environment", "radiance": [1, 1, 1]},
+             {"type": "environment", "radiance": [2, 2, 2]}]
+})");
+  EXPECT_ERROR(f, "s.json:5:14: lights[1] is a second environment light");
+}
+
+TEST_F(SceneLoader, AllDegenerateMeshIsError) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0]],
+               "indices": [0, 1, 2, 1, 1, 2]}]
+})");
+  EXPECT_ERROR(f, "s.json:6:27: objects[0].indices leaves no triangles (all 2 are degenerate)");
+}
+
+TEST_F(SceneLoader, MeshIndexOutOfRange) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+               "indices": [0, 1, 3]}]
+})");
+  EXPECT_ERROR(f, "s.json:6:34: objects[0].indices[2] must be a vertex index in [0, 2], got 3");
+}
+
+TEST_F(SceneLoader, MissingSceneFile) {
+  fs::path f = temp_dir() / "nope.json";
+  EXPECT_ERROR(f, "nope.json: cannot open: No such file or directory");
+}
+
+TEST_F(SceneLoader, EveryTruncationOfTheExampleIsAnInputError) {
+  // Exercises the syntax-error path (and, under ASan, the position scanner) on broken text.
+  std::string text = read(kExamples / "all-features.json");
+  ASSERT_GT(text.size(), 100u);
+  fs::path file = scene("");
+  for (size_t n = 0; n < text.size() - 2; n += 7) {
+    write(file, text.substr(0, n));
+    EXPECT_THROW(load_scene(file), InputError) << n;
+  }
+}
+
+TEST_F(SceneLoader, TopLevelMustBeAnObject) {
+  EXPECT_ERROR(scene("[1, 2]"), "s.json:1:1: the scene must be a JSON object, got [1,2]");
+}
+
+// --- bad input: OBJ / MTL -----------------------------------------------------------------
+
+TEST_F(SceneLoader, MissingObjFile) {
+  fs::path f = scene(kHead + R"(  "objects": [
+    {"type": "obj",
+     "file": "missing.obj"}
+  ]
+})");
+  EXPECT_ERROR(f, "s.json:6:14: objects[0].file cannot open \"missing.obj\": No such file or directory");
+}
+
+TEST_F(SceneLoader, ObjFaceIndexOutOfRange) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"bad-index.obj\"}]\n}\n", {"bad-index.obj"});
+  EXPECT_ERROR(f, "bad-index.obj:7: face index 9 out of range (4 vertices)");
+}
+
+TEST_F(SceneLoader, ObjMissingMtl) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"missing-mtl.obj\"}]\n}\n", {"missing-mtl.obj"});
+  EXPECT_ERROR(f, "missing-mtl.obj:2: mtllib cannot open \"no-such.mtl\": No such file or directory");
+}
+
+TEST_F(SceneLoader, ObjUnreadableMtl) {
+  // A directory where the MTL file should be: opening it for reading fails.
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"m.obj\"}]\n}\n");
+  fs::create_directory(f.parent_path() / "lib.mtl");
+  write(f.parent_path() / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nmtllib lib.mtl\nf 1 2 3\n");
+  EXPECT_ERROR(f, "m.obj:4: mtllib cannot open \"lib.mtl\": Is a directory");
+}
+
+TEST_F(SceneLoader, ObjUnknownUsemtl) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"unknown-usemtl.obj\"}]\n}\n",
+                     {"unknown-usemtl.obj", "two.mtl"});
+  EXPECT_ERROR(f, "unknown-usemtl.obj:7: usemtl \"purple\" names no material");
+}
+
+TEST_F(SceneLoader, ObjMaterialOverrideSkipsMtlNames) {
+  // With a JSON material the OBJ's own materials are not consulted at all.
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "obj", "file": "unknown-usemtl.obj", "material": "grey"}]
+})",
+                     {"unknown-usemtl.obj", "two.mtl"});
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.shapes.size(), 1u);
+  EXPECT_EQ(s.shapes[0].mesh.indices.size(), 6u);
+  EXPECT_EQ(s.materials.size(), 1u);
+}
+
+TEST_F(SceneLoader, ObjFacesWithoutMaterialGetDefaultDiffuse) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"bad.obj\"}]\n}\n");
+  write(f.parent_path() / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.shapes.size(), 1u);
+  EXPECT_EQ(material_of(s, s.shapes[0]).name, "bad/default");
+  EXPECT_EQ(material_of(s, s.shapes[0]).type, MaterialType::Diffuse);
+}
+
+TEST_F(SceneLoader, ObjRelativeIndicesAndNormals) {
+  // A quad through negative (relative) indices with per-corner normals: triangulated, normals kept.
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1 -1//-1\n");
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.shapes.size(), 1u);
+  const MeshData& m = s.shapes[0].mesh;
+  EXPECT_EQ(m.indices.size(), 6u);
+  ASSERT_EQ(m.normals.size(), m.positions.size());
+  expect_vec(m.normals[0], 0, 0, 1);
+}
+
+TEST_F(SceneLoader, ObjRelativeIndexBeforeFirstVertex) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n");
+  EXPECT_ERROR(f, "q.obj:3: face index -3 out of range (2 vertices)");
+}
+
+TEST_F(SceneLoader, ObjMalformedFaceVertex) {
+  // tinyobjloader would fail with a generic message; the check names the line and the token.
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
+  write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2/ 3\n");
+  EXPECT_ERROR(f, "q.obj:4: bad face vertex \"2/\"");
+}
+
+TEST_F(SceneLoader, ByteOrderMarkIgnored) {
+  fs::path f = scene("\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+                     " \"film\": {\"width\": 8, \"height\": 0}}");
+  EXPECT_ERROR(f, "s.json:2:33: film.height must be an integer >= 1, got 0");
+}
+
+TEST_F(SceneLoader, AllDegenerateObjIsError) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"all-degenerate.obj\"}]\n}\n",
+                     {"all-degenerate.obj"});
+  EXPECT_ERROR(f, "s.json:4:39: objects[0].file has no triangles (all 1 skipped as degenerate)");
+}
+
+// --- JSON locations -----------------------------------------------------------------------
+
+TEST(JsonLocations, PathsQuoteKeysThatAreNotIdentifiers) {
+  EXPECT_EQ(json_key_path(json_key_path("", "materials"), "my mat"), "materials[\"my mat\"]");
+  EXPECT_EQ(json_index_path(json_key_path("", "objects"), 2), "objects[2]");
+}
+
+TEST(JsonLocations, ColumnsCountCharactersNotBytes) {
+  std::string text = "{\"materials\": {\"caf\xC3\xA9\": 1, \"b\": [true, 2]}}";
+  JsonLocations at(text);
+  auto v = at.value("materials.b[1]");
+  ASSERT_TRUE(v);
+  EXPECT_EQ(v->line, 1);
+  EXPECT_EQ(v->col, 39);  // the e-acute is two bytes but one column
+  EXPECT_EQ(at.source(*v), "2");
+  auto k = at.key("materials[\"caf\xC3\xA9\"]");
+  ASSERT_TRUE(k);
+  EXPECT_EQ(k->col, 16);
+}

@@ -1,0 +1,68 @@
+#pragma once
+// Small scenes built in code for the analytic renderer tests.
+#include "renderer/render/renderer.h"
+#include "renderer/scene/scene_desc.h"
+
+namespace pdrt::test {
+
+inline int add_material(SceneDesc& s, Material m) {
+  s.materials.push_back(std::move(m));
+  return int(s.materials.size()) - 1;
+}
+
+inline Material diffuse(float albedo) {
+  Material m;
+  m.name = "diffuse";
+  m.type = MaterialType::Diffuse;
+  m.albedo = Vec3(albedo);
+  return m;
+}
+
+inline Material emitter(float radiance, bool two_sided = false) {
+  Material m;
+  m.name = "emitter";
+  m.type = MaterialType::Emitter;
+  m.radiance = Vec3(radiance);
+  m.two_sided = two_sided;
+  return m;
+}
+
+// A quad corner, corner+e1, corner+e1+e2, corner+e2; its front face is cross(e1, e2).
+inline ShapeDesc quad(Vec3 corner, Vec3 e1, Vec3 e2, int material) {
+  ShapeDesc s;
+  s.kind = ShapeDesc::Kind::Mesh;
+  s.mesh.positions = {corner, corner + e1, corner + e1 + e2, corner + e2};
+  s.mesh.indices = {0, 1, 2, 0, 2, 3};
+  s.material = material;
+  return s;
+}
+
+inline ShapeDesc sphere(Vec3 center, float radius, int material) {
+  ShapeDesc s;
+  s.kind = ShapeDesc::Kind::Sphere;
+  s.center = center;
+  s.radius = radius;
+  s.material = material;
+  return s;
+}
+
+inline SceneDesc base_scene(int width, int height, int spp) {
+  SceneDesc s;
+  s.film.width = width, s.film.height = height;
+  s.film.filter.type = FilterType::Box;
+  s.film.filter.radius = 0.5f;
+  s.sampler.spp = spp;
+  s.sampler.type = "poisson";
+  s.sampler.seed = 7;
+  return s;
+}
+
+inline RenderResult render_quietly(const SceneDesc& s, int threads = 0) {
+  auto sampler = make_scene_sampler(s.sampler);
+  RenderOptions o;
+  o.quiet = true;
+  o.threads = threads;
+  return render(s, *sampler, o);
+}
+
+}  // namespace pdrt::test

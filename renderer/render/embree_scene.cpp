@@ -8,17 +8,38 @@ namespace pdrt {
 
 namespace {
 
-// Uniform time steps for a keyframed motion: the keys themselves when they are evenly
-// spaced, else a resampling fine enough that Embree's interpolation follows ours.
-std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys) {
+// Uniform time steps over the whole shutter [open, close] for a keyframed motion that is
+// clamped outside its keys' range. Embree treats an instance as absent outside its time
+// range, so the steps must cover the shutter, not just the keys. Evenly spaced keys extend
+// their grid by clamped copies (exact); other keys are resampled finely enough that Embree's
+// linear interpolation follows ours.
+std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys, float open, float close) {
+  constexpr int kMaxSteps = 129;
   const int n = int(keys.size());
   const float t0 = keys.front().time, t1 = keys.back().time, dt = (t1 - t0) / (n - 1);
+  const float tol = 1e-6f * (1 + std::max(std::abs(open), std::abs(close)));
   bool even = true;
-  for (int i = 0; i < n; ++i) even = even && std::abs(keys[i].time - (t0 + i * dt)) <= 1e-6f * (1 + std::abs(t1));
-  if (even) return keys;
-  const int steps = std::min(129, 16 * (n - 1) + 1);
+  for (int i = 0; i < n; ++i) even = even && std::abs(keys[i].time - (t0 + i * dt)) <= tol;
+  if (even) {
+    const int before = int(std::ceil((t0 - open) / dt - 1e-4f)), after = int(std::ceil((close - t1) / dt - 1e-4f));
+    if (before + n + after <= kMaxSteps) {
+      std::vector<MotionKey> out;
+      for (int i = -before; i < n + after; ++i) {
+        MotionKey k = interpolate(keys.data(), n, t0 + float(i) * dt);
+        k.time = t0 + float(i) * dt;
+        out.push_back(k);
+      }
+      return out;
+    }
+  }
+  const float lo = std::min(open, t0), hi = std::max(close, t1);
+  const int steps = kMaxSteps;
   std::vector<MotionKey> out(steps);
-  for (int i = 0; i < steps; ++i) out[i] = interpolate(keys.data(), n, t0 + (t1 - t0) * i / (steps - 1));
+  for (int i = 0; i < steps; ++i) {
+    const float t = lo + (hi - lo) * float(i) / float(steps - 1);
+    out[i] = interpolate(keys.data(), n, t);
+    out[i].time = t;
+  }
   return out;
 }
 
@@ -90,16 +111,17 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
     rtcAttachGeometryByID(s.child, g, 0);
     rtcReleaseGeometry(g);
     rtcCommitScene(s.child);
-    std::vector<MotionKey> steps = time_steps(d.motion);
+    // Keyframe times are in shutter units; rays carry time normalised to the shutter. An
+    // instantaneous shutter sees the motion at its one time, as a single step.
+    const CameraDesc& c = desc.camera;
+    const float span = c.shutter_close - c.shutter_open;
+    std::vector<MotionKey> steps = span > 0 ? time_steps(d.motion, c.shutter_open, c.shutter_close)
+                                            : std::vector<MotionKey>{interpolate(d.motion.data(), int(d.motion.size()), c.shutter_open)};
     RTCGeometry inst = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(inst, s.child);
     rtcSetGeometryTimeStepCount(inst, unsigned(steps.size()));
-    // Keyframe times are in shutter units; rays carry time normalised to the shutter.
-    const CameraDesc& c = desc.camera;
-    float span = c.shutter_close - c.shutter_open;
-    auto norm = [&](float t) { return span > 0 ? (t - c.shutter_open) / span : 0.0f; };
-    float r0 = norm(steps.front().time), r1 = norm(steps.back().time);
-    if (r1 > r0) rtcSetGeometryTimeRange(inst, r0, r1);
+    if (steps.size() > 1)
+      rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span, (steps.back().time - c.shutter_open) / span);
     for (std::size_t k = 0; k < steps.size(); ++k) {
       RTCQuaternionDecomposition q;
       rtcInitQuaternionDecomposition(&q);

@@ -193,6 +193,7 @@ bool Bsdf::sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const {
   out->wi = normalize(wt);
   out->pdf = float(1.0 - f);
   out->transmission = true;
+  out->eta = eta;
   // (1 - F) / eta^2 per unit projected solid angle, divided by the choice probability 1 - F.
   out->weight = albedo_ / (eta * eta);
   return true;
@@ -268,6 +269,7 @@ bool Bsdf::sample_rough_dielectric(Vec3 wo, float u1, float u2, float uc, BsdfSa
     out->pdf = float(pm * (1.0 - f) * eta * eta * -hi / (denom * denom));
     out->weight = albedo_ * (ggx.g2(wo, wi) / (ggx.g1(wo) * eta * eta));
     out->transmission = true;
+    out->eta = eta;
   }
   if (inside) wi.z = -wi.z;
   out->wi = wi;

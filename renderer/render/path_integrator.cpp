@@ -29,6 +29,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHi
   PathResult res;
   res.depth = std::numeric_limits<float>::infinity();
   Vec3 beta(1.0f);
+  float eta_scale = 1;   // product of eta^2 over transmissions: beta * eta_scale is free of the 1/eta^2 radiance scaling
   float prev_pdf = 0;    // solid-angle pdf of the BSDF sample that produced `ray`
   bool prev_delta = true;  // camera rays and delta lobes: emitters hit are counted fully
   Vec3 prev_p;
@@ -115,9 +116,13 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHi
     prev_delta = bs.delta;
     prev_p = hit.p;
 
-    // Russian roulette (pbrt-v4): survive with probability max(beta), at least 5 %.
+    if (bs.transmission) eta_scale *= bs.eta * bs.eta;
+
+    // Russian roulette (pbrt-v4): survive with probability max(beta * eta_scale), so a path
+    // inside glass is not killed for the radiance compression at the interface; no floor,
+    // so a path of throughput >= 1 always survives (a lossless furnace stays noise-free).
     if (depth + 1 >= settings_.rr_depth) {
-      float q = std::max(0.05f, 1 - max_component(beta));
+      float q = std::max(0.0f, 1 - max_component(beta * eta_scale));
       if (float(ps.get_1d(Family::Time, salt_roulette(depth))) < q) break;
       beta /= 1 - q;
     }

@@ -39,7 +39,9 @@ class SceneParser {
   Affine transform(const JsonNode& n) const;
   Affine rotation(const JsonNode& n) const;
   Vec3 scale(const JsonNode& n) const;
-  std::vector<MotionKey> motion(const JsonNode& n) const;
+  // `sphere`: a key may scale only uniformly (Embree would make an ellipsoid of the instance,
+  // while light sampling and the static case keep a sphere).
+  std::vector<MotionKey> motion(const JsonNode& n, bool sphere) const;
   void check_time(const JsonNode& t, float previous, bool first) const;
   MeshData quad(const JsonObject& o);
   void keep_triangles(MeshData& mesh, const JsonNode& where);
@@ -313,7 +315,7 @@ Affine SceneParser::transform(const JsonNode& n) const {
   return m;
 }
 
-std::vector<MotionKey> SceneParser::motion(const JsonNode& n) const {
+std::vector<MotionKey> SceneParser::motion(const JsonNode& n, bool sphere) const {
   std::vector<MotionKey> keys;
   size_t count = n.array_size(2);
   for (size_t i = 0; i < count; ++i) {
@@ -330,7 +332,11 @@ std::vector<MotionKey> SceneParser::motion(const JsonNode& n) const {
       Vec3 axis = r.require("axis").nonzero_vec3();
       k.rotate = Quat::from_axis_angle(axis, r.require("degrees").number());
     }
-    if (auto x = o.get("scale")) k.scale = scale(*x);
+    if (auto x = o.get("scale")) {
+      k.scale = scale(*x);
+      if (sphere && !(k.scale.x == k.scale.y && k.scale.y == k.scale.z))
+        x->fail_got("must be uniform for a sphere (one number); use a mesh for an ellipsoid");
+    }
     keys.push_back(k);
   }
   return keys;
@@ -338,7 +344,7 @@ std::vector<MotionKey> SceneParser::motion(const JsonNode& n) const {
 
 void SceneParser::place(ShapeDesc& s, const JsonObject& o, const std::string& where) const {
   if (auto t = o.get("transform")) s.transform = transform(*t);
-  if (auto m = o.get("motion")) s.motion = motion(*m);
+  if (auto m = o.get("motion")) s.motion = motion(*m, s.kind == ShapeDesc::Kind::Sphere);
   s.where = doc_.name() + ": " + where;
 }
 

@@ -187,7 +187,7 @@ TEST_F(SceneLoader, ExampleMotionKeys) {
   ASSERT_EQ(m.size(), 3u);
   EXPECT_FLOAT_EQ(m[1].time, 0.5f);
   expect_vec(m[1].translate, 0, 0.25f, 0);
-  expect_vec(m[2].scale, 1, 1.2f, 1);
+  expect_vec(m[2].scale, 1.2f, 1.2f, 1.2f);
   Quat q = Quat::from_axis_angle({0, 0, 1}, 45);
   EXPECT_FLOAT_EQ(m[2].rotate.w, q.w);
   EXPECT_FLOAT_EQ(m[2].rotate.z, q.z);
@@ -470,6 +470,28 @@ TEST_F(SceneLoader, MotionTimesNotIncreasing) {
                "motion": [{"time": 0.5}, {"time": 0.5}]}]
 })");
   EXPECT_ERROR(f, "s.json:6:51: objects[0].motion[1].time must be greater than the previous key's time (0.5), got 0.5");
+}
+
+// A moving sphere keeps a sphere: Embree would scale its instance into an ellipsoid while
+// light sampling samples a sphere, so a non-uniform key scale is refused (lights and objects).
+TEST_F(SceneLoader, MovingSphereLightRefusesNonUniformScale) {
+  fs::path f = scene(kHead + R"(  "lights": [{"type": "sphere", "radius": 0.5, "radiance": [1, 1, 1],
+              "motion": [{"time": 0}, {"time": 1, "scale": [1, 2, 1]}]}]
+})");
+  EXPECT_ERROR(f, "s.json:5:60: lights[0].motion[1].scale must be uniform for a sphere (one number); use a mesh for an ellipsoid, got [1,2,1]");
+}
+
+TEST_F(SceneLoader, MovingSphereObjectAcceptsUniformScaleOnly) {
+  fs::path ok = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "motion": [{"time": 0, "scale": 2}, {"time": 1, "scale": [3, 3, 3]}]}]
+})");
+  EXPECT_FLOAT_EQ(load_scene(ok).shapes[0].motion[1].scale.y, 3);
+  fs::path bad = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "objects": [{"type": "sphere", "material": "grey", "radius": 1,
+               "motion": [{"time": 0, "scale": [1, 1, 0.5]}, {"time": 1}]}]
+})");
+  EXPECT_ERROR(bad, "s.json:6:48: objects[0].motion[0].scale must be uniform for a sphere (one number); use a mesh for an ellipsoid, got [1,1,0.5]");
 }
 
 TEST_F(SceneLoader, CameraMotionOutsideShutter) {

@@ -27,6 +27,17 @@ inline Material emitter(float radiance, bool two_sided = false) {
   return m;
 }
 
+// A smooth (roughness 0) or rough glass of index `ior`, lossless.
+inline Material glass(float ior, float roughness = 0) {
+  Material m;
+  m.name = "glass";
+  m.type = MaterialType::Dielectric;
+  m.ior = ior;
+  m.roughness = roughness;
+  m.albedo = Vec3(1.0f);
+  return m;
+}
+
 // A quad corner, corner+e1, corner+e1+e2, corner+e2; its front face is cross(e1, e2).
 inline ShapeDesc quad(Vec3 corner, Vec3 e1, Vec3 e2, int material) {
   ShapeDesc s;

@@ -2,7 +2,7 @@
 
 namespace pdrt {
 
-bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index, PixelSample& ps,
+bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index, PixelSampleState& ps,
                        CameraSample* out) {
   ps.start_pixel_sample(x, y, index);
   const Filter& filter = rule.filter;

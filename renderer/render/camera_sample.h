@@ -25,7 +25,7 @@ struct CameraSampleRule {
 
 // Camera sample `index` of pixel (x, y); starts `ps` on that sample. False when the sample
 // is not taken (outside the filter, or not kept by rank); then time and lens are not drawn.
-bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index, PixelSample& ps,
+bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index, PixelSampleState& ps,
                        CameraSample* out);
 
 }  // namespace pdrt

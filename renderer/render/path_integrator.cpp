@@ -19,13 +19,13 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lig
   for (const Material& m : scene.desc().materials) bsdfs_.emplace_back(m);
 }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const { return trace(ray, ps, nullptr, false); }
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps) const { return trace(ray, ps, nullptr, false); }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit& first, bool found) const {
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const SurfaceHit& first, bool found) const {
   return trace(ray, ps, &first, found);
 }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit* first, bool first_found) const {
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const SurfaceHit* first, bool first_found) const {
   PathResult res;
   res.depth = std::numeric_limits<float>::infinity();
   Vec3 beta(1.0f);

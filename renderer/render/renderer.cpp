@@ -52,7 +52,7 @@ struct PixelRenderer {
   // packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is, because
   // packet and single-ray kernels may differ in the last bit; so a pixel's samples are the
   // same whether it is rendered at once or over adaptive rounds.
-  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSample& ps) const {
+  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSampleState& ps) const {
     int64_t rays = 0;
     for (int64_t g = begin & ~int64_t(3); g < end; g += 4) {
       Ray ray[4];
@@ -125,7 +125,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
         int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
         int64_t& local = rays.local();
-        PixelSample ps(sampler);
+        PixelSampleState ps(sampler);
         for (int y = y0; y < y1; ++y)
           for (int x = x0; x < x1; ++x) {
             PixelAccum& acc = film.at(x, y);

@@ -36,7 +36,7 @@ uint64_t shuffle_index(uint64_t index, uint64_t stream);
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
 // Axis k of value i: off[k] + mul[k] * coords[(i << shift) + src[k]], clamped to [0, 1).
-// Fields are left uninitialised on purpose: PixelSample keeps 160 of them per thread and
+// Fields are left uninitialised on purpose: PixelSampleState keeps 160 of them per thread and
 // fills one only when its stream is first used.
 struct PreparedStream {
   const uint32_t* coords;  // null: nothing prepared, ask the sampler
@@ -82,12 +82,12 @@ class Sampler {
   uint64_t seed_hash_;  // mixed once here, not per sample
 };
 
-// pbrt-v4's interface on top of the pure functions: one per thread, reused across pixels.
-// The streams of the current pixel are prepared once, on first use, so the values of a
+// The sampler state of the pixel sample being traced (pbrt-v4's StartPixelSample + Get1D/
+// Get2D on top of the pure functions): one per thread, reused across pixels. The streams of the current pixel are prepared once, on first use, so the values of a
 // pixel's later samples cost a table read (values are identical to the Sampler's).
-class PixelSample {
+class PixelSampleState {
  public:
-  explicit PixelSample(const Sampler& s) : s_(&s) {}
+  explicit PixelSampleState(const Sampler& s) : s_(&s) {}
   void start_pixel_sample(int px, int py, int64_t index) {
     if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
     index_ = index;

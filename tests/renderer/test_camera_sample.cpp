@@ -21,7 +21,7 @@ TEST(CameraSample, DrawsEachDimensionFromItsOwnFamily) {
   // centre plus the scaled Pixel draw, and time and lens are the Time and Lens draws.
   auto sampler = make_sampler("random", 7);
   Filter filter(filter_desc(FilterType::Box, 0.5f, false));
-  PixelSample ps(*sampler);
+  PixelSampleState ps(*sampler);
   for (int64_t i = 0; i < 64; ++i) {
     CameraSample cs;
     ASSERT_TRUE(get_camera_sample({filter}, 5, 9, i, ps, &cs)) << i;
@@ -39,7 +39,7 @@ TEST(CameraSample, RankSelectionKeepsSampleWhenItsRankIsBelowTheFilterValue) {
   // kept sample carries f / x = max f.
   auto sampler = make_sampler("random", 3);
   Filter filter(filter_desc(FilterType::Tent, 1.0f, true));
-  PixelSample ps(*sampler);
+  PixelSampleState ps(*sampler);
   const int n = 256;
   int kept = 0;
   for (int64_t i = 0; i < n; ++i) {

@@ -36,11 +36,11 @@ TEST_P(EverySampler, ReplaysInAnyOrderAndFromAnyThread) {
   EXPECT_EQ(forward, threaded);
 }
 
-// PixelSample prepares each stream once per pixel; its values must equal the pure
+// PixelSampleState prepares each stream once per pixel; its values must equal the pure
 // functions bit for bit, in any pixel order, for every family and bounce salt (including
 // salts past its cache and indices past a table's length).
-TEST_P(EverySampler, PixelSampleMatchesTheSamplerBitForBit) {
-  PixelSample ps(*s);
+TEST_P(EverySampler, PixelSampleStateMatchesTheSamplerBitForBit) {
+  PixelSampleState ps(*s);
   const int pixels[][2] = {{0, 0}, {5, 3}, {-7, 2}, {300, -41}, {5, 3}, {63, 64}};
   int64_t compared = 0;
   for (const auto& p : pixels)

@@ -1,6 +1,6 @@
-// `jitter`: Cook 1986 §4.2 and §5.1 stratified sampling with prefix extension. Each
-// (pixel, family, bounce) draws its own progressive jittered sequence (Christensen, Kensler
-// & Kilpatrick 2018, "pj"): 2-D points are exactly k x k stratified whenever n = 4^j
+// The progressive jitter sampler (`jitter` in scenes and on the command line): Cook 1986
+// §4.2 and §5.1 stratified sampling with prefix extension. Each (pixel, family, bounce)
+// draws its own progressive jittered sequence (Christensen, Kensler & Kilpatrick 2018, "pj"): 2-D points are exactly k x k stratified whenever n = 4^j
 // (1-D: n strata when n = 2^j), so n = k^2 samples are Cook's jittered grid, and because
 // every family has an independent random stratum order the dimensions are decorrelated
 // like Cook's per-pixel prototype permutations (Fig. 8).
@@ -47,9 +47,9 @@ double pj_1d(uint64_t j, uint64_t stream) {
   return (double(c) + to_unit(h)) / cells;
 }
 
-class JitterSampler final : public Sampler {
+class ProgressiveJitterSampler final : public Sampler {
  public:
-  explicit JitterSampler(uint64_t seed) : Sampler(seed) {}
+  explicit ProgressiveJitterSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "jitter"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
@@ -63,6 +63,8 @@ class JitterSampler final : public Sampler {
 
 }  // namespace
 
-std::unique_ptr<Sampler> make_jitter_sampler(uint64_t seed) { return std::make_unique<JitterSampler>(seed); }
+std::unique_ptr<Sampler> make_progressive_jitter_sampler(uint64_t seed) {
+  return std::make_unique<ProgressiveJitterSampler>(seed);
+}
 
 }  // namespace pdrt

@@ -26,7 +26,7 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 
 // A per-stream permutation of sample indices that maps every prefix [0, 2^k) onto itself:
 // bit c of the index flips by a hash of the bits above it, except while those are all zero.
-// Sequences that are stratified by index (jitter, Sobol) otherwise pair sample i of one
+// Sequences that are stratified by index (progressive jitter, Sobol) otherwise pair sample i of one
 // family with sample i of another through a fixed map, so a pixel's estimate converges to
 // the integral along that map instead of over the product domain (a per-pixel bias that
 // more samples never remove). Power-of-two prefixes keep their point sets, so their

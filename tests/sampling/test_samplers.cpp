@@ -113,7 +113,7 @@ std::vector<int> strata(const Sampler& s, int n, int gx, int gy) {
   return hits;
 }
 
-TEST(JitterSampler, PowerOfFourPrefixesAreKByKStratified) {
+TEST(ProgressiveJitterSampler, PowerOfFourPrefixesAreKByKStratified) {
   auto s = make_sampler("jitter", 9);
   for (int k : {1, 2, 4, 8, 16}) {
     auto hits = strata(*s, k * k, k, k);
@@ -121,7 +121,7 @@ TEST(JitterSampler, PowerOfFourPrefixesAreKByKStratified) {
   }
 }
 
-TEST(JitterSampler, PowerOfTwoTimePrefixesAreStratified) {
+TEST(ProgressiveJitterSampler, PowerOfTwoTimePrefixesAreStratified) {
   auto s = make_sampler("jitter", 9);
   for (int n : {2, 8, 64}) {
     std::vector<int> hits(n, 0);

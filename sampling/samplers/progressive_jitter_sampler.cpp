@@ -15,11 +15,9 @@
 namespace pdrt {
 namespace {
 
-double to_unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
-
 Vec2 pj_2d(uint64_t j, uint64_t stream) {
   uint64_t h = hash_combine(stream, j);
-  if (j == 0) return {to_unit(h), to_unit(mix64(h))};
+  if (j == 0) return {unit_from_u64(h), unit_from_u64(mix64(h))};
   int k = (63 - __builtin_clzll(j)) / 2;  // 4^k <= j < 4^(k+1)
   uint64_t n = uint64_t(1) << (2 * k), g = j >> (2 * k), i = j & (n - 1);
   Vec2 parent = pj_2d(i, stream);
@@ -32,19 +30,19 @@ Vec2 pj_2d(uint64_t j, uint64_t stream) {
   else sy ^= 1;
   cx = (cx & ~int64_t(1)) | sx;
   cy = (cy & ~int64_t(1)) | sy;
-  return {(double(cx) + to_unit(h)) / cells, (double(cy) + to_unit(mix64(h))) / cells};
+  return {(double(cx) + unit_from_u64(h)) / cells, (double(cy) + unit_from_u64(mix64(h))) / cells};
 }
 
 // 1-D: point j >= 2^k takes the half of its parent's cell (at the 2^(k+1) grid) that the
 // parent does not occupy.
 double pj_1d(uint64_t j, uint64_t stream) {
   uint64_t h = hash_combine(stream, j);
-  if (j == 0) return to_unit(h);
+  if (j == 0) return unit_from_u64(h);
   int k = 63 - __builtin_clzll(j);
   uint64_t i = j - (uint64_t(1) << k);
   double cells = double(uint64_t(1) << (k + 1));
   int64_t c = int64_t(pj_1d(i, stream) * cells) ^ 1;
-  return (double(c) + to_unit(h)) / cells;
+  return (double(c) + unit_from_u64(h)) / cells;
 }
 
 class ProgressiveJitterSampler final : public Sampler {

@@ -19,6 +19,11 @@ const char* family_name(Family f);
 
 using Vec2 = std::array<double, 2>;
 
+// Sample values live in [0, 1): the largest double below 1, and the clamp into [0, 1) that
+// keeps values computed in floating point (offsets, flips) inside it.
+inline constexpr double kBelowOne = 0x1.fffffffffffffp-1;
+constexpr double clamp_to_unit(double x) { return x < 0.0 ? 0.0 : x < 1.0 ? x : kBelowOne; }
+
 // Hash of a sample's coordinates: the per-(pixel, family, bounce) stream every sampler uses,
 // in two steps so samplers mix their seed once.
 uint64_t sample_seed_hash(uint64_t seed);
@@ -46,9 +51,7 @@ struct PreparedStream {
   double off[2], mul[2];
 
   double value(int64_t index, int k) const {
-    constexpr double kBelowOne = 0x1.fffffffffffffp-1;
-    double v = off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]);
-    return v < 0.0 ? 0.0 : v < 1.0 ? v : kBelowOne;
+    return clamp_to_unit(off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]));
   }
 };
 

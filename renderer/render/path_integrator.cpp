@@ -60,7 +60,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       res.depth = hit.t;
     }
     if (mat.type == MaterialType::Emitter) {
-      Vec3 le = lights_.emitted(hit, ray.dir);
+      Vec3 le = lights_.emitted(hit);
       if (!is_black(le)) {
         float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.pdf(prev_p, hit, time));
         res.radiance += beta * le * w;

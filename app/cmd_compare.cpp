@@ -1,4 +1,4 @@
-// `pdrt compare`: jitter vs Poisson (and random, Sobol) noise in real images, measured.
+// `pdrt compare`: progressive jitter vs Poisson (and random, Sobol) noise in real images, measured.
 #include "app/commands.h"
 #include "renderer/compare/compare.h"
 #include "sampling/core/errors.h"

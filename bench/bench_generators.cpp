@@ -18,49 +18,38 @@ void run(benchmark::State& state, pdrt::GeneratorParams p) {
   state.counters["points"] = double(points);
 }
 
-void BM_Bridson(benchmark::State& state) {
+// Default parameters of `method` but for the point count.
+pdrt::GeneratorParams by_count(const char* method, int64_t count) {
   pdrt::GeneratorParams p;
-  p.method = "bridson";
+  p.method = method;
+  p.count = count;
+  return p;
+}
+
+void BM_Bridson(benchmark::State& state) {
+  pdrt::GeneratorParams p = by_count("bridson", state.range(1));
   p.dim = int(state.range(0));
-  p.count = state.range(1);
   run(state, p);
 }
 BENCHMARK(BM_Bridson)->Args({2, 100000})->Args({2, 1000000})->Args({3, 100000})->Args({4, 100000})->Args({5, 50000})
     ->Unit(benchmark::kMillisecond);
 
 void BM_McCool(benchmark::State& state) {
-  pdrt::GeneratorParams p;
-  p.method = "mccool";
+  pdrt::GeneratorParams p = by_count("mccool", state.range(1));
   p.dim = int(state.range(0));
-  p.count = state.range(1);
   p.periodic = state.range(2) != 0;
   run(state, p);
 }
 BENCHMARK(BM_McCool)->Args({2, 4096, 0})->Args({2, 4096, 1})->Args({2, 65536, 1})->Args({1, 4096, 1})
     ->Unit(benchmark::kMillisecond);
 
-void BM_Dart(benchmark::State& state) {
-  pdrt::GeneratorParams p;
-  p.method = "dart";
-  p.count = state.range(0);
-  run(state, p);
-}
+void BM_Dart(benchmark::State& state) { run(state, by_count("dart", state.range(0))); }
 BENCHMARK(BM_Dart)->Arg(4096)->Unit(benchmark::kMillisecond);
 
-void BM_BestCandidate(benchmark::State& state) {
-  pdrt::GeneratorParams p;
-  p.method = "best-candidate";
-  p.count = state.range(0);
-  run(state, p);
-}
+void BM_BestCandidate(benchmark::State& state) { run(state, by_count("best-candidate", state.range(0))); }
 BENCHMARK(BM_BestCandidate)->Arg(1024)->Unit(benchmark::kMillisecond);
 
-void BM_Jitter(benchmark::State& state) {
-  pdrt::GeneratorParams p;
-  p.method = "jitter";
-  p.count = state.range(0);
-  run(state, p);
-}
+void BM_Jitter(benchmark::State& state) { run(state, by_count("jitter", state.range(0))); }
 BENCHMARK(BM_Jitter)->Arg(1 << 20)->Unit(benchmark::kMillisecond);
 
 }  // namespace

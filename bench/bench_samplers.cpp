@@ -1,5 +1,5 @@
 // Sampler lookup cost (issue 3 target: <= 10 ns per 2-D poisson sample on one core), both
-// random access through Sampler::get_2d and the renderer's sequential PixelSample path, and
+// random access through Sampler::get_2d and the renderer's sequential PixelSampleState path, and
 // default table generation time (<= 10 s on one core).
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/samplers/sample_table.h"
@@ -34,11 +34,11 @@ void BM_PoissonPixel(benchmark::State& state) {
 }
 BENCHMARK(BM_PoissonPixel);
 
-// The renderer's path: one PixelSample per thread; start_pixel_sample then one value per
+// The renderer's path: one PixelSampleState per thread; start_pixel_sample then one value per
 // family, so a pixel's streams are prepared at its first sample and later samples read the
 // table (the first-sample cost is included, amortised over 64 samples per pixel).
 void pixel_sample_lookups(benchmark::State& state, const pdrt::Sampler& s, pdrt::Family f) {
-  pdrt::PixelSample ps(s);
+  pdrt::PixelSampleState ps(s);
   int64_t i = 0;
   double acc = 0;
   for (auto _ : state) {
@@ -51,17 +51,17 @@ void pixel_sample_lookups(benchmark::State& state, const pdrt::Sampler& s, pdrt:
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_PixelSamplePoissonLens(benchmark::State& state) {
+void BM_PixelSampleStatePoissonLens(benchmark::State& state) {
   auto s = pdrt::make_poisson_sampler(1, pdrt::default_tables());
   pixel_sample_lookups(state, *s, pdrt::Family::Lens);
 }
-BENCHMARK(BM_PixelSamplePoissonLens);
+BENCHMARK(BM_PixelSampleStatePoissonLens);
 
-void BM_PixelSamplePoissonPixel(benchmark::State& state) {
+void BM_PixelSampleStatePoissonPixel(benchmark::State& state) {
   auto s = pdrt::make_poisson_sampler(1, pdrt::default_tables());
   pixel_sample_lookups(state, *s, pdrt::Family::Pixel);
 }
-BENCHMARK(BM_PixelSamplePoissonPixel);
+BENCHMARK(BM_PixelSampleStatePoissonPixel);
 
 void BM_Sampler(benchmark::State& state, const char* name) {
   auto s = pdrt::make_sampler(name, 1);

@@ -2,8 +2,10 @@
 
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/atomic_file.h"
+#include "sampling/core/cache_dir.h"
 #include "renderer/compare/convergence.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/hash.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
@@ -25,16 +27,9 @@ using nlohmann::json;
 
 namespace {
 
-uint64_t fnv1a(const std::string& s, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
-
-fs::path default_cache_dir() {
-  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "pdrt" / "references";
-  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "pdrt" / "references";
-  return fs::temp_directory_path() / "pdrt-references";
-}
+// The reference cache's key hash started from 1469598103934665603, the FNV basis short of its
+// last digit; kept, so references cached by earlier versions are still found.
+constexpr uint64_t kReferenceKeyBasis = 1469598103934665603ull;
 
 // A perceptually ordered dark-to-bright colour ramp for error heat maps.
 Vec3 heat(float t) {
@@ -147,8 +142,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
                          std::to_string(rs.sampler.seed) + "|" + PDRT_VERSION + "|samplers-v2";  // bump when sampler output changes
   char key[32];
-  std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text));
-  fs::path cache = (o.cache_dir.empty() ? default_cache_dir() : o.cache_dir) / (std::string("ref-") + key + ".exr");
+  std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
+  fs::path cache = (o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir) / (std::string("ref-") + key + ".exr");
   Image ref;
   bool cached = false;
   double ref_seconds = 0;

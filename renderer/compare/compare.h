@@ -23,7 +23,7 @@ struct CompareOptions {
   int threads = 0;
   bool quiet = false;
   std::filesystem::path out;
-  std::filesystem::path cache_dir;  // reference cache; empty = $XDG_CACHE_HOME/pdrt or ~/.cache/pdrt
+  std::filesystem::path cache_dir;  // reference cache; empty = cache_dir() / "references"
   std::string scene_label;          // for the report
   std::string scene_content;        // the scene file's bytes, part of the reference cache key
 };

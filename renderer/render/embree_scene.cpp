@@ -145,7 +145,6 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
   Vec3 hi(std::max(lb.bounds0.upper_x, lb.bounds1.upper_x), std::max(lb.bounds0.upper_y, lb.bounds1.upper_y),
           std::max(lb.bounds0.upper_z, lb.bounds1.upper_z));
   if (desc.shapes.empty() || !(hi.x >= lo.x)) lo = hi = Vec3(0.0f);
-  bounds_center_ = (lo + hi) * 0.5f;
   bounds_radius_ = std::max(length(hi - lo) * 0.5f, 1e-3f);
 }
 

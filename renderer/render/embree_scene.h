@@ -52,8 +52,7 @@ class EmbreeScene {
   float sphere_radius(int shape) const { return shapes_[shape].radius; }
 
   const SceneDesc& desc() const { return desc_; }
-  // Centre and radius of a sphere bounding the scene (over the whole shutter).
-  Vec3 bounds_center() const { return bounds_center_; }
+  // Radius of a sphere about the bounding box centre that bounds the scene (whole shutter).
   float bounds_radius() const { return bounds_radius_; }
   std::size_t triangle_count() const { return triangles_; }
   RTCScene rtc_scene() const { return scene_; }
@@ -78,7 +77,6 @@ class EmbreeScene {
   const EmbreeDevice& device_;
   RTCScene scene_ = nullptr;
   std::vector<Shape> shapes_;
-  Vec3 bounds_center_;
   float bounds_radius_ = 1;
   std::size_t triangles_ = 0;
 };

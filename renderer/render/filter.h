@@ -17,7 +17,6 @@ class Filter {
   float max_value() const { return max_; }
   // The smallest weight (negative for Mitchell's lobes), found on a fine grid.
   float min_value() const { return min_; }
-  FilterType type() const { return type_; }
 
  private:
   FilterType type_;

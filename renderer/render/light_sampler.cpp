@@ -11,6 +11,12 @@ float sphere_radius_at(const EmbreeScene& s, int shape, const Affine& m) {
   return s.sphere_radius(shape) * (s.moving(shape) ? std::cbrt(std::abs(m.determinant())) : 1.0f);
 }
 
+// Whether a point at squared distance dc2 from the centre of a sphere of radius r samples it
+// as from inside (by area) rather than by its cone. Points on the surface, up to float error
+// (1e-4 in squared distance), count as inside: there the cone's half-angle nears 90 degrees
+// and its pdf loses precision. sample_sphere and sphere_pdf must decide alike for MIS.
+bool sees_sphere_from_inside(float dc2, float r) { return dc2 <= r * r * 1.0001f; }
+
 }  // namespace
 
 LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
@@ -125,7 +131,7 @@ bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, st
   const Material& mat = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
   Vec3 to_c = c - ref;
   float dc2 = dot(to_c, to_c);
-  if (dc2 <= r * r * 1.0001f) {
+  if (sees_sphere_from_inside(dc2, r)) {
     // Inside (or on) the sphere: uniform area sampling.
     float z = float(1 - 2 * u[0]), s = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
     Vec3 n(s * std::cos(phi), s * std::sin(phi), z);
@@ -163,7 +169,7 @@ float LightSampler::sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const 
   float r = sphere_radius_at(scene_, shape, m);
   Vec3 to_c = c - ref;
   float dc2 = dot(to_c, to_c);
-  if (dc2 <= r * r * 1.0001f) {
+  if (sees_sphere_from_inside(dc2, r)) {
     Vec3 d = p - ref;
     float d2 = dot(d, d), cos_l = std::abs(dot(n, d)) / std::sqrt(d2);
     return cos_l > 0 ? d2 / (cos_l * 4 * kPi * r * r) : 0.0f;
@@ -192,7 +198,7 @@ float LightSampler::environment_pdf() const {
   return env_entry_ < 0 ? 0.0f : select_pdf(std::size_t(env_entry_)) / (4 * kPi);
 }
 
-Vec3 LightSampler::emitted(const SurfaceHit& hit, const Vec3& /*dir*/) const {
+Vec3 LightSampler::emitted(const SurfaceHit& hit) const {
   const Material& m = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
   if (m.type != MaterialType::Emitter) return Vec3(0.0f);
   return (hit.front || m.two_sided) ? m.radiance : Vec3(0.0f);

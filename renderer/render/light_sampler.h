@@ -31,8 +31,9 @@ class LightSampler {
   float pdf(const Vec3& ref, const SurfaceHit& hit, float time) const;
   float environment_pdf() const;
 
-  // Radiance leaving an emitter at `hit` toward -dir (0 for non-emitters / back faces).
-  Vec3 emitted(const SurfaceHit& hit, const Vec3& dir) const;
+  // Radiance leaving an emitter at `hit` toward the ray that found it (0 for non-emitters and
+  // back faces of one-sided emitters).
+  Vec3 emitted(const SurfaceHit& hit) const;
   const Vec3& environment() const { return env_; }
 
  private:

@@ -19,13 +19,13 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lig
   for (const Material& m : scene.desc().materials) bsdfs_.emplace_back(m);
 }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps) const { return trace(ray, ps, nullptr, false); }
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps) const { return trace(ray, ps, nullptr, false); }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit& first, bool found) const {
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const SurfaceHit& first, bool found) const {
   return trace(ray, ps, &first, found);
 }
 
-PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHit* first, bool first_found) const {
+PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const SurfaceHit* first, bool first_found) const {
   PathResult res;
   res.depth = std::numeric_limits<float>::infinity();
   Vec3 beta(1.0f);
@@ -61,7 +61,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSample& ps, const SurfaceHi
       res.depth = hit.t;
     }
     if (mat.type == MaterialType::Emitter) {
-      Vec3 le = lights_.emitted(hit, ray.dir);
+      Vec3 le = lights_.emitted(hit);
       if (!is_black(le)) {
         float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.pdf(prev_p, hit, time));
         res.radiance += beta * le * w;

@@ -25,13 +25,13 @@ struct PathResult {
 class PathIntegrator {
  public:
   PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const IntegratorDesc& settings);
-  PathResult trace(Ray ray, const PixelSample& sampler) const;
+  PathResult trace(Ray ray, const PixelSampleState& sampler) const;
   // The same path when the camera ray's intersection is already known (`found` false: it
   // missed), e.g. from a packet of a pixel's camera rays.
-  PathResult trace(Ray ray, const PixelSample& sampler, const SurfaceHit& first, bool found) const;
+  PathResult trace(Ray ray, const PixelSampleState& sampler, const SurfaceHit& first, bool found) const;
 
  private:
-  PathResult trace(Ray ray, const PixelSample& sampler, const SurfaceHit* first, bool found) const;
+  PathResult trace(Ray ray, const PixelSampleState& sampler, const SurfaceHit* first, bool found) const;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
   IntegratorDesc settings_;

@@ -1,6 +1,7 @@
 #include "renderer/render/renderer.h"
 
 #include "renderer/render/adaptive_metric.h"
+#include "renderer/render/camera_sample.h"
 #include "renderer/render/embree_scene.h"
 #include "sampling/core/errors.h"
 #include "renderer/render/filter.h"
@@ -45,47 +46,26 @@ struct PixelRenderer {
   const ThinLensCamera& camera;
   const EmbreeScene& scene;
   const PathIntegrator& integrator;
-  const Filter& filter;
-  const Sampler& sampler;
-  int spp;
-  bool rank_selection;
-
-  // Camera ray and filter weight of sample i of pixel (x, y); false when the sample is not
-  // taken (outside the filter, or not selected by rank).
-  bool camera_sample(int x, int y, int64_t i, PixelSample& ps, Ray* ray, float* weight) const {
-    ps.start_pixel_sample(x, y, i);
-    const float r = filter.radius();
-    auto u = ps.get_2d(Family::Pixel);
-    float ox = float(2 * u[0] - 1) * r, oy = float(2 * u[1] - 1) * r;
-    float w = filter.eval(ox, oy);
-    if (rank_selection) {
-      // McCool–Fiume §5.2: keep sample i of n when its rank i/n is below the normalised
-      // filter value x; the kept set has density ~ x, so the weight becomes f / x.
-      const float fmin = filter.min_value(), fmax = filter.max_value();
-      float xv = (w - fmin) / (fmax - fmin);
-      if (double(i + 1) / double(spp) > xv) return false;
-      w = w / xv;
-    } else if (w == 0) {
-      return false;  // outside the filter's support: contributes nothing
-    }
-    float time = float(ps.get_1d(Family::Time, 0));
-    *ray = camera.generate(float(x) + 0.5f + ox, float(y) + 0.5f + oy, ps.get_2d(Family::Lens), time);
-    *weight = w;
-    return true;
-  }
+  CameraSampleRule rule;
 
   // Samples [begin, end) of pixel (x, y); returns rays traced. Camera rays go to Embree as
   // packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is, because
   // packet and single-ray kernels may differ in the last bit; so a pixel's samples are the
   // same whether it is rendered at once or over adaptive rounds.
-  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSample& ps) const {
+  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSampleState& ps) const {
     int64_t rays = 0;
     for (int64_t g = begin & ~int64_t(3); g < end; g += 4) {
       Ray ray[4];
       float w[4] = {0, 0, 0, 0};
       bool live[4], found[4];
       SurfaceHit hit[4];
-      for (int k = 0; k < 4; ++k) live[k] = camera_sample(x, y, g + k, ps, &ray[k], &w[k]);
+      for (int k = 0; k < 4; ++k) {
+        CameraSample cs;
+        live[k] = get_camera_sample(rule, x, y, g + k, ps, &cs);
+        if (!live[k]) continue;
+        ray[k] = camera.generate(cs.film_x, cs.film_y, cs.lens, cs.time);
+        w[k] = cs.weight;
+      }
       if (!(live[0] || live[1] || live[2] || live[3])) continue;
       scene.intersect4(ray, live, hit, found);
       for (int k = 0; k < 4; ++k) {
@@ -124,7 +104,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   Film film(desc.film.width, desc.film.height);
   // Rank selection ranks against the full sample budget of a pixel (max_spp when adaptive).
   const int rank_n = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
-  PixelRenderer pr{camera, scene, integrator, filter, sampler, rank_n, desc.film.filter.rank_selection};
+  PixelRenderer pr{camera, scene, integrator, {filter, desc.film.filter.rank_selection, rank_n}};
 
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int W = desc.film.width, H = desc.film.height;
@@ -145,7 +125,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
         int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
         int64_t& local = rays.local();
-        PixelSample ps(sampler);
+        PixelSampleState ps(sampler);
         for (int y = y0; y < y1; ++y)
           for (int x = x0; x < x1; ++x) {
             PixelAccum& acc = film.at(x, y);

@@ -17,6 +17,12 @@ constexpr uint64_t mix64(uint64_t z) {
 
 constexpr uint64_t hash_combine(uint64_t a, uint64_t b) { return mix64(a ^ mix64(b)); }
 
+// Uniform double in [0, 1) from the top 53 bits of a 64-bit hash or engine output (exact).
+constexpr double unit_from_u64(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+// [0, 1) from all 32 bits, read as fixed point (bits / 2^32, exact).
+constexpr double unit_from_u32(uint32_t bits) { return double(bits) * 0x1.0p-32; }
+
 class Rng {
  public:
   // `stream` selects an independent pcg sequence for the same seed.
@@ -25,7 +31,7 @@ class Rng {
   uint64_t next_u64() { return engine_(); }
 
   // Uniform double in [0, 1) with 53 random bits.
-  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
+  double uniform() { return unit_from_u64(engine_()); }
 
   // Uniform double in [lo, hi).
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }

@@ -4,6 +4,7 @@
 // chosen prefix, so raising a pixel's sample count only appends samples (McCool §5.1).
 #include "sampling/samplers/poisson_sampler.h"
 
+#include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
 
@@ -16,7 +17,6 @@ namespace pdrt {
 namespace {
 
 constexpr double kFixed = 0x1.0p-32;
-constexpr double kBelowOne = 0x1.fffffffffffffp-1;
 
 // The 8 symmetries of [0, size)^2: bit 0 swaps the axes, bits 1 and 2 flip x and y (after
 // the swap).
@@ -36,8 +36,6 @@ void inverse_symmetry_pixel(unsigned sym, int P, int& a, int& b) {
 
 // Table index from the top hash bits by multiply-shift (no division in the lookup path).
 uint32_t pick(uint64_t h, uint32_t n) { return uint32_t(((h >> 32) * uint64_t(n)) >> 32); }
-
-double unit_clamp(double x) { return x < 0.0 ? 0.0 : x < 1.0 ? x : kBelowOne; }
 
 int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
@@ -62,7 +60,7 @@ class PoissonSampler final : public Sampler {
       p[0] -= std::floor(p[0]);
       p[1] -= std::floor(p[1]);
     }
-    return {unit_clamp(p[0]), unit_clamp(p[1])};
+    return {clamp_to_unit(p[0]), clamp_to_unit(p[1])};
   }
 
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
@@ -74,7 +72,7 @@ class PoissonSampler final : public Sampler {
     double x = t.coords[pick(h, t.table_count())][std::size_t(index)] * kFixed;
     if (h & 1) x = 1.0 - x;  // the 1-D symmetry
     if (opt_.toroidal_shift) x += double(mix64(h) >> 40) * 0x1.0p-24, x -= std::floor(x);
-    return unit_clamp(x);
+    return clamp_to_unit(x);
   }
 
   // get_2d/get_1d/pixel_sample with the per-stream part done once. Their steps (offset,
@@ -156,18 +154,12 @@ class PoissonSampler final : public Sampler {
     int oa = a, ob = b;
     inverse_symmetry_pixel(sym, P, oa, ob);
     Vec2 q = apply_symmetry({oa + c[0] * kFixed, ob + c[1] * kFixed}, sym, double(P));
-    return {unit_clamp(q[0] - a), unit_clamp(q[1] - b)};
+    return {clamp_to_unit(q[0] - a), clamp_to_unit(q[1] - b)};
   }
 
   TableSet tables_;
   PoissonOptions opt_;
 };
-
-std::filesystem::path cache_dir() {
-  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "pdrt";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "pdrt";
-  return std::filesystem::temp_directory_path() / "pdrt-cache";
-}
 
 bool complete(const std::filesystem::path& dir) {
   for (int f = 0; f < kFamilyCount; ++f)

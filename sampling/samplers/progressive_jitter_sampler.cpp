@@ -1,6 +1,6 @@
-// `jitter`: Cook 1986 §4.2 and §5.1 stratified sampling with prefix extension. Each
-// (pixel, family, bounce) draws its own progressive jittered sequence (Christensen, Kensler
-// & Kilpatrick 2018, "pj"): 2-D points are exactly k x k stratified whenever n = 4^j
+// The progressive jitter sampler (`jitter` in scenes and on the command line): Cook 1986
+// §4.2 and §5.1 stratified sampling with prefix extension. Each (pixel, family, bounce)
+// draws its own progressive jittered sequence (Christensen, Kensler & Kilpatrick 2018, "pj"): 2-D points are exactly k x k stratified whenever n = 4^j
 // (1-D: n strata when n = 2^j), so n = k^2 samples are Cook's jittered grid, and because
 // every family has an independent random stratum order the dimensions are decorrelated
 // like Cook's per-pixel prototype permutations (Fig. 8).
@@ -15,11 +15,9 @@
 namespace pdrt {
 namespace {
 
-double to_unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
-
 Vec2 pj_2d(uint64_t j, uint64_t stream) {
   uint64_t h = hash_combine(stream, j);
-  if (j == 0) return {to_unit(h), to_unit(mix64(h))};
+  if (j == 0) return {unit_from_u64(h), unit_from_u64(mix64(h))};
   int k = (63 - __builtin_clzll(j)) / 2;  // 4^k <= j < 4^(k+1)
   uint64_t n = uint64_t(1) << (2 * k), g = j >> (2 * k), i = j & (n - 1);
   Vec2 parent = pj_2d(i, stream);
@@ -32,24 +30,24 @@ Vec2 pj_2d(uint64_t j, uint64_t stream) {
   else sy ^= 1;
   cx = (cx & ~int64_t(1)) | sx;
   cy = (cy & ~int64_t(1)) | sy;
-  return {(double(cx) + to_unit(h)) / cells, (double(cy) + to_unit(mix64(h))) / cells};
+  return {(double(cx) + unit_from_u64(h)) / cells, (double(cy) + unit_from_u64(mix64(h))) / cells};
 }
 
 // 1-D: point j >= 2^k takes the half of its parent's cell (at the 2^(k+1) grid) that the
 // parent does not occupy.
 double pj_1d(uint64_t j, uint64_t stream) {
   uint64_t h = hash_combine(stream, j);
-  if (j == 0) return to_unit(h);
+  if (j == 0) return unit_from_u64(h);
   int k = 63 - __builtin_clzll(j);
   uint64_t i = j - (uint64_t(1) << k);
   double cells = double(uint64_t(1) << (k + 1));
   int64_t c = int64_t(pj_1d(i, stream) * cells) ^ 1;
-  return (double(c) + to_unit(h)) / cells;
+  return (double(c) + unit_from_u64(h)) / cells;
 }
 
-class JitterSampler final : public Sampler {
+class ProgressiveJitterSampler final : public Sampler {
  public:
-  explicit JitterSampler(uint64_t seed) : Sampler(seed) {}
+  explicit ProgressiveJitterSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "jitter"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
@@ -63,6 +61,8 @@ class JitterSampler final : public Sampler {
 
 }  // namespace
 
-std::unique_ptr<Sampler> make_jitter_sampler(uint64_t seed) { return std::make_unique<JitterSampler>(seed); }
+std::unique_ptr<Sampler> make_progressive_jitter_sampler(uint64_t seed) {
+  return std::make_unique<ProgressiveJitterSampler>(seed);
+}
 
 }  // namespace pdrt

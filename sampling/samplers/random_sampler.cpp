@@ -6,18 +6,16 @@
 namespace pdrt {
 namespace {
 
-double to_unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
-
 class RandomSampler final : public Sampler {
  public:
   explicit RandomSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "random"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
-    return to_unit(hash_combine(stream(px, py, f, bounce), uint64_t(index)));
+    return unit_from_u64(hash_combine(stream(px, py, f, bounce), uint64_t(index)));
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t h = hash_combine(stream(px, py, f, bounce), uint64_t(index));
-    return {to_unit(h), to_unit(mix64(h))};
+    return {unit_from_u64(h), unit_from_u64(mix64(h))};
   }
 };
 

@@ -4,6 +4,7 @@
 #include "sampling/core/atomic_file.h"
 #include "sampling/generators/balanced_relaxation_1d.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/hash.h"
 #include "sampling/generators/generator.h"
 #include "sampling/analysis/min_distance.h"
 #include "sampling/core/progress.h"
@@ -24,12 +25,6 @@ constexpr char kMagic[8] = {'P', 'D', 'R', 'T', 'T', 'B', 'L', '1'};
 uint32_t to_fixed(double x) {
   double v = std::floor(x * 4294967296.0);
   return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
-}
-
-uint64_t fnv1a(const char* data, std::size_t n) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (std::size_t i = 0; i < n; ++i) h = (h ^ uint8_t(data[i])) * 0x100000001b3ull;
-  return h;
 }
 
 PointSet relaxation_draw(const TableParams& p, int dim, int64_t count, uint64_t seed) {
@@ -226,7 +221,7 @@ void write_table(const std::filesystem::path& path, const SampleTable& t) {
     put_vec(out, t.coords[k]);
     put_vec(out, t.radius[k]);
   }
-  put<uint64_t>(out, fnv1a(out.data(), out.size()));
+  put<uint64_t>(out, fnv1a(std::string_view(out.data(), out.size())));
   write_file_atomically(path, [&](std::ostream& os) { os.write(out.data(), std::streamsize(out.size())); });
 }
 
@@ -248,7 +243,8 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   if (data.size() < 8 + 8) r.fail("truncated: no checksum");
   uint64_t stored;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
-  if (fnv1a(data.data(), data.size() - 8) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");
+  if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored)
+    r.fail("checksum mismatch: the file is truncated or corrupted");
 
   SampleTable t;
   uint8_t family = r.get<uint8_t>("the header");

@@ -10,7 +10,7 @@
 namespace pdrt {
 
 std::unique_ptr<Sampler> make_random_sampler(uint64_t seed);
-std::unique_ptr<Sampler> make_jitter_sampler(uint64_t seed);
+std::unique_ptr<Sampler> make_progressive_jitter_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_sobol_sampler(uint64_t seed);
 
 const char* family_name(Family f) {
@@ -34,7 +34,7 @@ const std::vector<std::string>& sampler_names() {
 
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "random") return make_random_sampler(seed);
-  if (name == "jitter") return make_jitter_sampler(seed);
+  if (name == "jitter") return make_progressive_jitter_sampler(seed);
   if (name == "sobol") return make_sobol_sampler(seed);
   if (name == "poisson") return make_poisson_sampler(seed, default_tables());
   std::string known;

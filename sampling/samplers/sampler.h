@@ -19,6 +19,11 @@ const char* family_name(Family f);
 
 using Vec2 = std::array<double, 2>;
 
+// Sample values live in [0, 1): the largest double below 1, and the clamp into [0, 1) that
+// keeps values computed in floating point (offsets, flips) inside it.
+inline constexpr double kBelowOne = 0x1.fffffffffffffp-1;
+constexpr double clamp_to_unit(double x) { return x < 0.0 ? 0.0 : x < 1.0 ? x : kBelowOne; }
+
 // Hash of a sample's coordinates: the per-(pixel, family, bounce) stream every sampler uses,
 // in two steps so samplers mix their seed once.
 uint64_t sample_seed_hash(uint64_t seed);
@@ -26,7 +31,7 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 
 // A per-stream permutation of sample indices that maps every prefix [0, 2^k) onto itself:
 // bit c of the index flips by a hash of the bits above it, except while those are all zero.
-// Sequences that are stratified by index (jitter, Sobol) otherwise pair sample i of one
+// Sequences that are stratified by index (progressive jitter, Sobol) otherwise pair sample i of one
 // family with sample i of another through a fixed map, so a pixel's estimate converges to
 // the integral along that map instead of over the product domain (a per-pixel bias that
 // more samples never remove). Power-of-two prefixes keep their point sets, so their
@@ -36,7 +41,7 @@ uint64_t shuffle_index(uint64_t index, uint64_t stream);
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
 // Axis k of value i: off[k] + mul[k] * coords[(i << shift) + src[k]], clamped to [0, 1).
-// Fields are left uninitialised on purpose: PixelSample keeps 160 of them per thread and
+// Fields are left uninitialised on purpose: PixelSampleState keeps 160 of them per thread and
 // fills one only when its stream is first used.
 struct PreparedStream {
   const uint32_t* coords;  // null: nothing prepared, ask the sampler
@@ -46,9 +51,7 @@ struct PreparedStream {
   double off[2], mul[2];
 
   double value(int64_t index, int k) const {
-    constexpr double kBelowOne = 0x1.fffffffffffffp-1;
-    double v = off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]);
-    return v < 0.0 ? 0.0 : v < 1.0 ? v : kBelowOne;
+    return clamp_to_unit(off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]));
   }
 };
 
@@ -82,12 +85,12 @@ class Sampler {
   uint64_t seed_hash_;  // mixed once here, not per sample
 };
 
-// pbrt-v4's interface on top of the pure functions: one per thread, reused across pixels.
-// The streams of the current pixel are prepared once, on first use, so the values of a
+// The sampler state of the pixel sample being traced (pbrt-v4's StartPixelSample + Get1D/
+// Get2D on top of the pure functions): one per thread, reused across pixels. The streams of the current pixel are prepared once, on first use, so the values of a
 // pixel's later samples cost a table read (values are identical to the Sampler's).
-class PixelSample {
+class PixelSampleState {
  public:
-  explicit PixelSample(const Sampler& s) : s_(&s) {}
+  explicit PixelSampleState(const Sampler& s) : s_(&s) {}
   void start_pixel_sample(int px, int py, int64_t index) {
     if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
     index_ = index;

@@ -42,8 +42,6 @@ uint32_t owen_scramble(uint32_t x, uint64_t seed) {
   return reverse_bits(x);
 }
 
-double to_unit(uint32_t bits) { return double(bits) * 0x1.0p-32; }
-
 class SobolSampler final : public Sampler {
  public:
   explicit SobolSampler(uint64_t seed) : Sampler(seed) {}
@@ -51,13 +49,13 @@ class SobolSampler final : public Sampler {
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
     index = int64_t(shuffle_index(uint64_t(index), s));
-    return to_unit(owen_scramble(sobol_dim0(uint32_t(index)), s));
+    return unit_from_u32(owen_scramble(sobol_dim0(uint32_t(index)), s));
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t s = stream(px, py, f, bounce);
     index = int64_t(shuffle_index(uint64_t(index), s));
-    return {to_unit(owen_scramble(sobol_dim0(uint32_t(index)), s)),
-            to_unit(owen_scramble(sobol_dim1(uint32_t(index)), mix64(s)))};
+    return {unit_from_u32(owen_scramble(sobol_dim0(uint32_t(index)), s)),
+            unit_from_u32(owen_scramble(sobol_dim1(uint32_t(index)), mix64(s)))};
   }
   int64_t samples_available(int, int) const override { return int64_t(1) << 32; }
 };

@@ -212,7 +212,7 @@ TEST(RenderDeterminism, SamePixelAndSampleIndexReplayTheSamePath) {
   PathIntegrator integrator(scene, lights, s.integrator);
   ThinLensCamera cam(s.camera, 16, 16);
   auto sampler = make_scene_sampler(s.sampler);
-  PixelSample a(*sampler), b(*sampler);
+  PixelSampleState a(*sampler), b(*sampler);
   int differing = 0;
   for (int i = 0; i < 64; ++i) {
     a.start_pixel_sample(7, 9, i);

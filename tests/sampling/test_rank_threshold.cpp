@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -77,15 +78,30 @@ TEST(RankThreshold, GaussianIntegralConverges) {
   }
 }
 
-TEST(RankThreshold, NormalisedPhongLobeIntegratesToOne) {
+TEST(RankThreshold, SelfNormalisedPhongLobeEstimateMatchesItsIntegral) {
   // Uniform hemisphere map z = u, phi = 2 pi v (d omega = 2 pi du dv): the normalised lobe
-  // (e+1)/(2 pi) z^e integrates to 1. Importance f = z^e, closed-form ∫x = 1/(e+1).
+  // (e+1)/(2 pi) z^e integrates to 1 in closed form. The importance is a wider lobe, f = z^(e/2)
+  // with ∫x = 2/(e+2), so g/x is not constant and the estimate depends on which points are kept
+  // and how they are weighted. Tolerance: 4 standard errors of the mean over the 16 tables.
+  const double e = 20.0;
+  auto f = [e](Vec2 p) { return std::pow(p[0], e / 2); };
+  auto g = [e](Vec2 p) { return (e + 1) / (2 * std::numbers::pi) * std::pow(p[0], e) * 2 * std::numbers::pi; };
+  double sum = 0.0, sum2 = 0.0;
+  for (uint32_t t = 0; t < 16; ++t) {
+    double v = estimate(table_points(t, 1024), f, 0.0, 1.0, g, 2.0 / (e + 2));
+    sum += v, sum2 += v * v;
+  }
+  const double mean = sum / 16, se = std::sqrt((sum2 / 16 - mean * mean) / 15);
+  EXPECT_GT(se, 0.0);  // the kept set matters
+  EXPECT_LT(se, 0.02);
+  EXPECT_NEAR(mean, 1.0, 4 * se) << "standard error " << se;
+}
+
+TEST(RankThreshold, PlainPhongLobeEstimateMatchesItsIntegral) {
+  // Without ∫x the weights are 1/(n x): (1/n) Σ_kept g/x, unbiased for the lobe's integral 1.
   const double e = 20.0;
   auto f = [e](Vec2 p) { return std::pow(p[0], e); };
   auto g = [e, f](Vec2 p) { return (e + 1) / (2 * std::numbers::pi) * f(p) * 2 * std::numbers::pi; };
-  double mean = 0.0;
-  for (uint32_t t = 0; t < 16; ++t) mean += estimate(table_points(t, 1024), f, 0.0, 1.0, g, 1.0 / (e + 1)) / 16;
-  EXPECT_NEAR(mean, 1.0, 1e-9);  // self-normalised: g/x is constant, so exact
   double plain = 0.0;
   for (uint32_t t = 0; t < 16; ++t) plain += estimate(table_points(t, 1024), f, 0.0, 1.0, g) / 16;
   EXPECT_NEAR(plain, 1.0, 0.05);  // k/n estimates ∫x = 1/21 from the table itself
@@ -99,16 +115,45 @@ TEST(RankThreshold, DiskAreaConverges) {
   EXPECT_NEAR(mean, std::numbers::pi * 0.09, 0.01 * std::numbers::pi * 0.09 * 3);
 }
 
-TEST(RankThreshold, KeptSubsequenceExtendsWithThePrefix) {
-  // Kept points stay in rank order (they are a subsequence of the hierarchy) and a longer
-  // prefix keeps more of them.
+// The definition, by brute force: candidate i of n is kept when (i + 1) / n <= x.
+std::vector<uint32_t> kept_by_definition(std::span<const Vec2> c, const std::function<double(Vec2)>& f) {
+  std::vector<uint32_t> kept;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (double(i + 1) / double(c.size()) <= f(c[i])) kept.push_back(uint32_t(i));
+  return kept;
+}
+
+bool contains_all(const std::vector<uint32_t>& big, const std::vector<uint32_t>& small) {
+  return std::includes(big.begin(), big.end(), small.begin(), small.end());
+}
+
+TEST(RankThreshold, KeptSetOfAPrefixStaysKeptInTheLongerPrefix) {
+  // Ranks i/n fall as n grows, so every point kept from the first 512 candidates is kept from
+  // all 1024 too (the kept subsequence extends), and both are the brute-force kept sets.
   auto c = table_points(0, 1024);
   auto f = [](Vec2 p) { return p[1]; };
   RankSelection a = rank_threshold(std::span(c).first(512), f, 0.0, 1.0);
   RankSelection b = rank_threshold(c, f, 0.0, 1.0);
-  EXPECT_TRUE(std::is_sorted(a.kept.begin(), a.kept.end()));
-  EXPECT_TRUE(std::is_sorted(b.kept.begin(), b.kept.end()));
+  EXPECT_EQ(a.kept, kept_by_definition(std::span(c).first(512), f));
+  EXPECT_EQ(b.kept, kept_by_definition(c, f));
+  EXPECT_TRUE(contains_all(b.kept, a.kept));
   EXPECT_GT(b.kept.size(), a.kept.size());
+}
+
+TEST(RankThreshold, KeptSetGrowsWithTheImportance) {
+  // sqrt(y) >= y everywhere: the kept set under sqrt(y) contains the one under y, and each
+  // keeps about n ∫x of the candidates (1/2 and 2/3), as the brute-force definition does.
+  for (uint32_t t : {0u, 7u}) {
+    auto c = table_points(t, 1024);
+    auto low = [](Vec2 p) { return p[1]; };
+    auto high = [](Vec2 p) { return std::sqrt(p[1]); };
+    RankSelection a = rank_threshold(c, low, 0.0, 1.0), b = rank_threshold(c, high, 0.0, 1.0);
+    EXPECT_EQ(a.kept, kept_by_definition(c, low)) << t;
+    EXPECT_EQ(b.kept, kept_by_definition(c, high)) << t;
+    EXPECT_TRUE(contains_all(b.kept, a.kept)) << t;
+    EXPECT_NEAR(double(a.kept.size()) / 1024, 0.5, 0.03) << t;
+    EXPECT_NEAR(double(b.kept.size()) / 1024, 2.0 / 3.0, 0.03) << t;
+  }
 }
 
 }  // namespace

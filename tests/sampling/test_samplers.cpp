@@ -36,11 +36,11 @@ TEST_P(EverySampler, ReplaysInAnyOrderAndFromAnyThread) {
   EXPECT_EQ(forward, threaded);
 }
 
-// PixelSample prepares each stream once per pixel; its values must equal the pure
+// PixelSampleState prepares each stream once per pixel; its values must equal the pure
 // functions bit for bit, in any pixel order, for every family and bounce salt (including
 // salts past its cache and indices past a table's length).
-TEST_P(EverySampler, PixelSampleMatchesTheSamplerBitForBit) {
-  PixelSample ps(*s);
+TEST_P(EverySampler, PixelSampleStateMatchesTheSamplerBitForBit) {
+  PixelSampleState ps(*s);
   const int pixels[][2] = {{0, 0}, {5, 3}, {-7, 2}, {300, -41}, {5, 3}, {63, 64}};
   int64_t compared = 0;
   for (const auto& p : pixels)
@@ -113,7 +113,7 @@ std::vector<int> strata(const Sampler& s, int n, int gx, int gy) {
   return hits;
 }
 
-TEST(JitterSampler, PowerOfFourPrefixesAreKByKStratified) {
+TEST(ProgressiveJitterSampler, PowerOfFourPrefixesAreKByKStratified) {
   auto s = make_sampler("jitter", 9);
   for (int k : {1, 2, 4, 8, 16}) {
     auto hits = strata(*s, k * k, k, k);
@@ -121,7 +121,7 @@ TEST(JitterSampler, PowerOfFourPrefixesAreKByKStratified) {
   }
 }
 
-TEST(JitterSampler, PowerOfTwoTimePrefixesAreStratified) {
+TEST(ProgressiveJitterSampler, PowerOfTwoTimePrefixesAreStratified) {
   auto s = make_sampler("jitter", 9);
   for (int n : {2, 8, 64}) {
     std::vector<int> hits(n, 0);

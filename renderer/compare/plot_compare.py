@@ -107,52 +107,45 @@ def heat_map_file(n):
     return "errors/heat-%d.png" % n
 
 
+def panels_with_colorbar(out, r, path, panels, mappable, label, extend="neither", ticks=None):
+    """A row of report PNGs (file, title) with one colour bar for all of them."""
+    import matplotlib.image as mpimg
+    w, aspect = 3.2, r["height"] / max(1, r["width"])
+    fig, axes = plt.subplots(1, len(panels), figsize=(w * len(panels) + 1.2, w * aspect + 1.0), squeeze=False)
+    for ax, (file, title) in zip(axes[0], panels):
+        ax.imshow(mpimg.imread(os.path.join(out, file)), interpolation="nearest")
+        ax.set_title(title, fontsize=9)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    cb = fig.colorbar(mappable, ax=list(axes[0]), extend=extend, fraction=0.04, pad=0.02)
+    cb.set_label(label, fontsize=9)
+    if ticks:
+        cb.set_ticks(ticks)
+        cb.set_ticklabels([str(t) for t in ticks])
+        cb.minorticks_off()
+    fig.savefig(os.path.join(out, path), dpi=110, bbox_inches="tight")
+    plt.close(fig)
+
+
 def plot_heat_maps(out, r):
     """One figure per spp: every sampler's error heat map on the shared scale of that spp,
     with the colour bar in the error's unit."""
-    import matplotlib.image as mpimg
-    cmap, em = heat_colormap(r), r["error_maps"]
-    samplers, aspect = r["samplers"], r["height"] / max(1, r["width"])
-    w = 3.2
+    cmap = heat_colormap(r)
     for n in r["spp"]:
-        scale = em["scale"][str(n)]
-        fig, axes = plt.subplots(1, len(samplers), figsize=(w * len(samplers) + 1.2, w * aspect + 1.0),
-                                 squeeze=False)
-        for ax, s in zip(axes[0], samplers):
-            u = [u for u in r["runs"] if u["spp"] == n and u["sampler"] == s][0]
-            ax.imshow(mpimg.imread(os.path.join(out, u["error_map"])), interpolation="nearest")
-            ax.set_title("%s, %d spp: error vs reference" % (s, n), fontsize=9)
-            ax.set_xticks([])
-            ax.set_yticks([])
-        sm = plt.cm.ScalarMappable(norm=Normalize(0, scale), cmap=cmap)
-        cb = fig.colorbar(sm, ax=list(axes[0]), extend="max", fraction=0.04, pad=0.02)
-        cb.set_label("|luminance error| per pixel", fontsize=9)
-        fig.savefig(os.path.join(out, heat_map_file(n)), dpi=110, bbox_inches="tight")
-        plt.close(fig)
+        panels = [(u["error_map"], "%s, %d spp: error vs reference" % (s, n))
+                  for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
+        sm = plt.cm.ScalarMappable(norm=Normalize(0, r["error_maps"]["scale"][str(n)]), cmap=cmap)
+        panels_with_colorbar(out, r, heat_map_file(n), panels, sm, "|luminance error| per pixel", extend="max")
 
 
 def plot_sample_maps(out, r):
     """The adaptive runs' samples per pixel at the default threshold, with a log2 colour bar."""
-    import matplotlib.image as mpimg
-    cmap, runs = heat_colormap(r), r["adaptive"]
-    aspect = r["height"] / max(1, r["width"])
-    w = 3.2
-    fig, axes = plt.subplots(1, len(runs), figsize=(w * len(runs) + 1.2, w * aspect + 1.0), squeeze=False)
-    for ax, a in zip(axes[0], runs):
-        ax.imshow(mpimg.imread(os.path.join(out, a["sample_map"])), interpolation="nearest")
-        ax.set_title("%s adaptive: samples per pixel" % a["sampler"], fontsize=9)
-        ax.set_xticks([])
-        ax.set_yticks([])
-    top = max(a["max_spp"] for a in runs)
-    sm = plt.cm.ScalarMappable(norm=LogNorm(1, max(2, top)), cmap=cmap)
-    cb = fig.colorbar(sm, ax=list(axes[0]), fraction=0.04, pad=0.02)
-    ticks = [2 ** k for k in range(int(math.log2(max(2, top))) + 1)]
-    cb.set_ticks(ticks)
-    cb.set_ticklabels([str(t) for t in ticks])
-    cb.minorticks_off()
-    cb.set_label("samples traced per pixel (log scale)", fontsize=9)
-    fig.savefig(os.path.join(out, "images", "adaptive-samples.png"), dpi=110, bbox_inches="tight")
-    plt.close(fig)
+    runs = r["adaptive"]
+    top = max(2, max(a["max_spp"] for a in runs))
+    sm = plt.cm.ScalarMappable(norm=LogNorm(1, top), cmap=heat_colormap(r))
+    panels = [(a["sample_map"], "%s adaptive: samples per pixel" % a["sampler"]) for a in runs]
+    panels_with_colorbar(out, r, os.path.join("images", "adaptive-samples.png"), panels, sm,
+                         "samples traced per pixel (log scale)", ticks=[2 ** k for k in range(int(math.log2(top)) + 1)])
 
 
 def plot_adaptive(out, r):

@@ -168,7 +168,7 @@ void add_render_command(CLI::App& app) {
                          {"metric", ad.metric},       {"threshold", effective_threshold(ad)},
                          {"variance", ad.variance},   {"rounds", r.stats.adaptive_rounds}};
       j["triangles"] = r.stats.triangles;
-      j["threads"] = o->threads;
+      j["threads"] = r.stats.threads;
       j["partial"] = r.stats.partial;
       write_file_atomically(o->stats, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
     }

@@ -31,13 +31,17 @@ namespace {
 // last digit; kept, so references cached by earlier versions are still found.
 constexpr uint64_t kReferenceKeyBasis = 1469598103934665603ull;
 
-// A perceptually ordered dark-to-bright colour ramp for error heat maps.
+// A perceptually ordered dark-to-bright colour ramp for heat maps, in display RGB at t = 0,
+// 1/4, ..., 1 (results.json carries it so the report's colour bars match the PNGs).
+constexpr float kHeatStops[5][3] = {
+    {0, 0, 0.02f}, {0.33f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f}, {0.98f, 0.55f, 0.04f}, {0.99f, 1.0f, 0.64f}};
+
 Vec3 heat(float t) {
-  static const Vec3 stops[] = {{0, 0, 0.02f}, {0.33f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f}, {0.98f, 0.55f, 0.04f},
-                               {0.99f, 1.0f, 0.64f}};
   t = std::clamp(t, 0.0f, 1.0f) * 4;
   int i = std::min(int(t), 3);
-  return lerp(t - i, stops[i], stops[i + 1]);
+  const auto& a = kHeatStops[i];
+  const auto& b = kHeatStops[i + 1];
+  return lerp(t - i, Vec3(a[0], a[1], a[2]), Vec3(b[0], b[1], b[2]));
 }
 
 std::vector<float> display_rgb(const Image& im) {
@@ -165,6 +169,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   write_display_png(o.out / "images" / "reference.png", W, H, display_rgb(ref));
 
   std::vector<Run> runs;
+  int threads_used = 0;
   for (const auto& name : o.samplers)
     for (int n : o.spp) {
       SceneDesc s = base;
@@ -172,6 +177,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       s.sampler.spp = n;
       s.sampler.adaptive.enabled = false;
       RenderResult r = render_with(s, o);
+      threads_used = r.stats.threads;
       Run run;
       run.sampler = name, run.spp = n;
       run.seconds = r.stats.seconds;
@@ -192,6 +198,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
 
   // Heat maps share one scale per sample count (the 99th percentile over the samplers), so
   // they compare across samplers.
+  json heat_scale = json::object();
   for (int n : o.spp) {
     std::vector<float> all;
     std::map<std::string, std::vector<float>> maps;
@@ -202,6 +209,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       }
     std::sort(all.begin(), all.end());
     float scale = std::max(all[std::size_t(0.99 * (all.size() - 1))], 1e-6f);
+    heat_scale[std::to_string(n)] = scale;
     for (const Run& r : runs)
       if (r.spp == n) {
         const auto& m = maps[r.sampler];
@@ -245,9 +253,14 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   j["seed"] = base.sampler.seed;
   j["samplers"] = o.samplers;
   j["spp"] = o.spp;
+  j["threads"] = threads_used;
   j["reference"] = {{"sampler", rs.sampler.type}, {"spp", rs.sampler.spp},     {"seed", rs.sampler.seed},
                     {"cached", cached},           {"file", cache.string()},    {"seconds", ref_seconds},
                     {"image", "images/reference.png"}};
+  j["heat_colormap"] = kHeatStops;
+  j["error_maps"] = {{"quantity", "absolute luminance error per pixel, |Y(image) - Y(reference)| (linear)"},
+                     {"scale", heat_scale},
+                     {"scale_rule", "the 99th percentile over every sampler's map at that spp; brighter is clipped"}};
   j["crop_window"] = {{"x", win[0]}, {"y", win[1]}, {"size", win[2]}, {"zoom", zoom}};
   j["crops"] = crops;
   json jr = json::array();
@@ -360,7 +373,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                       {"rmse", e},
                       {"uniform_rmse_at_equal_samples", std::isnan(uniform) ? json(nullptr) : json(uniform)},
                       {"image", img},
-                      {"sample_map", map}});
+                      {"sample_map", map},
+                      {"sample_map_scale", "log2(samples) / log2(max_spp)"}});
       }
       // Traced samples on both sides: the filter's support skips the same share of either.
       const CostToReach c = cost_to_reach(cost, err, at_target->rmse);

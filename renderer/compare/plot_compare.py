@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Plots and the HTML report of `pdrt compare`: reads DIR/results.json and writes
 rmse_vs_spp.png (log-log, fitted slopes), rmse_vs_time.png (equal-time view),
-error_spectra.png (radially averaged power of the error images), with --adaptive
-adaptive_vs_spp.png (the threshold sweep against uniform sampling), and index.html."""
+error_spectra.png (radially averaged power of the error images), errors/heat-N.png (the
+error heat maps at N spp with their colour bar), with --adaptive adaptive_vs_spp.png (the
+threshold sweep against uniform sampling) and images/adaptive-samples.png (sample counts),
+and index.html."""
 import html
 import json
 import math
@@ -13,8 +15,11 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import LinearSegmentedColormap, LogNorm, Normalize  # noqa: E402
 
 COLORS = {"random": "#7f7f7f", "jitter": "#1f77b4", "poisson": "#d62728", "sobol": "#2ca02c"}
+SLOPE_NOTE = ("slope: least-squares slope of log RMSE against log spp; -0.5 is plain Monte Carlo's rate, "
+              "lower (more negative) is faster convergence")
 
 
 def main(out):
@@ -33,7 +38,8 @@ def main(out):
     ax.set_title("%s: convergence" % os.path.basename(r["scene"]))
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
-    fig.tight_layout()
+    fig.text(0.01, 0.005, "slope: log-log fit of RMSE vs spp; -0.5 = Monte Carlo, lower = faster", fontsize=7)
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     fig.savefig(os.path.join(out, "rmse_vs_spp.png"), dpi=110)
     plt.close(fig)
 
@@ -50,27 +56,96 @@ def main(out):
     fig.savefig(os.path.join(out, "rmse_vs_time.png"), dpi=110)
     plt.close(fig)
 
-    spps = r["spp"]
+    plot_spectra(out, r)
+    plot_heat_maps(out, r)
+    if r.get("adaptive"):
+        plot_sample_maps(out, r)
+    if r.get("adaptive_sweep"):
+        plot_adaptive(out, r)
+    write_html(out, r)
+
+
+def plot_spectra(out, r):
+    """Radially averaged power spectrum of the luminance error (image - reference) at the
+    lowest, middle and highest spp. The DC term (the mean error) is left out, and so are
+    empty rings (power 0), which a log axis cannot show; the y limits come from the data."""
+    runs, samplers, spps = r["runs"], r["samplers"], r["spp"]
     show = sorted(set([spps[0], spps[len(spps) // 2], spps[-1]]))
     fig, axes = plt.subplots(1, len(show), figsize=(5 * len(show), 4), squeeze=False)
+    lo, hi = math.inf, 0.0
     for ax, n in zip(axes[0], show):
         for s in samplers:
             for u in runs:
                 if u["sampler"] == s and u["spp"] == n:
-                    fr, pw = u["spectrum"]["frequency"], u["spectrum"]["power"]
-                    ax.semilogy(fr, [max(p, 1e-30) for p in pw], color=COLORS.get(s), label=s, lw=1)
-        ax.set_title("error spectrum, %d spp" % n)
-        ax.set_xlabel("frequency (cycles / pixel)")
-        ax.set_ylabel("radially averaged power")
-        ax.grid(True, alpha=0.3)
-        ax.legend()
+                    pts = [(f, p) for f, p in zip(u["spectrum"]["frequency"], u["spectrum"]["power"])
+                           if f > 0 and p is not None and p > 0]
+                    if not pts:
+                        continue
+                    lo, hi = min(lo, min(p for _, p in pts)), max(hi, max(p for _, p in pts))
+                    ax.semilogy([f for f, _ in pts], [p for _, p in pts], color=COLORS.get(s), label=s, lw=1)
+        ax.set_title("luminance error spectrum, %d spp" % n, fontsize=10)
+        ax.set_xlabel("frequency (cycles per pixel)")
+        ax.set_ylabel("power of the error (radial mean of |FFT|^2 / pixels)")
+        ax.set_xlim(0, 0.5)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize="small")
+    if hi > 0:
+        for ax in axes[0]:
+            ax.set_ylim(lo / 1.5, hi * 1.5)  # one scale, so the panels compare
+    fig.suptitle("radially averaged power spectrum of (image - reference) luminance, DC removed", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "error_spectra.png"), dpi=110)
     plt.close(fig)
 
-    if r.get("adaptive_sweep"):
-        plot_adaptive(out, r)
-    write_html(out, r)
+
+def heat_colormap(r):
+    """The ramp the C++ side coloured the heat maps with (display RGB at 0, 1/4, ..., 1)."""
+    return LinearSegmentedColormap.from_list("pdrt_heat", [tuple(c) for c in r["heat_colormap"]])
+
+
+def heat_map_file(n):
+    return "errors/heat-%d.png" % n
+
+
+def panels_with_colorbar(out, r, path, panels, mappable, label, extend="neither", ticks=None):
+    """A row of report PNGs (file, title) with one colour bar for all of them."""
+    import matplotlib.image as mpimg
+    w, aspect = 3.2, r["height"] / max(1, r["width"])
+    fig, axes = plt.subplots(1, len(panels), figsize=(w * len(panels) + 1.2, w * aspect + 1.0), squeeze=False)
+    for ax, (file, title) in zip(axes[0], panels):
+        ax.imshow(mpimg.imread(os.path.join(out, file)), interpolation="nearest")
+        ax.set_title(title, fontsize=9)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    cb = fig.colorbar(mappable, ax=list(axes[0]), extend=extend, fraction=0.04, pad=0.02)
+    cb.set_label(label, fontsize=9)
+    if ticks:
+        cb.set_ticks(ticks)
+        cb.set_ticklabels([str(t) for t in ticks])
+        cb.minorticks_off()
+    fig.savefig(os.path.join(out, path), dpi=110, bbox_inches="tight")
+    plt.close(fig)
+
+
+def plot_heat_maps(out, r):
+    """One figure per spp: every sampler's error heat map on the shared scale of that spp,
+    with the colour bar in the error's unit."""
+    cmap = heat_colormap(r)
+    for n in r["spp"]:
+        panels = [(u["error_map"], "%s, %d spp: error vs reference" % (s, n))
+                  for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
+        sm = plt.cm.ScalarMappable(norm=Normalize(0, r["error_maps"]["scale"][str(n)]), cmap=cmap)
+        panels_with_colorbar(out, r, heat_map_file(n), panels, sm, "|luminance error| per pixel", extend="max")
+
+
+def plot_sample_maps(out, r):
+    """The adaptive runs' samples per pixel at the default threshold, with a log2 colour bar."""
+    runs = r["adaptive"]
+    top = max(2, max(a["max_spp"] for a in runs))
+    sm = plt.cm.ScalarMappable(norm=LogNorm(1, top), cmap=heat_colormap(r))
+    panels = [(a["sample_map"], "%s adaptive: samples per pixel" % a["sampler"]) for a in runs]
+    panels_with_colorbar(out, r, os.path.join("images", "adaptive-samples.png"), panels, sm,
+                         "samples traced per pixel (log scale)", ticks=[2 ** k for k in range(int(math.log2(top)) + 1)])
 
 
 def plot_adaptive(out, r):
@@ -126,6 +201,7 @@ def write_html(out, r):
             row.append("<td>" + b % fmt(u["rmse"]) + "</td>")
         p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(row)))
     p.append("<tr><td>slope</td>%s</tr></table>" % "".join("<td>%.2f</td>" % r["slopes"][s] for s in samplers))
+    p.append("<p><small>%s.</small></p>" % e(SLOPE_NOTE))
     et = r["equal_time"]
     if et["seconds"]:
         p.append("<h3>RMSE at equal render time (log-log interpolation)</h3><table><tr><th>seconds</th>%s</tr>" %
@@ -133,21 +209,28 @@ def write_html(out, r):
         for i, t in enumerate(et["seconds"]):
             p.append("<tr><td>%.3f</td>%s</tr>" % (t, "".join("<td>%s</td>" % fmt(et["rmse"][s][i]) for s in samplers)))
         p.append("</table>")
-    p.append("<h2>Error spectra</h2><img src='error_spectra.png'>")
+    p.append("<h2>Error spectra</h2><figure><img src='error_spectra.png'><figcaption>Radially averaged power "
+             "spectrum of each image's luminance error against the reference (DC removed), at the lowest, middle "
+             "and highest spp; white noise is flat, blue noise has less power at low frequencies.</figcaption>"
+             "</figure>")
     p.append("<h2>Crops (same region; last column: reference)</h2>")
     for c in r["crops"]:
         p.append("<figure><img src='%s'><figcaption>%d spp: %s | reference</figcaption></figure><br>" % (
             e(c["file"]), c["spp"], " | ".join(e(s) for s in samplers)))
-    p.append("<h2>Images and error heat maps</h2><table><tr><th>spp</th>%s</tr>" %
-             "".join("<th>%s</th>" % e(s) for s in samplers))
+    p.append("<h2>Images</h2><table><tr><th>spp</th>%s</tr>" % "".join("<th>%s</th>" % e(s) for s in samplers))
     for n in spps:
         cells = []
         for s in samplers:
             u = [u for u in runs if u["spp"] == n and u["sampler"] == s][0]
-            cells.append("<td><img src='%s' width=200><br><img src='%s' width=200></td>" % (
-                e(u["image"]), e(u["error_map"])))
+            cells.append("<td><img src='%s' width=200></td>" % e(u["image"]))
         p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(cells)))
     p.append("</table><p><img src='images/reference.png' width=300><br>reference</p>")
+    p.append("<h2>Error heat maps</h2>")
+    for n in spps:
+        p.append("<figure><img src='%s'><figcaption>Absolute luminance error per pixel against the reference at "
+                 "%d spp. All samplers share one colour scale at this spp (0 to the 99th percentile of their "
+                 "errors, %.3g; brighter is clipped), so they compare directly; scales differ between spp."
+                 "</figcaption></figure><br>" % (e(heat_map_file(n)), n, r["error_maps"]["scale"][str(n)]))
     if r.get("adaptive"):
         p.append("<h2>Adaptive refinement at equal total samples</h2><table><tr><th>sampler</th><th>metric</th>"
                  "<th>threshold</th><th>mean spp</th><th>rounds</th><th>adaptive RMSE</th>"
@@ -157,7 +240,8 @@ def write_html(out, r):
                      "<td><img src='%s' width=200></td><td><img src='%s' width=200></td></tr>" % (
                          e(a["sampler"]), e(a["metric"]), a["threshold"], a["spp_mean"], a["rounds"], fmt(a["rmse"]),
                          fmt(a["uniform_rmse_at_equal_samples"]), e(a["image"]), e(a["sample_map"])))
-        p.append("</table>")
+        p.append("</table><figure><img src='images/adaptive-samples.png'><figcaption>Samples traced per pixel "
+                 "by adaptive refinement at the default threshold.</figcaption></figure>")
     if r.get("adaptive_sweep"):
         tgt = r["adaptive_target"]
         p.append("<h2>Adaptive threshold sweep</h2><img src='adaptive_vs_spp.png'>")

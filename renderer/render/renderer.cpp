@@ -14,8 +14,10 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -200,6 +202,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.partial = stopped;
   res.stats.adaptive_rounds = rounds;
   res.stats.triangles = scene.triangle_count();
+  // The arena's size capped by the global limit (set above when opt.threads > 0, or by a caller).
+  res.stats.threads = int(std::min<std::size_t>(
+      std::size_t(tbb::this_task_arena::max_concurrency()),
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
   return res;
 }
 

@@ -27,6 +27,7 @@ struct RenderStats {
   bool partial = false;    // stopped before every pixel was done
   int adaptive_rounds = 0; // refinement rounds after the first pass
   std::size_t triangles = 0;
+  int threads = 0;         // worker threads the render ran on (options' 0 resolved)
 };
 
 struct RenderResult {

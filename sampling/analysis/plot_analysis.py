@@ -78,7 +78,9 @@ def plot_points_2d(ax, xy, half_r, periodic, lo, hi, title):
         draw_disks(ax, xy, half_r, "tab:blue", 0.35, 0)
     ax.scatter(xy[:, 0], xy[:, 1], s=dot, c="k", linewidths=0)
     ax.add_patch(Rectangle((0, 0), 1, 1, fill=False, ec="tab:red", lw=0.8))
-    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("x0")
+    ax.set_ylabel("x1")
+    ax.set_title(title + " (red: the unit square)", fontsize=9)
 
 
 def plot_points(stats, stage, out):
@@ -192,8 +194,8 @@ def radial_plot(stats, key, ylabel, out, reference, reference_label):
     ax.set_xlim(left=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    ax.set_title(f"N = {stats['count']}, K = {sp['realizations']} realization(s), R = {sp['resolution']}",
-                 fontsize=9)
+    ax.set_title(f"{ylabel} of the periodogram: N = {stats['count']}, K = {sp['realizations']} realization(s), "
+                 f"R = {sp['resolution']}", fontsize=9)
     fig.tight_layout()
     save(fig, out)
 

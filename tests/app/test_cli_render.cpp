@@ -53,6 +53,22 @@ TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
   EXPECT_GT(j["rays"].get<int64_t>(), 0);
 }
 
+// "threads" is the count the render ran on: --threads 0 (the default) means all of them.
+TEST(CliRender, StatsReportTheThreadsUsedNotTheOption) {
+  fs::path d = scratch_dir("render_threads");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "a.exr").string() + " --spp 1 --stats " +
+                    (d / "all.json").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "b.exr").string() + " --spp 1 --threads 1 --stats " +
+               (d / "one.json").string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json all = nlohmann::json::parse(std::ifstream(d / "all.json"));
+  nlohmann::json one = nlohmann::json::parse(std::ifstream(d / "one.json"));
+  EXPECT_GE(all["threads"].get<int>(), 1);
+  EXPECT_EQ(one["threads"].get<int>(), 1);
+}
+
 TEST(CliRender, PngIsSrgbAndCommandLineOverridesTheScene) {
   fs::path d = scratch_dir("render_png");
   fs::path scene = write_scene(d);
@@ -158,6 +174,37 @@ TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j2 = nlohmann::json::parse(std::ifstream(d / "report2" / "results.json"));
   EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
+}
+
+TEST(CliCompare, ResultsReportTheThreadsUsed) {
+  fs::path d = scratch_dir("compare_threads");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers random --spp 1 --reference-spp 4 --threads 1 --cache-dir " + (d / "cache").string() +
+                    " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  EXPECT_EQ(j["threads"], 1);
+}
+
+// The report explains what it shows: heat maps with their colour bar per spp, the slope row's meaning.
+TEST(CliCompare, ReportHasHeatMapFiguresAndExplainsTheSlope) {
+  fs::path d = scratch_dir("compare_report");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers random,jitter --spp 1,4 --reference-spp 16 --cache-dir " + (d / "cache").string() +
+                    " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  EXPECT_EQ(j["heat_colormap"].size(), 5u);
+  for (int n : {1, 4}) {
+    EXPECT_GT(j["error_maps"]["scale"][std::to_string(n)].get<double>(), 0) << n;
+    EXPECT_TRUE(fs::exists(d / "report" / "errors" / ("heat-" + std::to_string(n) + ".png"))) << n;
+  }
+  std::stringstream html;
+  html << std::ifstream(d / "report" / "index.html").rdbuf();
+  EXPECT_NE(html.str().find("-0.5 is plain Monte Carlo"), std::string::npos);
+  EXPECT_NE(html.str().find("share one colour scale"), std::string::npos);
 }
 
 TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {

@@ -52,13 +52,6 @@ Affine from_row_major(const float m[12]) {
 
 }  // namespace
 
-Vec3 offset_origin(const Vec3& p, const Vec3& ng, const Vec3& dir) {
-  // Scale with the coordinates' magnitude: float spacing grows with |p|.
-  float m = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
-  float eps = 4e-5f * m;
-  return p + ng * (dot(ng, dir) >= 0 ? eps : -eps);
-}
-
 RTCGeometry EmbreeScene::make_geometry(const Shape& s) const {
   RTCDevice dev = device_.get();
   if (s.sphere) {
@@ -212,15 +205,22 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
   const int shape = int(inst ? inst_id : geom_id);
   const Shape& s = shapes_[shape];
   hit->t = t;
-  hit->p = ray.org + ray.dir * t;
   hit->shape = shape;
   hit->prim = int(prim_id);
+  // The hit point is rebuilt from the primitive (pbrt-v4 §6.8): org + t dir carries an
+  // error that grows with |org| + t, the reprojected point one bounded by the surface's own size.
+  Affine m, inv;
+  if (inst) m = transform(shape, ray.time), inv = m.inverse();
+  ErrorPoint x;
   Vec3 ng, ns;
   if (s.sphere) {
     ng = ns = embree_ng;  // centre to hit, instance space
+    const Vec3 near = ray.org + ray.dir * t;
+    x = sphere_point(s.center, s.radius, inst ? inv.point(near) : near);
   } else {
     const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
     const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
+    x = triangle_point(a, b, c, u, v);
     ng = cross(b - a, c - a);  // counter-clockwise winding is the front face
     if (!s.normals.empty()) {
       ns = s.normals[tri[0]] * (1 - u - v) + s.normals[tri[1]] * u + s.normals[tri[2]] * v;
@@ -229,9 +229,11 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
     }
   }
   if (inst) {
-    Affine inv = transform(shape, ray.time).inverse();  // once for both normals
+    x = transform_point(m, x);
     ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
   }
+  hit->p = x.p;
+  hit->p_error = x.error;
   ng = normalize(ng), ns = normalize(ns);
   if (!is_finite(ns) || dot(ns, ns) == 0) ns = ng;
   hit->ng = ng;

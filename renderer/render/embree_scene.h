@@ -5,6 +5,7 @@
 // Top-level geometry IDs equal shape indices, so a hit names its ShapeDesc directly.
 #include "renderer/render/embree_device.h"
 #include "renderer/render/ray.h"
+#include "renderer/render/ray_spawn.h"
 #include "renderer/scene/scene_desc.h"
 
 #include <embree3/rtcore.h>
@@ -16,12 +17,14 @@ namespace pdrt {
 
 struct SurfaceHit {
   float t = 0;
-  Vec3 p;        // world position
+  Vec3 p;        // world position, reprojected onto the surface (not org + t dir)
+  Vec3 p_error;  // per-component bound on p's floating-point error (ray_spawn.h)
   Vec3 ng;       // unit geometric normal, on the front side (CCW winding / sphere outside)
   Vec3 ns;       // unit shading normal (interpolated vertex normals), same side as ng
   int shape = -1;
   int prim = -1;
   bool front = true;  // the ray arrived from the side ng points to
+  ErrorPoint point() const { return {p, p_error}; }
 };
 
 class EmbreeScene {
@@ -80,8 +83,5 @@ class EmbreeScene {
   float bounds_radius_ = 1;
   std::size_t triangles_ = 0;
 };
-
-// Offsets a ray origin off a surface along the normal, on the side `dir` leaves to.
-Vec3 offset_origin(const Vec3& p, const Vec3& ng, const Vec3& dir);
 
 }  // namespace pdrt

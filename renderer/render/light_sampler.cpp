@@ -17,6 +17,13 @@ float sphere_radius_at(const EmbreeScene& s, int shape, const Affine& m) {
 // and its pdf loses precision. sample_sphere and sphere_pdf must decide alike for MIS.
 bool sees_sphere_from_inside(float dc2, float r) { return dc2 <= r * r * 1.0001f; }
 
+// The point of a sphere light nearest to `near`, with the error of its (transformed) centre.
+ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, const Vec3& c, float r, const Vec3& near) {
+  ErrorPoint x = sphere_point(c, r, near);
+  if (s.moving(shape)) x.error += transform_point(m, {s.sphere_center(shape), Vec3(0.0f)}).error;
+  return x;
+}
+
 }  // namespace
 
 LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
@@ -69,6 +76,13 @@ void LightSampler::triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b
   }
 }
 
+ErrorPoint LightSampler::triangle_point_at(int shape, int prim, float time, float b1, float b2) const {
+  const auto& pos = scene_.positions(shape);
+  const uint32_t* t = &scene_.indices(shape)[3 * std::size_t(prim)];
+  ErrorPoint x = triangle_point(pos[t[0]], pos[t[1]], pos[t[2]], b1, b2);
+  return scene_.moving(shape) ? transform_point(scene_.transform(shape, time), x) : x;
+}
+
 float LightSampler::select_pdf(std::size_t e) const {
   return float(cdf_[e] - (e ? cdf_[e - 1] : 0.0));
 }
@@ -85,6 +99,7 @@ bool LightSampler::sample(const Vec3& ref, float time, float u_pick, std::array<
     float z = float(1 - 2 * u[0]), r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
     out->wi = {r * std::cos(phi), r * std::sin(phi), z};
     out->dist = 1e30f;
+    out->at_infinity = true;
     out->radiance = env_;
     out->pdf = 1.0f / (4 * kPi);
     ok = true;
@@ -104,11 +119,13 @@ bool LightSampler::sample_triangle(const Entry& e, const Vec3& ref, float time, 
   triangle_at(e.shape, e.prim, time, &a, &b, &c);
   // Uniform barycentrics (square-root map).
   float su = std::sqrt(float(u[0])), b0 = 1 - su, b1 = float(u[1]) * su;
-  Vec3 p = a * b0 + b * b1 + c * (1 - b0 - b1);
+  out->x = triangle_point_at(e.shape, e.prim, time, b1, 1 - b0 - b1);
+  const Vec3 p = out->x.p;
   Vec3 n = cross(b - a, c - a);
   float area = 0.5f * length(n);
   if (area <= 0) return false;
   n = n / (2 * area);
+  out->n = n;
   Vec3 d = p - ref;
   float d2 = dot(d, d);
   if (d2 <= 0) return false;
@@ -135,7 +152,9 @@ bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, st
     // Inside (or on) the sphere: uniform area sampling.
     float z = float(1 - 2 * u[0]), s = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
     Vec3 n(s * std::cos(phi), s * std::sin(phi), z);
-    Vec3 p = c + n * r, d = p - ref;
+    out->x = sphere_light_point(scene_, e.shape, m, c, r, c + n * r);
+    out->n = n;
+    Vec3 p = out->x.p, d = p - ref;
     float d2 = dot(d, d), dist = std::sqrt(d2);
     if (dist <= 0) return false;
     out->wi = d / dist, out->dist = dist;
@@ -158,6 +177,8 @@ bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, st
   float b = dot(wi, to_c), disc = std::max(0.0f, r * r - (dc2 - b * b));
   float dist = b - std::sqrt(disc);
   out->wi = wi, out->dist = dist;
+  out->x = sphere_light_point(scene_, e.shape, m, c, r, ref + wi * dist);
+  out->n = normalize(out->x.p - c);
   out->radiance = mat.radiance;
   out->pdf = 1.0f / (2 * kPi * one_minus_cos_max);
   return dist > 0;

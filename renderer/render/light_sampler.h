@@ -13,7 +13,10 @@ namespace pdrt {
 
 struct LightSample {
   Vec3 wi;          // unit direction from the reference point to the light
-  float dist = 0;   // distance to the sampled point (infinite for the environment)
+  float dist = 0;   // distance to the sampled point (1e30 for the environment)
+  bool at_infinity = false;  // the environment: no point to aim the shadow ray at
+  ErrorPoint x;     // the sampled point on an area light, with its error bound (shadow rays end there)
+  Vec3 n;           // the light's geometric normal at x
   Vec3 radiance;    // emitted radiance toward the reference point (0 if back-facing)
   float pdf = 0;    // solid-angle pdf, including the choice of this light
 };
@@ -44,6 +47,9 @@ class LightSampler {
   float select_pdf(std::size_t entry) const;
   // World-space corners of a triangle of `shape` at the normalised shutter time.
   void triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const;
+  // The point of that triangle at barycentrics (b1, b2), built where the geometry is stored
+  // (instance space for moving shapes) so its error bound includes the transform's.
+  ErrorPoint triangle_point_at(int shape, int prim, float time, float b1, float b2) const;
   bool sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
   bool sample_sphere(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
   float sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const Vec3& n, float time) const;

@@ -88,11 +88,9 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
         // Light leaking through the geometric surface is rejected (shading normals).
         bool same_side = dielectric || dot(ls.wi, ng) > 0;
         if (!is_black(f) && same_side) {
-          Ray shadow;
-          shadow.org = offset_origin(hit.p, hit.ng, ls.wi);
-          shadow.dir = ls.wi;
-          shadow.tmax = ls.dist * (1 - 1e-4f);
-          shadow.time = time;
+          // Between two offset points: the ray neither re-hits this surface nor the light.
+          const Ray shadow = ls.at_infinity ? spawn_ray(hit.point(), hit.ng, ls.wi, time)
+                                                 : spawn_ray_to(hit.point(), hit.ng, ls.x, ls.n, time);
           ++res.rays;
           if (!scene_.occluded(shadow)) {
             float w = power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
@@ -126,10 +124,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       if (float(ps.get_1d(Family::Time, salt_roulette(depth))) < q) break;
       beta /= 1 - q;
     }
-    ray.org = offset_origin(hit.p, hit.ng, wi_world);
-    ray.dir = wi_world;
-    ray.tmin = 0;
-    ray.tmax = 1e30f;
+    ray = spawn_ray(hit.point(), hit.ng, wi_world, time);
   }
   return res;
 }

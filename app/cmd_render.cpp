@@ -161,6 +161,7 @@ void add_render_command(CLI::App& app) {
       j["rays"] = r.stats.rays;
       j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
       j["samples"] = r.stats.samples;
+      j["nonfinite_samples"] = r.stats.nonfinite_samples;
       j["spp_mean"] = r.stats.spp_mean;
       j["spp_distribution"] = spp_distribution(r.image.samples);
       if (ad.enabled)

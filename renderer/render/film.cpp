@@ -7,6 +7,10 @@
 namespace pdrt {
 
 void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half) {
+  if (!is_finite(L)) {
+    ++dropped;
+    return;
+  }
   double wt = weight;
   w += wt, w2 += wt * wt;
   rgb[0] += wt * L.x, rgb[1] += wt * L.y, rgb[2] += wt * L.z;

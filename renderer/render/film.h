@@ -17,11 +17,14 @@ struct PixelAccum {
   double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, depth = 0;
   double abs_w = 0;              // sum |w|: AOV weights (filter weights may be negative: Mitchell)
   double depth_w = 0;            // sum |w| over samples that hit something
-  int64_t samples = 0;           // samples traced for this pixel
+  int64_t samples = 0;           // samples accumulated for this pixel
+  int64_t dropped = 0;           // samples dropped for a NaN or infinite value (no weight)
   int64_t prefix = 0;            // sample indices consumed (>= samples: rank selection skips some)
   float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
 
   // `half` is the sample index's parity: the two half buffers of the `halves` variance.
+  // A sample whose value is NaN or infinite is dropped with no weight, and counted: a black
+  // sample at full filter weight would bias the pixel toward 0 without a word.
   void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half);
   Vec3 value() const;            // normalised weighted mean (Cook §4.2)
   double mean_luminance() const;

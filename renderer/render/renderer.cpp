@@ -79,8 +79,7 @@ struct PixelRenderer {
         }
         ps.start_pixel_sample(x, y, i);
         PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
-        Vec3 L = is_finite(pr.radiance) ? pr.radiance : Vec3(0.0f);  // a NaN must not poison the pixel
-        acc.add(L, w[k], pr.albedo, pr.normal, pr.depth, int(i & 1));
+        acc.add(pr.radiance, w[k], pr.albedo, pr.normal, pr.depth, int(i & 1));  // drops NaN / inf
         rays += pr.rays;
       }
     }
@@ -198,6 +197,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.build_seconds = build_seconds;
   for (int64_t r : rays) res.stats.rays += r;
   for (float s : res.image.samples) res.stats.samples += int64_t(s);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) res.stats.nonfinite_samples += film.at(x, y).dropped;
+  res.stats.samples += res.stats.nonfinite_samples;  // traced, whether or not they counted
+  if (res.stats.nonfinite_samples > 0 && !opt.quiet)
+    std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",
+                 (long long)res.stats.nonfinite_samples);
   res.stats.spp_mean = double(res.stats.samples) / (double(desc.film.width) * desc.film.height);
   res.stats.partial = stopped;
   res.stats.adaptive_rounds = rounds;

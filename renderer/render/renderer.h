@@ -23,6 +23,7 @@ struct RenderStats {
   double build_seconds = 0;    // Embree BVH build, lights, camera
   int64_t rays = 0;        // extension + shadow rays
   int64_t samples = 0;     // camera samples traced
+  int64_t nonfinite_samples = 0;  // of those, dropped for a NaN or infinite value
   double spp_mean = 0;
   bool partial = false;    // stopped before every pixel was done
   int adaptive_rounds = 0; // refinement rounds after the first pass

@@ -128,12 +128,15 @@ void add_render_command(CLI::App& app) {
     check_writable(o->out);
     if (!o->stats.empty()) check_writable(o->stats);
 
+    // Ctrl-C from here on gives the partial image, even while the image module loads.
+    auto previous = std::signal(SIGINT, on_sigint);
+    require_image_io();
+
     auto sampler = make_scene_sampler(scene.sampler);
     RenderOptions ro;
     ro.threads = o->threads;
     ro.quiet = o->quiet;
     ro.cancel = &g_cancel;
-    auto previous = std::signal(SIGINT, on_sigint);
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
 

@@ -3,6 +3,7 @@
 #include "renderer/compare/compare.h"
 #include "sampling/core/errors.h"
 #include "app/python_plots.h"
+#include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/scene_loader.h"
 
@@ -92,6 +93,7 @@ void add_compare_command(CLI::App& app) {
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
     check_film_memory(scene.film.width, scene.film.height);
+    require_image_io();
     std::filesystem::path results = run_compare(scene, c);
     if (!o->no_plots) {
       ::setenv("MPLBACKEND", "Agg", 1);

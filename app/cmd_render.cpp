@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace pdrt::cli {
 
@@ -57,7 +58,8 @@ nlohmann::json spp_distribution(const std::vector<float>& samples) {
 
 void add_render_command(CLI::App& app) {
   struct Opts {
-    std::string scene, out, stats, sampler;
+    std::string scene, stats, sampler;
+    std::vector<std::string> outs;
     std::optional<int> spp, width, height;
     std::optional<uint64_t> seed;
     std::optional<int> min_spp, max_spp;
@@ -69,7 +71,11 @@ void add_render_command(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
   cmd->add_option("scene", o->scene, "Scene JSON file")->required();
-  cmd->add_option("--out,-o", o->out, "Output image: .exr (linear + AOVs), .png/.jpg (sRGB), .tif (linear)")->required();
+  cmd->add_option("--out,-o", o->outs,
+                  "Output image: .exr (linear + AOVs), .png/.jpg (sRGB), .tif (linear); give -o again for more "
+                  "formats of the same render")
+      ->required()
+      ->allow_extra_args(false);
   cmd->add_option("--spp", o->spp, "Samples per pixel (overrides sampler.spp)");
   cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | sobol (overrides sampler.type)");
   cmd->add_option("--seed", o->seed, "Sampler seed (overrides sampler.seed)");
@@ -105,7 +111,12 @@ void add_render_command(CLI::App& app) {
       throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
     if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
     if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
-    check_image_extension(o->out);
+    for (std::size_t i = 0; i < o->outs.size(); ++i) {
+      check_image_extension(o->outs[i]);
+      for (std::size_t k = 0; k < i; ++k)
+        if (std::filesystem::path(o->outs[k]).lexically_normal() == std::filesystem::path(o->outs[i]).lexically_normal())
+          throw UsageError("--out " + o->outs[i] + " is given twice");
+    }
 
     SceneDesc scene = load_scene(o->scene);
     AdaptiveDesc& ad = scene.sampler.adaptive;
@@ -125,15 +136,18 @@ void add_render_command(CLI::App& app) {
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
     check_film_memory(scene.film.width, scene.film.height);
-    check_writable(o->out);
+    for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
+
+    // Ctrl-C from here on gives the partial image, even while the image module loads.
+    auto previous = std::signal(SIGINT, on_sigint);
+    require_image_io();
 
     auto sampler = make_scene_sampler(scene.sampler);
     RenderOptions ro;
     ro.threads = o->threads;
     ro.quiet = o->quiet;
     ro.cancel = &g_cancel;
-    auto previous = std::signal(SIGINT, on_sigint);
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
 
@@ -148,7 +162,8 @@ void add_render_command(CLI::App& app) {
     if (ad.enabled)
       md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
                                          ", " + ad.metric + " " + std::to_string(effective_threshold(ad))});
-    write_image(o->out, r.image, md);
+    // One render, every requested format; each file is written all-or-nothing.
+    for (const auto& out : o->outs) write_image(out, r.image, md);
     if (!o->stats.empty()) {
       nlohmann::json j;
       j["scene"] = o->scene;
@@ -173,12 +188,14 @@ void add_render_command(CLI::App& app) {
       j["partial"] = r.stats.partial;
       write_file_atomically(o->stats, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
     }
+    std::string names;
+    for (const auto& out : o->outs) names += (names.empty() ? "" : ", ") + out;
     if (!o->quiet)
-      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %.1f spp, %.2f s, %.2f Mrays/s%s\n", o->out.c_str(),
+      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %.1f spp, %.2f s, %.2f Mrays/s%s\n", names.c_str(),
                    scene.film.width, scene.film.height, scene.sampler.type.c_str(), r.stats.spp_mean, r.stats.seconds,
                    r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
                    r.stats.partial ? " (interrupted: partial image)" : "");
-    if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted; wrote the partial image " + o->out);
+    if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted; wrote the partial image " + names);
   });
 }
 

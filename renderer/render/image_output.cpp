@@ -3,15 +3,13 @@
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
+#include "renderer/render/image_module.h"
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 namespace pdrt {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
@@ -22,6 +20,21 @@ std::string lower_ext(const std::filesystem::path& p) {
 }
 
 bool is_float_format(const std::string& ext) { return ext == ".exr" || ext == ".tif" || ext == ".tiff"; }
+
+// Writes through the image module into the temporary file, renamed over `path` when complete.
+void write_through_module(const std::filesystem::path& path, PdrtImageWrite w, const Metadata& attributes) {
+  const PdrtImageModule& m = image_module();
+  std::vector<PdrtImageAttribute> attrs;
+  for (const auto& [k, v] : attributes) attrs.push_back({k.c_str(), v.c_str()});
+  w.attributes = attrs.data();
+  w.attribute_count = int(attrs.size());
+  write_path_atomically(path, [&](const std::filesystem::path& tmp) {
+    const std::string tmp_name = tmp.string();
+    w.path = tmp_name.c_str();
+    char error[1024];
+    if (m.write(&w, error, sizeof error) != 0) throw InputError(path.string() + ": " + error);
+  });
+}
 
 }  // namespace
 
@@ -37,6 +50,8 @@ void check_image_extension(const std::filesystem::path& path) {
     throw UsageError(path.string() + ": output must end in .exr, .png, .jpg, .jpeg, .tif or .tiff");
 }
 
+void require_image_io() { image_module(); }
+
 void write_image(const std::filesystem::path& path, const Image& img, const Metadata& metadata) {
   check_image_extension(path);
   const std::string ext = lower_ext(path);
@@ -48,12 +63,9 @@ void write_image(const std::filesystem::path& path, const Image& img, const Meta
       names.push_back(c);
   }
   const int nc = int(names.size());
-  OIIO::ImageSpec spec(img.width, img.height, nc, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  spec.channelnames = names;
-  if (exr) spec.z_channel = nc - 1;
-  spec.attribute("oiio:ColorSpace", linear ? "linear" : "sRGB");
-  if (exr) spec.attribute("compression", "zip");
-  for (const auto& [k, v] : metadata) spec.attribute(k, v);
+  Metadata attributes = {{"oiio:ColorSpace", linear ? "linear" : "sRGB"}};
+  if (exr) attributes.push_back({"compression", "zip"});
+  attributes.insert(attributes.end(), metadata.begin(), metadata.end());
 
   std::vector<float> pixels(n * nc);
   for (std::size_t i = 0; i < n; ++i) {
@@ -65,42 +77,57 @@ void write_image(const std::filesystem::path& path, const Image& img, const Meta
       o[11] = img.depth[i];
     }
   }
-  write_path_atomically(path, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create(ext.substr(1));
-    if (!out) throw InputError(path.string() + ": cannot create an image writer: " + OIIO::geterror());
-    if (!out->open(tmp.string(), spec)) throw InputError(path.string() + ": " + out->geterror());
-    // OIIO converts float to the file's type (8-bit quantisation with rounding).
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, pixels.data())) throw InputError(path.string() + ": " + out->geterror());
-    if (!out->close()) throw InputError(path.string() + ": " + out->geterror());
-  });
+  std::vector<const char*> channel_names;
+  for (const auto& c : names) channel_names.push_back(c.c_str());
+  const std::string format = ext.substr(1);
+  PdrtImageWrite w{};
+  w.format = format.c_str();
+  w.width = img.width, w.height = img.height, w.channels = nc;
+  w.channel_names = channel_names.data();
+  w.z_channel = exr ? nc - 1 : -1;
+  w.uint8 = !linear;
+  w.pixels = pixels.data();
+  write_through_module(path, w, attributes);
 }
 
 void write_display_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb) {
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  write_path_atomically(path, [&](const std::filesystem::path& tmp) {
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out || !out->open(tmp.string(), spec)) throw InputError(path.string() + ": cannot write PNG");
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !out->close())
-      throw InputError(path.string() + ": " + out->geterror());
-  });
+  PdrtImageWrite w{};
+  w.format = "png";
+  w.width = width, w.height = height, w.channels = 3;
+  w.z_channel = -1;
+  w.uint8 = 1;
+  w.pixels = rgb.data();
+  write_through_module(path, w, {{"oiio:ColorSpace", "sRGB"}});
 }
 
 Image read_image_rgb(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  struct Buffer {
+    std::vector<float> px;
+    int width = 0, height = 0, channels = 0;
+  } buf;
+  PdrtImageRead r{};
+  r.context = &buf;
+  r.alloc = [](void* ctx, int w, int h, int c) -> float* {
+    auto* b = static_cast<Buffer*>(ctx);
+    try {
+      b->px.resize(std::size_t(w) * h * c);
+    } catch (const std::bad_alloc&) {
+      return nullptr;
+    }
+    b->width = w, b->height = h, b->channels = c;
+    return b->px.data();
+  };
+  char error[1024];
+  if (image_module().read(path.c_str(), &r, error, sizeof error) != 0) throw InputError(path.string() + ": " + error);
   Image img;
-  img.width = spec.width, img.height = spec.height;
-  std::vector<float> px(std::size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
-    throw InputError(path.string() + ": " + in->geterror());
-  const bool srgb = spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
+  img.width = buf.width, img.height = buf.height;
+  const int nc = buf.channels;
+  const bool srgb = r.integer_format != 0;
   auto decode = [&](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
-  img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
+  img.rgb.resize(std::size_t(buf.width) * buf.height * 3);
   for (std::size_t i = 0; i < img.rgb.size() / 3; ++i)
     for (int c = 0; c < 3; ++c) {
-      float v = px[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+      float v = buf.px[i * nc + std::min(c, nc - 1)];
       img.rgb[3 * i + c] = srgb ? decode(v) : v;
     }
   return img;

@@ -1,5 +1,6 @@
 #pragma once
-// Writes a rendered image through OpenImageIO, all-or-nothing (temporary file, then rename).
+// Writes a rendered image through the image module (OpenImageIO, loaded on first use),
+// all-or-nothing (temporary file, then rename).
 // EXR: linear float RGB plus the AOV channels; TIFF: linear float RGB; PNG/JPEG: sRGB 8-bit.
 // Every format carries the render's metadata as string attributes ("pdrt:sampler", ...).
 #include "renderer/render/film.h"
@@ -15,6 +16,10 @@ using Metadata = std::vector<std::pair<std::string, std::string>>;
 
 // Throws UsageError for an extension OIIO/pdrt cannot write (checked before rendering).
 void check_image_extension(const std::filesystem::path& path);
+
+// Loads the image module now: a command that will write images fails (InputError naming the
+// module and the loader's reason) before rendering rather than after.
+void require_image_io();
 
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata);
 

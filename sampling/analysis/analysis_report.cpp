@@ -6,8 +6,8 @@
 #include "sampling/analysis/radial_spectrum.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 namespace pdrt {
@@ -17,9 +17,12 @@ using nlohmann::json;
 double round_sig9(double x) {
   if (x == 0.0) return 0.0;  // no "-0" in the JSON
   if (!std::isfinite(x)) return x;
+  // The same digits as printf("%.9g") and strtod, ~3x faster (prefix arrays hold a value per point).
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", x);
-  return std::strtod(buf, nullptr);
+  const auto end = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 9).ptr;
+  double v = x;
+  std::from_chars(buf, end, v);
+  return v;
 }
 
 namespace {
@@ -128,7 +131,7 @@ FileStats analyze_point_set(const PointSet& points, const std::string& name, boo
   s.disk_radius_from_csv = points.has_radius();
   s.disk_radius = s.disk_radius_from_csv ? *std::min_element(points.radius.begin(), points.radius.end()) : s.min_distance;
   // Maximal: no point of the domain is farther than disk_radius from every sample. The
-  // tolerance covers the 9-significant-digit rounding of CSV coordinates and radii.
+  // tolerance covers CSVs rounded to 9 significant digits (pdrt's own are exact since issue 13).
   const double tolerance = 1e-6 * s.disk_radius + 2e-9 * std::sqrt(double(s.dim));
   s.maximal = s.empty.radius <= s.disk_radius + tolerance;
   s.chi2 = chi_square_uniformity(points);

@@ -20,19 +20,37 @@ fs::path temp_beside(const fs::path& path) {
   return path.parent_path() / name;
 }
 fs::path dir_of(const fs::path& path) { return path.parent_path().empty() ? fs::path(".") : path.parent_path(); }
+
+// The directory itself when it exists, else its nearest existing ancestor (where the missing
+// ones will be created).
+fs::path nearest_existing(fs::path dir) {
+  std::error_code ec;
+  while (!fs::exists(dir, ec)) {
+    fs::path up = dir.parent_path();
+    if (up.empty() || up == dir) return up.empty() ? fs::path(".") : up;
+    dir = up;
+  }
+  return dir;
+}
 }  // namespace
 
 void check_writable(const fs::path& path) {
-  fs::path dir = dir_of(path);
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw InputError(path.string() + ": directory '" + dir.string() + "' does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw InputError(path.string() + ": directory '" + dir.string() + "' is not writable (" + std::strerror(errno) + ")");
   if (fs::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, expected a file path");
+  const fs::path dir = dir_of(path), base = nearest_existing(dir);
+  if (!fs::is_directory(base, ec))
+    throw InputError(path.string() + ": cannot create directory '" + dir.string() + "': '" + base.string() +
+                     "' is not a directory");
+  if (::access(base.c_str(), W_OK) != 0)
+    throw InputError(path.string() + ": directory '" + base.string() + "' is not writable (" + std::strerror(errno) + ")");
 }
 
 void write_path_atomically(const fs::path& path, const std::function<void(const fs::path&)>& writer) {
   check_writable(path);
+  const fs::path dir = dir_of(path);
+  std::error_code mk;
+  fs::create_directories(dir, mk);
+  if (mk) throw InputError(path.string() + ": cannot create directory '" + dir.string() + "' (" + mk.message() + ")");
   fs::path tmp = temp_beside(path);
   try {
     writer(tmp);

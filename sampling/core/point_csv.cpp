@@ -2,11 +2,11 @@
 
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/text_writer.h"
 #include "sampling/generators/generator.h"
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -15,24 +15,24 @@ namespace pdrt {
 
 void write_point_csv(const std::filesystem::path& path, const PointSet& points) {
   write_file_atomically(path, [&](std::ostream& out) {
-    for (int k = 0; k < points.dim; ++k) out << (k ? ",x" : "x") << k;
-    if (points.has_radius()) out << ",radius";
-    out << '\n';
-    char buf[64];
-    std::string line;
+    TextWriter w(out);
+    for (int k = 0; k < points.dim; ++k) {
+      w.put(k ? ",x" : "x");
+      w.integer(k);
+    }
+    if (points.has_radius()) w.put(",radius");
+    w.put('\n');
     for (std::size_t i = 0; i < points.size(); ++i) {
-      line.clear();
       auto p = points.point(i);
       for (int k = 0; k < points.dim; ++k) {
-        std::snprintf(buf, sizeof buf, k ? ",%.9g" : "%.9g", p[k]);
-        line += buf;
+        if (k) w.put(',');
+        w.number(p[k]);
       }
       if (points.has_radius()) {
-        std::snprintf(buf, sizeof buf, ",%.9g", points.radius[i]);
-        line += buf;
+        w.put(',');
+        w.number(points.radius[i]);
       }
-      line += '\n';
-      out << line;
+      w.put('\n');
     }
   });
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The point-set CSV format of `pdrt sample`: header x0,x1,...[,radius], one point per
-// row in generation order, 9 significant digits.
+// row in generation order, each value in the shortest form that reads back exactly.
 #include "sampling/core/point_set.h"
 
 #include <filesystem>

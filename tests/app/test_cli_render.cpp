@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -109,12 +110,67 @@ TEST(CliRender, BadArgumentsAreRefusedBeforeRendering) {
   }
   auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.bmp").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  r = run_pdrt("render " + scene.string() + " -o " + (d / "missing-dir" / "out.exr").string());
+  std::ofstream(d / "a-file") << "not a directory";
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "a-file" / "out.exr").string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("a-file"), std::string::npos) << r.err;
   r = run_pdrt("render " + (d / "nope.json").string() + " -o " + out);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+namespace {
+// The 8-bit RGB values of an image file; EXR values are converted to sRGB and quantised as
+// pdrt does for PNG.
+std::vector<int> srgb8(const fs::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  EXPECT_TRUE(in) << file;
+  if (!in) return {};
+  const auto& spec = in->spec();
+  std::vector<float> px(std::size_t(spec.width) * spec.height * spec.nchannels);
+  EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  const bool linear = spec.format == OIIO::TypeDesc::FLOAT;
+  std::vector<int> out;
+  for (std::size_t i = 0; i < px.size(); i += spec.nchannels)
+    for (int c = 0; c < 3; ++c) {
+      float v = linear ? linear_to_srgb(px[i + c]) : px[i + c];
+      out.push_back(int(std::lround(v * 255.0f)));
+    }
+  return out;
+}
+}  // namespace
+
+TEST(CliRender, OneRenderWritesEveryRequestedFormatWithTheSamePixels) {
+  fs::path d = scratch_dir("render_two_outputs");
+  fs::path scene = write_scene(d);
+  const std::string common = " --spp 3 --seed 9 --quiet";
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "both.exr").string() + " -o " +
+                    (d / "both.png").string() + common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "alone.png").string() + common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<int> png = srgb8(d / "both.png");
+  ASSERT_EQ(png.size(), std::size_t(24 * 16 * 3));
+  EXPECT_EQ(png, srgb8(d / "alone.png")) << "the PNG of a two-output render is the PNG of its own render";
+  EXPECT_EQ(png, srgb8(d / "both.exr")) << "the PNG is the EXR of the same render in sRGB";
+}
+
+TEST(CliRender, BadSecondOutputIsRefusedBeforeRenderingLeavingNoFile) {
+  fs::path d = scratch_dir("render_bad_second");
+  fs::path scene = write_scene(d);
+  std::ofstream(d / "a-file") << "not a directory";
+  const fs::path good = d / "good.exr";
+  struct Case {
+    std::string second;
+    int code;
+  } cases[] = {{(d / "out.bmp").string(), 2}, {(d / "a-file" / "out.png").string(), 1}, {good.string(), 2}};
+  for (const auto& c : cases) {
+    auto r = run_pdrt("render " + scene.string() + " -o " + good.string() + " -o " + c.second + " --spp 64 --quiet");
+    EXPECT_EQ(r.exit_code, c.code) << c.second << ": " << r.err;
+    EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(good)) << c.second;
+  }
 }
 
 TEST(CliRender, AdaptiveFlagsRefineAndStatsReportTheSppDistribution) {

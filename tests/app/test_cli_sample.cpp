@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace pdrt {
 namespace {
@@ -62,10 +63,18 @@ TEST_F(SampleCli, RejectsCountWithRadius) { expect_refused("-m gamito -n 10 -r 0
 TEST_F(SampleCli, RejectsRadiusForCountOnlyMethod) { expect_refused("-m mccool -r 0.1", 2, "--radius"); }
 
 TEST_F(SampleCli, RejectsUnwritableOutputBeforeGenerating) {
-  auto r = run_pdrt("sample -m random -n 10 -o " + (dir / "missing" / "p.csv").string());
+  std::ofstream(dir / "a-file") << "not a directory";
+  auto r = run_pdrt("sample -m random -n 10 -o " + (dir / "a-file" / "sub" / "p.csv").string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(test::line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("missing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a-file"), std::string::npos) << r.err;
+}
+
+TEST_F(SampleCli, CreatesMissingOutputDirectories) {
+  const auto out = dir / "out" / "nested" / "p.csv";
+  auto r = run_pdrt("sample -m random -n 10 -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_point_csv(out).size(), 10u);
 }
 
 }  // namespace

@@ -10,6 +10,15 @@ macro(pdrt_require pkg debian_pkg)
 endmacro()
 
 pdrt_require(embree libembree-dev 3)
+# Debian 12's Imath config (pulled in by OpenImageIO's) lists Imath::PyImath_Python3_11, whose
+# library is in the separate python3-imath package, and says so on every configure in a
+# message that reads like an error. Find Imath first with STATUS messages muted: its targets
+# are then defined, so OpenImageIO's find_dependency(Imath) does not run that check again.
+# Warnings and errors still show (they are above STATUS).
+set(_pdrt_log_level "${CMAKE_MESSAGE_LOG_LEVEL}")
+set(CMAKE_MESSAGE_LOG_LEVEL NOTICE)
+find_package(Imath CONFIG QUIET)
+set(CMAKE_MESSAGE_LOG_LEVEL "${_pdrt_log_level}")
 pdrt_require(OpenImageIO libopenimageio-dev CONFIG)
 # Debian's OpenImageIO config lists include directories of optional packages (OpenCV)
 # that need not be installed; drop the ones that do not exist.

@@ -13,6 +13,9 @@
 
 namespace pdrt::cli {
 
+// --threads: 0 = all cores; TBB and Embree take any count, more than this is a typo.
+inline constexpr IntRange kThreadsRange{0, 1024};
+
 namespace detail {
 template <class T> struct option_value { using type = T; };
 template <class T> struct option_value<std::optional<T>> { using type = T; };

@@ -99,12 +99,19 @@ JsonDocument::JsonDocument(std::string name, std::string text)
 
 JsonNode JsonDocument::root() const { return JsonNode(*this, root_, ""); }
 
+std::string JsonDocument::position(const std::optional<JsonLocation>& at) const {
+  return at ? name_ + ":" + std::to_string(at->line) + ":" + std::to_string(at->col) : name_;
+}
+
 void JsonDocument::fail(const std::optional<JsonLocation>& at, const std::string& message) const {
-  std::string where = at ? name_ + ":" + std::to_string(at->line) + ":" + std::to_string(at->col) : name_;
-  std::string line = where + ": " + message;
+  std::string line = position(at) + ": " + message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';  // messages are one line
   throw InputError(printable(line));
+}
+
+std::string JsonNode::where() const {
+  return printable(doc_->position(doc_->locations().value(path_)) + ": " + path_);
 }
 
 void JsonNode::fail(const std::string& what) const {

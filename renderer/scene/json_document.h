@@ -34,6 +34,7 @@ class JsonDocument {
   const std::string& name() const { return name_; }
   const JsonLocations& locations() const { return locations_; }
   JsonNode root() const;
+  std::string position(const std::optional<JsonLocation>& at) const;  // "<file>:<line>:<col>"
   [[noreturn]] void fail(const std::optional<JsonLocation>& at, const std::string& message) const;
 
  private:
@@ -53,6 +54,7 @@ class JsonNode {
   const std::string& path() const { return path_; }
   const JsonDocument& document() const { return *doc_; }
 
+  std::string where() const;  // "<file>:<line>:<col>: <path>", for messages raised later
   [[noreturn]] void fail(const std::string& what) const;      // "<path> <what>"
   [[noreturn]] void fail_got(const std::string& what) const;  // "<path> <what>, got <value>"
   [[noreturn]] void fail_key(const std::string& what) const;  // at the key naming this value

@@ -151,7 +151,9 @@ void SceneParser::check_time(const JsonNode& t, float previous, bool first) cons
 void SceneParser::film(const JsonObject& o) {
   o.allow({"width", "height", "filter", "exposure"});
   FilmDesc& f = scene_.film;
-  f.width = int(o.require("width").integer_in(kFilmSizeRange));
+  JsonNode width = o.require("width");
+  f.width = int(width.integer_in(kFilmSizeRange));
+  f.size_where = width.where() + "/height";
   f.height = int(o.require("height").integer_in(kFilmSizeRange));
   if (auto n = o.get("exposure")) f.exposure = n->number();
   if (auto n = o.get("filter")) {

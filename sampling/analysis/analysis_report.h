@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,7 +25,7 @@ void check_same_dim(std::span<const PointSet> sets, std::span<const std::string>
 
 // The periodogram resolution to use; throws UsageError naming --resolution when the
 // requested one is odd or outside the limits for these sets.
-int resolve_resolution(std::span<const PointSet> sets, int requested);
+int resolve_resolution(std::span<const PointSet> sets, std::optional<int> requested);
 
 struct FileStats {
   std::string file;

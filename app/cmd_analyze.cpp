@@ -7,6 +7,8 @@
 #include "sampling/analysis/analysis_report.h"
 #include "sampling/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/numeric_option.h"
+#include "app/output_path.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/point_csv.h"
 #include "app/python_plots.h"
@@ -64,7 +66,7 @@ void add_analyze_command(CLI::App& app) {
     std::vector<std::string> files;
     std::string table;
     bool periodic = false;
-    int resolution = 0;
+    std::optional<int> resolution;
     bool quiet = false;
     bool no_plots = false;
     std::string out;
@@ -82,7 +84,7 @@ void add_analyze_command(CLI::App& app) {
   files->excludes(table);
   table->excludes(files);
   cmd->add_flag("--periodic", o->periodic, "Toroidal distances (for sets generated with --periodic)");
-  cmd->add_option("--resolution", o->resolution,
+  add_integer_option(cmd, "--resolution", o->resolution, IntRange{0, INT32_MAX},
                   "Periodogram grid size R (even; 2-D: 32..4096, 1-D: 64..16777216); default: the smallest power "
                   "of two >= 4 N^(1/d)");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
@@ -90,6 +92,7 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
   cmd->callback([o] {
     auto t0 = std::chrono::steady_clock::now();
+    require_output_path("-o/--out", o->out);
     // 1. Validate everything before any expensive work or output.
     std::vector<PointSet> sets;
     std::optional<SampleTable> table;

@@ -1,7 +1,12 @@
 // `pdrt compare`: progressive jitter vs Poisson (and random, Sobol) noise in real images, measured.
 #include "app/commands.h"
+#include "app/numeric_option.h"
+#include "app/output_path.h"
+#include "renderer/render/sample_budget.h"
+#include "renderer/scene/scene_limits.h"
 #include "renderer/compare/compare.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/input_file.h"
 #include "app/python_plots.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
@@ -24,7 +29,7 @@ void add_compare_command(CLI::App& app) {
     double adaptive_threshold = 0;
     int adaptive_target_spp = 64;
     std::string adaptive_metric, adaptive_variance;
-    bool adaptive = false, quiet = false, no_plots = false;
+    bool adaptive = false, quiet = false, no_plots = false, allow_long = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("compare", "Compare samplers by the error of rendered images against a reference.");
@@ -34,19 +39,21 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
   cmd->add_flag("--adaptive", o->adaptive,
                 "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4, more while needed) against uniform sampling");
-  cmd->add_option("--adaptive-threshold", o->adaptive_threshold,
+  add_real_option(cmd, "--adaptive-threshold", o->adaptive_threshold,
                   "Centre of the sweep (default: the scene's, else the metric's default)");
   cmd->add_option("--adaptive-metric", o->adaptive_metric,
                   "error-per-sample | relative-error | contrast (default: the scene's)");
   cmd->add_option("--adaptive-variance", o->adaptive_variance, "samples | halves (default: the scene's)");
-  cmd->add_option("--adaptive-target-spp", o->adaptive_target_spp,
-                  "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
-      ->default_val(64);
-  cmd->add_option("--reference-spp", o->reference_spp, "Samples per pixel of the reference")->default_val(4096);
+  add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
+                     "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
+      ->default_str("64");
+  add_integer_option(cmd, "--reference-spp", o->reference_spp, kSppRange, "Samples per pixel of the reference")
+      ->default_str("4096");
   cmd->add_option("--cache-dir", o->cache, "Reference cache directory (default ~/.cache/pdrt/references)");
-  cmd->add_option("--width", o->width, "Image width (overrides film.width)");
-  cmd->add_option("--height", o->height, "Image height (overrides film.height)");
-  cmd->add_option("--threads,-t", o->threads, "Worker threads (0 = all cores)")->default_val(0);
+  add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width (overrides film.width)");
+  add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height (overrides film.height)");
+  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")->default_str("0");
+  cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--no-plots", o->no_plots, "Skip the matplotlib plots and index.html");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress on stderr");
   cmd->callback([o] {
@@ -59,12 +66,7 @@ void add_compare_command(CLI::App& app) {
     };
     c.samplers = split(o->samplers);
     c.spp.clear();
-    for (const auto& t : split(o->spp)) {
-      char* end = nullptr;
-      long v = std::strtol(t.c_str(), &end, 10);
-      if (t.empty() || *end || v < 1 || v > (1 << 24)) throw UsageError("--spp: \"" + t + "\" is not a sample count");
-      c.spp.push_back(int(v));
-    }
+    for (const auto& t : split(o->spp)) c.spp.push_back(int(parse_integer_option("--spp", t, kSppRange)));
     c.adaptive = o->adaptive;
     c.adaptive_threshold = o->adaptive_threshold;
     c.adaptive_metric = o->adaptive_metric;
@@ -76,23 +78,26 @@ void add_compare_command(CLI::App& app) {
     c.out = o->out;
     c.cache_dir = o->cache;
     c.scene_label = o->scene;
-    if (o->threads < 0) throw UsageError("--threads must be >= 0, got " + std::to_string(o->threads));
-    if (o->width && (*o->width < 1 || *o->width > 65536)) throw UsageError("--width must be in [1, 65536]");
-    if (o->height && (*o->height < 1 || *o->height > 65536)) throw UsageError("--height must be in [1, 65536]");
+    require_output_path("-o/--out", o->out);
     validate_compare_options(c);
     std::string python;
     if (!o->no_plots) python = find_plot_python();
 
     SceneDesc scene = load_scene(o->scene);
     {
-      std::ifstream in(o->scene, std::ios::binary);
+      std::ifstream in = open_for_reading(o->scene);
       std::stringstream ss;
       ss << in.rdbuf();
       c.scene_content = ss.str();
     }
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
-    check_film_memory(scene.film.width, scene.film.height);
+    check_film_memory(scene.film.width, scene.film.height,
+                      o->width || o->height ? "--width/--height" : scene.film.size_where);
+    check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
+                        "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
+                            " pixels x (reference + every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),
+                        o->allow_long);
     require_image_io();
     std::filesystem::path results = run_compare(scene, c);
     if (!o->no_plots) {

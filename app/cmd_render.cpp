@@ -2,6 +2,10 @@
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/numeric_option.h"
+#include "app/output_path.h"
+#include "renderer/render/sample_budget.h"
+#include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
@@ -66,7 +70,7 @@ void add_render_command(CLI::App& app) {
     std::optional<double> threshold;
     std::string metric, variance;
     int threads = 0;
-    bool quiet = false, adaptive = false;
+    bool quiet = false, adaptive = false, allow_long = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
@@ -76,37 +80,34 @@ void add_render_command(CLI::App& app) {
                   "formats of the same render")
       ->required()
       ->allow_extra_args(false);
-  cmd->add_option("--spp", o->spp, "Samples per pixel (overrides sampler.spp)");
+  add_integer_option(cmd, "--spp", o->spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
   cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | sobol (overrides sampler.type)");
-  cmd->add_option("--seed", o->seed, "Sampler seed (overrides sampler.seed)");
-  cmd->add_option("--threads,-t", o->threads, "Worker threads (0 = all cores)")->default_val(0);
-  cmd->add_option("--width", o->width, "Image width in pixels (overrides film.width)");
-  cmd->add_option("--height", o->height, "Image height in pixels (overrides film.height)");
+  add_integer_option(cmd, "--seed", o->seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
+  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)");
+  add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
+  add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height in pixels (overrides film.height)");
   cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
   cmd->add_flag("--adaptive", o->adaptive,
                 "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
                 "--max-spp option turns it on too)");
-  cmd->add_option("--min-spp", o->min_spp, "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
-  cmd->add_option("--max-spp", o->max_spp, "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
-  cmd->add_option("--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
+  add_integer_option(cmd, "--min-spp", o->min_spp, kSppRange,
+                     "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
+  add_integer_option(cmd, "--max-spp", o->max_spp, kSppRange,
+                     "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
+  add_real_option(cmd, "--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
   cmd->add_option("--adaptive-metric", o->metric, "Adaptive: error-per-sample | relative-error | contrast");
   cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
+  cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
-    // Validate every argument before loading or rendering anything.
-    if (o->spp && *o->spp < 1) throw UsageError("--spp must be >= 1, got " + std::to_string(*o->spp));
-    if (o->width && *o->width < 1) throw UsageError("--width must be >= 1, got " + std::to_string(*o->width));
-    if (o->height && *o->height < 1) throw UsageError("--height must be >= 1, got " + std::to_string(*o->height));
-    if (o->width && *o->width > 65536) throw UsageError("--width must be <= 65536, got " + std::to_string(*o->width));
-    if (o->height && *o->height > 65536) throw UsageError("--height must be <= 65536, got " + std::to_string(*o->height));
-    if (o->threads < 0) throw UsageError("--threads must be >= 0, got " + std::to_string(o->threads));
+    // Validate every argument before loading or rendering anything (numbers are checked
+    // while parsing: app/numeric_option.h).
+    for (const auto& out : o->outs) require_output_path("-o/--out", out);
     if (!o->sampler.empty()) {
       bool known = false;
       for (const auto& n : sampler_names()) known = known || n == o->sampler;
       if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (random, jitter, poisson, sobol)");
     }
-    if (o->min_spp && *o->min_spp < 1) throw UsageError("--min-spp must be >= 1, got " + std::to_string(*o->min_spp));
-    if (o->max_spp && *o->max_spp < 1) throw UsageError("--max-spp must be >= 1, got " + std::to_string(*o->max_spp));
     if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
       throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
     if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
@@ -135,9 +136,15 @@ void add_render_command(CLI::App& app) {
     if (o->seed) scene.sampler.seed = *o->seed;
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
-    check_film_memory(scene.film.width, scene.film.height);
+    check_film_memory(scene.film.width, scene.film.height,
+                      o->width || o->height ? "--width/--height" : scene.film.size_where);
+    check_sample_budget(scene_sample_count(scene), describe_sample_count(scene), o->allow_long);
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
+
+    if (!o->quiet)
+      std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
+                   format_sample_cost(scene_sample_count(scene)).c_str());
 
     // Ctrl-C from here on gives the partial image, even while the image module loads.
     auto previous = std::signal(SIGINT, on_sigint);

@@ -1,6 +1,8 @@
 // `pdrt sample`: generate a point set with any method and write it as CSV.
 #include "sampling/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/numeric_option.h"
+#include "app/output_path.h"
 #include "sampling/core/errors.h"
 #include "sampling/generators/generator.h"
 #include "sampling/core/point_csv.h"
@@ -22,24 +24,27 @@ void add_sample_command(CLI::App& app) {
   for (const auto& m : methods()) methods_list += "\n  " + m.name + ": " + m.summary;
   auto* cmd = app.add_subcommand("sample", "Generate a point set in [0,1)^dim and write it as CSV (x0,x1,...[,radius]).");
   cmd->add_option("--method,-m", o->p.method, "Generator:" + methods_list)->required();
-  cmd->add_option("--dim,-d", o->p.dim, "Dimension (1..8; gamito 1..5)")->default_val(2);
-  auto* count = cmd->add_option("--count,-n", o->p.count, "Number of points (exact for random/mccool/lloyd/best-candidate)");
-  auto* radius = cmd->add_option("--radius,-r", o->p.radius, "Minimum distance between points");
+  add_integer_option(cmd, "--dim,-d", o->p.dim, IntRange{1, kMaxDim}, "Dimension (gamito 1..5)")->default_str("2");
+  auto* count = add_integer_option(cmd, "--count,-n", o->p.count, IntRange{1, INT64_MAX},
+                                   "Number of points (exact for random/mccool/lloyd/best-candidate)");
+  auto* radius = add_real_option(cmd, "--radius,-r", o->p.radius, "Minimum distance between points");
   count->excludes(radius);
   cmd->add_flag("--periodic", o->p.periodic, "Toroidal domain (distances wrap around)");
-  cmd->add_option("--seed,-s", o->p.seed, "Random seed")->default_val(1);
-  cmd->add_option("--attempts,-k", o->p.attempts,
+  add_integer_option(cmd, "--seed,-s", o->p.seed, IntRange{0, UINT64_MAX}, "Random seed")->default_str("1");
+  add_integer_option(cmd, "--attempts,-k", o->p.attempts, IntRange{1, INT64_MAX},
                   "dart: consecutive failures before stopping (1000); bridson: candidates per active point (30); "
                   "mccool: consecutive missed darts before the radius shrinks (30, plus magnification per placed point); best-candidate: candidates per placed point "
                   "(1); lloyd: Monte Carlo probes per point (64)");
-  cmd->add_option("--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
-  cmd->add_option("--magnification", o->p.magnification,
+  add_real_option(cmd, "--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
+  add_real_option(cmd, "--magnification", o->p.magnification,
                   "mccool: extra consecutive misses allowed per placed point (128)");
-  cmd->add_option("--start-radius", o->p.start_radius, "mccool: initial radius");
-  cmd->add_option("--iterations", o->p.lloyd_iterations, "lloyd: relaxation iterations")->default_val(10);
+  add_real_option(cmd, "--start-radius", o->p.start_radius, "mccool: initial radius");
+  add_integer_option(cmd, "--iterations", o->p.lloyd_iterations, kLloydIterationsRange, "lloyd: relaxation iterations")
+      ->default_str("10");
   cmd->add_option("--out,-o", o->out, "Output CSV file")->required();
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
+    require_output_path("-o/--out", o->out);
     o->p.quiet = o->quiet;
     validate(o->p);
     check_writable(o->out);

@@ -1,6 +1,8 @@
 // `pdrt tables`: (re)generate the precomputed hierarchical Poisson-disk tables.
 #include "sampling/core/atomic_file.h"
 #include "app/commands.h"
+#include "app/numeric_option.h"
+#include "app/output_path.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/progress.h"
 #include "sampling/samplers/sample_table.h"
@@ -21,9 +23,10 @@ void add_tables_command(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("tables", "Generate the hierarchical Poisson-disk sample tables (one file per family).");
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
-  cmd->add_option("--seed,-s", o->seed, "Seed of the table set")->default_val(1);
+  add_integer_option(cmd, "--seed,-s", o->seed, IntRange{0, UINT64_MAX}, "Seed of the table set")->default_str("1");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
   cmd->callback([o] {
+    require_output_path("-o/--out", o->out);
     std::filesystem::path dir(o->out);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);

@@ -123,6 +123,13 @@ void validate_compare_options(const CompareOptions& o) {
                      "), i.e. >= " + std::to_string(4 * o.spp.back()) + ", got " + std::to_string(o.reference_spp));
 }
 
+double compare_sample_count(const CompareOptions& o, int width, int height) {
+  double per_pixel = o.reference_spp;
+  for (int spp : o.spp) per_pixel += double(o.samplers.size()) * spp;
+  if (o.adaptive && !o.spp.empty()) per_pixel += 13.0 * double(o.samplers.size()) * o.spp.back();
+  return per_pixel * width * height;
+}
+
 fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   validate_compare_options(o);
   std::error_code ec;

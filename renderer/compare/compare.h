@@ -31,6 +31,10 @@ struct CompareOptions {
 // Validates options (UsageError) before any rendering.
 void validate_compare_options(const CompareOptions& o);
 
+// The most camera samples the comparison may take: the reference, every sampler at every
+// --spp and, with --adaptive, at most 13 sweep runs per sampler of at most the largest --spp.
+double compare_sample_count(const CompareOptions& o, int width, int height);
+
 // Renders and writes everything except the plots; returns the path of results.json.
 std::filesystem::path run_compare(const SceneDesc& scene, const CompareOptions& o);
 

@@ -29,14 +29,14 @@ std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) {
   return make_sampler(d.type, d.seed);
 }
 
-void check_film_memory(int width, int height) {
+void check_film_memory(int width, int height, const std::string& where) {
   double need = double(width) * double(height) * double(Film::kBytesPerPixel);
   double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (need > 0.75 * have) {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "film %dx%d needs %.1f GiB of buffers; this machine has %.1f GiB", width, height,
+    std::snprintf(buf, sizeof buf, ": film %dx%d needs %.1f GiB of buffers; this machine has %.1f GiB", width, height,
                   need / (1 << 30), have / (1 << 30));
-    throw InputError(buf);
+    throw InputError(where + buf);
   }
 }
 
@@ -91,7 +91,7 @@ struct PixelRenderer {
 }  // namespace
 
 RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
-  check_film_memory(desc.film.width, desc.film.height);
+  check_film_memory(desc.film.width, desc.film.height, desc.film.size_where);
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
   auto t0 = std::chrono::steady_clock::now();

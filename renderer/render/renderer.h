@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <string>
 
 namespace pdrt {
 
@@ -39,8 +40,9 @@ struct RenderResult {
 // The sampler the scene (after command-line overrides) asks for.
 std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d);
 
-// Refuses (InputError) a film whose buffers would not fit in this machine's memory.
-void check_film_memory(int width, int height);
+// Refuses (InputError) a film whose buffers would not fit in this machine's memory; the
+// message starts with `where` (the scene's film.width location, or the options that set it).
+void check_film_memory(int width, int height, const std::string& where = "film");
 
 RenderResult render(const SceneDesc& scene, const Sampler& sampler, const RenderOptions& options);
 

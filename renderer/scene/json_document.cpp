@@ -1,6 +1,7 @@
 #include "renderer/scene/json_document.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/printable.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -40,12 +41,50 @@ std::string short_reason(const std::string& what) {
   return "JSON syntax error " + r;
 }
 
+constexpr size_t kShownChars = 60;
+
+// Appends a rendering of v to out, stopping once out is longer than kShownChars and eliding
+// containers below `depth` levels as [...] / {...}: cost and recursion are bounded by the cap,
+// not by the value.
+void abbreviate(const json& v, int depth, std::string& out) {
+  if (out.size() > kShownChars) return;
+  if (!v.is_structured()) {
+    out += v.dump();
+    return;
+  }
+  const bool object = v.is_object();
+  if (v.empty() || depth == 0) {
+    out += object ? (v.empty() ? "{}" : "{...}") : (v.empty() ? "[]" : "[...]");
+    return;
+  }
+  out += object ? '{' : '[';
+  bool first = true;
+  for (auto it = v.begin(); it != v.end() && out.size() <= kShownChars; ++it) {
+    if (!first) out += ",";
+    first = false;
+    if (object) out += json(it.key()).dump() + ":";
+    abbreviate(*it, depth - 1, out);
+  }
+  out += object ? '}' : ']';
+}
+
 }  // namespace
 
 std::string json_quoted(const std::string& s) { return json(s).dump(); }
 
 JsonDocument::JsonDocument(std::string name, std::string text)
     : name_(std::move(name)), text_(std::move(text)), locations_(text_) {
+  if (auto deep = locations_.first_nesting_beyond(kMaxJsonDepth)) {
+    // A syntax error before that point is the first problem; nlohmann's parser is iterative,
+    // so parsing the (bounded-depth) prefix is safe.
+    try {
+      json prefix = json::parse(std::string_view(text_).substr(0, deep->begin));
+    } catch (const json::parse_error& e) {
+      if (e.byte && e.byte - 1 < deep->begin) fail(locations_.at_byte(e.byte - 1), short_reason(e.what()));
+    } catch (const json::out_of_range&) {
+    }
+    fail(deep, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit for a scene)");
+  }
   try {
     root_ = json::parse(text_);
   } catch (const json::parse_error& e) {
@@ -60,12 +99,19 @@ JsonDocument::JsonDocument(std::string name, std::string text)
 
 JsonNode JsonDocument::root() const { return JsonNode(*this, root_, ""); }
 
+std::string JsonDocument::position(const std::optional<JsonLocation>& at) const {
+  return at ? name_ + ":" + std::to_string(at->line) + ":" + std::to_string(at->col) : name_;
+}
+
 void JsonDocument::fail(const std::optional<JsonLocation>& at, const std::string& message) const {
-  std::string where = at ? name_ + ":" + std::to_string(at->line) + ":" + std::to_string(at->col) : name_;
-  std::string line = where + ": " + message;
+  std::string line = position(at) + ": " + message;
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';  // messages are one line
-  throw InputError(line);
+  throw InputError(printable(line));
+}
+
+std::string JsonNode::where() const {
+  return printable(doc_->position(doc_->locations().value(path_)) + ": " + path_);
 }
 
 void JsonNode::fail(const std::string& what) const {
@@ -77,10 +123,14 @@ void JsonNode::fail_got(const std::string& what) const { fail(what + ", got " + 
 void JsonNode::fail_key(const std::string& what) const { doc_->fail(doc_->locations().key(path_), path_ + " " + what); }
 
 std::string JsonNode::shown() const {
-  std::string s = v_->dump();
+  std::string s;
   if (!v_->is_structured())
     if (auto at = doc_->locations().value(path_); at && at->end > at->begin) s = doc_->locations().source(*at);
-  return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+  if (s.empty()) abbreviate(*v_, 3, s);
+  if (s.size() <= kShownChars) return s;
+  size_t cut = kShownChars - 3;
+  while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return s.substr(0, cut) + "...";
 }
 
 float JsonNode::number() const {
@@ -121,8 +171,10 @@ long long JsonNode::integer(long long lo, long long hi) const {
 
 int JsonNode::int_at_least(int lo) const { return int(integer(lo, INT_MAX)); }
 
-uint64_t JsonNode::unsigned_integer() const {
-  if (!v_->is_number_unsigned()) fail_got("must be an unsigned integer");
+uint64_t JsonNode::integer_in(IntRange range) const {
+  if (!v_->is_number_integer()) fail_got("must be an integer in " + range.str());
+  if (!v_->is_number_unsigned() || !range.contains(v_->get<uint64_t>()))
+    fail_got("must be an integer in " + range.str());
   return v_->get<uint64_t>();
 }
 

@@ -3,6 +3,7 @@
 // InputError of one line, "<file>:<line>:<col>: <json.path> <what is wrong>, got <value>",
 // so the scene loader states its rules and never formats a position itself.
 #include "renderer/scene/json_locations.h"
+#include "sampling/core/int_range.h"
 #include "renderer/scene/vec3.h"
 
 #include <nlohmann/json.hpp>
@@ -16,10 +17,16 @@ namespace pdrt {
 
 class JsonNode;
 
+// Containers nested deeper than this are refused before anything recurses over the document
+// (a scene needs about 6: objects[i].transform.rotate[j].axis). Messages render values
+// recursively, so the cap is what keeps hostile input from overflowing the stack.
+inline constexpr size_t kMaxJsonDepth = 64;
+
 class JsonDocument {
  public:
   // Rejects what nlohmann accepts or reports without a position: syntax errors (at the
-  // offending character), duplicated keys, numbers beyond double range.
+  // offending character), nesting deeper than kMaxJsonDepth, duplicated keys, numbers beyond
+  // double range.
   JsonDocument(std::string name, std::string text);
   JsonDocument(const JsonDocument&) = delete;  // locations_ views text_
   JsonDocument& operator=(const JsonDocument&) = delete;
@@ -27,6 +34,7 @@ class JsonDocument {
   const std::string& name() const { return name_; }
   const JsonLocations& locations() const { return locations_; }
   JsonNode root() const;
+  std::string position(const std::optional<JsonLocation>& at) const;  // "<file>:<line>:<col>"
   [[noreturn]] void fail(const std::optional<JsonLocation>& at, const std::string& message) const;
 
  private:
@@ -46,10 +54,13 @@ class JsonNode {
   const std::string& path() const { return path_; }
   const JsonDocument& document() const { return *doc_; }
 
+  std::string where() const;  // "<file>:<line>:<col>: <path>", for messages raised later
   [[noreturn]] void fail(const std::string& what) const;      // "<path> <what>"
   [[noreturn]] void fail_got(const std::string& what) const;  // "<path> <what>, got <value>"
   [[noreturn]] void fail_key(const std::string& what) const;  // at the key naming this value
-  std::string shown() const;  // scalars as written (1e999 stays 1e999); containers abbreviated
+  // Scalars as written (1e999 stays 1e999); containers abbreviated to a few levels and at
+  // most ~60 characters, however large or deep the value.
+  std::string shown() const;
 
   float number() const;  // finite, within float range
   float positive() const;
@@ -57,7 +68,7 @@ class JsonNode {
   float in_unit_interval() const;
   long long integer(long long lo, long long hi) const;  // written as an integer, in [lo, hi]
   int int_at_least(int lo) const;
-  uint64_t unsigned_integer() const;
+  uint64_t integer_in(IntRange range) const;  // written as an integer, in range
   bool boolean() const;
   std::string string() const;
   std::string choice(std::initializer_list<const char*> options) const;

@@ -161,6 +161,22 @@ std::optional<std::pair<std::string, JsonLocation>> JsonLocations::first_overflo
   return found;
 }
 
+std::optional<JsonLocation> JsonLocations::first_nesting_beyond(size_t limit) const {
+  size_t depth = 0;
+  for (size_t i = 0; i < text_.size(); ++i) {
+    char c = text_[i];
+    if (c == '"') {
+      for (++i; i < text_.size() && text_[i] != '"'; ++i)
+        if (text_[i] == '\\') ++i;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return at_byte(i);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
 JsonLocation JsonLocations::at_byte(size_t offset) const {
   offset = std::min(offset, text_.size());
   JsonLocation at;

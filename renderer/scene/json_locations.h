@@ -31,6 +31,10 @@ class JsonLocations {
   // nlohmann refuses numbers beyond double range (1e999) without a position; this finds the first.
   std::optional<std::pair<std::string, JsonLocation>> first_overflowing_number() const;
 
+  // The first '[' or '{' outside strings that opens a container nested more than `limit` deep
+  // (a top-level container is depth 1). Works on any text, valid JSON or not, without recursion.
+  std::optional<JsonLocation> first_nesting_beyond(size_t limit) const;
+
   JsonLocation at_byte(size_t offset) const;  // line:col of a byte offset (clamped)
   std::string_view source(const JsonLocation& at) const { return text_.substr(at.begin, at.end - at.begin); }
 

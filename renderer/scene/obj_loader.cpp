@@ -1,6 +1,7 @@
 #include "renderer/scene/obj_loader.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/printable.h"
 #include "renderer/scene/text_file.h"
 
 #include <tiny_obj_loader.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <sstream>
 #include <string_view>
@@ -19,7 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-[[noreturn]] void fail(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
+[[noreturn]] void fail(const std::string& where, const std::string& what) {
+  throw InputError(printable(where + ": " + what));
+}
 
 std::string in_quotes(std::string_view s) {
   std::string r(1, '"');  // built up, not '"' + s, which trips a GCC 12 -Wrestrict false positive
@@ -227,6 +231,23 @@ struct Corner {
   int v, n;
 };
 
+// An OBJ is text: a NUL or other control byte means a binary (or wrong) file, which would
+// otherwise surface as "no triangles" or a confusing parse error.
+void check_is_text(std::string_view text, const std::string& name) {
+  if (text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
+    fail(name, text.empty() ? "empty file, expected OBJ text (v and f lines)" : "holds only white space, expected OBJ text");
+  int line = 1;
+  for (unsigned char c : text) {
+    if (c == '\n') ++line;
+    if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n' && c != '\f' && c != '\v') || c == 0x7F) {
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "0x%02X", c);
+      fail(name + ":" + std::to_string(line), std::string("not a text file (control byte ") + byte +
+                                                  "); an OBJ must be Wavefront text");
+    }
+  }
+}
+
 }  // namespace
 
 ObjModel load_obj(const fs::path& file, bool override_materials) {
@@ -234,6 +255,7 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
   std::string reason;
   auto text = read_text_file(file, reason);
   if (!text) fail(name, "cannot open: " + reason);
+  check_is_text(*text, name);
   ObjModel model;
   std::vector<UseMtl> usemtl = check_obj_text(*text, name, file.parent_path(), model.degenerate_triangles);
 

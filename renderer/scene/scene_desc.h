@@ -40,6 +40,7 @@ struct FilmDesc {
   int width = 512, height = 512;
   FilterDesc filter;
   float exposure = 0;  // stops: pixel values are scaled by 2^exposure
+  std::string size_where = "film";  // "scene.json:3:21: film.width" for messages about the size
 };
 
 struct AdaptiveDesc {

@@ -2,8 +2,10 @@
 
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/printable.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/obj_loader.h"
+#include "renderer/scene/scene_limits.h"
 #include "renderer/scene/text_file.h"
 
 #include <cmath>
@@ -151,8 +153,10 @@ void SceneParser::check_time(const JsonNode& t, float previous, bool first) cons
 void SceneParser::film(const JsonObject& o) {
   o.allow({"width", "height", "filter", "exposure"});
   FilmDesc& f = scene_.film;
-  f.width = int(o.require("width").integer(1, 65536));
-  f.height = int(o.require("height").integer(1, 65536));
+  JsonNode width = o.require("width");
+  f.width = int(width.integer_in(kFilmSizeRange));
+  f.size_where = width.where() + "/height";
+  f.height = int(o.require("height").integer_in(kFilmSizeRange));
   if (auto n = o.get("exposure")) f.exposure = n->number();
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
@@ -174,15 +178,15 @@ void SceneParser::sampler(const JsonObject& o) {
   o.allow({"type", "spp", "seed", "adaptive"});
   SamplerDesc& s = scene_.sampler;
   if (auto n = o.get("type")) s.type = n->choice({"random", "jitter", "poisson", "sobol"});
-  if (auto n = o.get("spp")) s.spp = n->int_at_least(1);
-  if (auto n = o.get("seed")) s.seed = n->unsigned_integer();
+  if (auto n = o.get("spp")) s.spp = int(n->integer_in(kSppRange));
+  if (auto n = o.get("seed")) s.seed = n->integer_in(kSeedRange);
   if (auto n = o.get("adaptive")) {
     JsonObject a = n->object();
     a.allow({"min_spp", "max_spp", "threshold", "metric", "variance"});
     s.adaptive.enabled = true;
     auto min_n = a.get("min_spp"), max_n = a.get("max_spp");
-    if (min_n) s.adaptive.min_spp = min_n->int_at_least(1);
-    if (max_n) s.adaptive.max_spp = max_n->int_at_least(1);
+    if (min_n) s.adaptive.min_spp = int(min_n->integer_in(kSppRange));
+    if (max_n) s.adaptive.max_spp = int(max_n->integer_in(kSppRange));
     if (s.adaptive.max_spp < s.adaptive.min_spp) {
       std::string bound = "must be >= min_spp (" + std::to_string(s.adaptive.min_spp) + ")";
       if (max_n) max_n->fail_got(bound);
@@ -480,7 +484,10 @@ void SceneParser::load_objs() {
     ObjModel model = load_obj(p->path, p->material >= 0);
     scene_.degenerate_triangles += model.degenerate_triangles;
     if (model.parts.empty())
-      p->file.fail("has no triangles (all " + std::to_string(model.degenerate_triangles) + " skipped as degenerate)");
+      p->file.fail(json_quoted(p->file.string()) + " has no triangles" +
+                   (model.degenerate_triangles ? " (all " + std::to_string(model.degenerate_triangles) +
+                                                     " are degenerate)"
+                                               : " (no f lines)"));
     std::vector<ShapeDesc> shapes;
     for (ObjPart& part : model.parts) {
       ShapeDesc s = p->placement;
@@ -516,7 +523,7 @@ SceneDesc load_scene(const fs::path& file) {
   SceneDesc scene = parser.parse();
   scene.file = file;
   if (scene.degenerate_triangles > 0)
-    std::cerr << doc.name() << ": warning: skipped " << scene.degenerate_triangles << " degenerate triangle"
+    std::cerr << printable(doc.name()) << ": warning: skipped " << scene.degenerate_triangles << " degenerate triangle"
               << (scene.degenerate_triangles == 1 ? "" : "s") << "\n";
   return scene;
 }

@@ -106,18 +106,18 @@ void check_same_dim(std::span<const PointSet> sets, std::span<const std::string>
                        " has " + std::to_string(sets[0].dim) + " (all files must have the same dim)");
 }
 
-int resolve_resolution(std::span<const PointSet> sets, int requested) {
+int resolve_resolution(std::span<const PointSet> sets, std::optional<int> requested) {
   const int sd = spectral_dim_for(sets.front().dim);
-  if (requested == 0) {
+  if (!requested) {
     double mean = 0.0;
     for (const auto& s : sets) mean += double(s.size());
     return default_periodogram_resolution(sd, mean / double(sets.size()));
   }
   const int lo = min_periodogram_resolution(sd), hi = max_periodogram_resolution(sd);
-  if (requested < lo || requested > hi || requested % 2 != 0)
+  if (*requested < lo || *requested > hi || *requested % 2 != 0)
     throw UsageError("--resolution must be an even number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     " for " + std::to_string(sd) + "-D spectra, got " + std::to_string(requested));
-  return requested;
+                     " for " + std::to_string(sd) + "-D spectra, got " + std::to_string(*requested));
+  return *requested;
 }
 
 FileStats analyze_point_set(const PointSet& points, const std::string& name, bool periodic) {
@@ -141,7 +141,7 @@ FileStats analyze_point_set(const PointSet& points, const std::string& name, boo
 Analysis analyze_point_sets(std::span<const PointSet> sets, std::span<const std::string> names,
                             const AnalysisOptions& options) {
   Analysis a;
-  const int resolution = resolve_resolution(sets, options.resolution);
+  const int resolution = resolve_resolution(sets, options.resolution ? std::optional<int>(options.resolution) : std::nullopt);
   std::vector<FileStats> stats;
   for (std::size_t i = 0; i < sets.size(); ++i) stats.push_back(analyze_point_set(sets[i], names[i], options.periodic));
 

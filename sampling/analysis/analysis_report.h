@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,9 +23,9 @@ struct AnalysisOptions {
 // Throws InputError unless every set has the dim of the first (the message names the file).
 void check_same_dim(std::span<const PointSet> sets, std::span<const std::string> names);
 
-// The periodogram resolution to use; throws UsageError naming --resolution when the
-// requested one is odd or outside the limits for these sets.
-int resolve_resolution(std::span<const PointSet> sets, int requested);
+// The periodogram resolution to use (nullopt: the default for these sets); throws UsageError
+// naming --resolution when the requested one is odd or outside the limits for these sets.
+int resolve_resolution(std::span<const PointSet> sets, std::optional<int> requested);
 
 struct FileStats {
   std::string file;

@@ -3,6 +3,7 @@
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/text_writer.h"
+#include "sampling/core/input_file.h"
 #include "sampling/generators/generator.h"
 
 #include <charconv>
@@ -56,9 +57,8 @@ std::vector<std::string> split(const std::string& s) {
 }  // namespace
 
 PointSet read_point_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  std::ifstream in = open_for_reading(path, std::ios::in);
   const std::string name = path.string();
-  if (!in) throw InputError(name + ": cannot open for reading");
   std::string line;
   if (!std::getline(in, line) || split(line).empty() || (split(line).size() == 1 && split(line)[0].empty()))
     throw InputError(name + ":1: empty file, expected a header x0,x1,...[,radius]");

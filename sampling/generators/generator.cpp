@@ -107,8 +107,9 @@ void validate(const GeneratorParams& p) {
     throw UsageError("--magnification must be a finite number >= 0, got " + fmt(*p.magnification));
   if (p.start_radius && !(std::isfinite(*p.start_radius) && *p.start_radius > 0.0))
     throw UsageError("--start-radius must be > 0, got " + fmt(*p.start_radius));
-  if (p.lloyd_iterations < 0 || p.lloyd_iterations > 10000)
-    throw UsageError("--iterations must be between 0 and 10000, got " + std::to_string(p.lloyd_iterations));
+  if (p.lloyd_iterations < 0 || !kLloydIterationsRange.contains(uint64_t(p.lloyd_iterations)))
+    throw UsageError("--iterations must be an integer in " + kLloydIterationsRange.str() + ", got " +
+                     std::to_string(p.lloyd_iterations));
 }
 
 PointSet generate(const GeneratorParams& p) {

@@ -4,6 +4,7 @@
 // in generation order, plus each point's radius at placement where the method has one.
 // "radius" is always the minimum distance between points (Gamito–Maddock's r is half of it);
 // periodic means toroidal distance on the unit cube.
+#include "sampling/core/int_range.h"
 #include "sampling/core/point_set.h"
 
 #include <cstdint>
@@ -14,6 +15,7 @@
 namespace pdrt {
 
 inline constexpr int kMaxDim = 8;
+inline constexpr IntRange kLloydIterationsRange{0, 10000};
 
 struct GeneratorParams {
   std::string method = "gamito";

@@ -5,6 +5,7 @@
 #include "sampling/generators/balanced_relaxation_1d.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/hash.h"
+#include "sampling/core/input_file.h"
 #include "sampling/generators/generator.h"
 #include "sampling/analysis/min_distance.h"
 #include "sampling/core/progress.h"
@@ -227,8 +228,7 @@ void write_table(const std::filesystem::path& path, const SampleTable& t) {
 
 SampleTable read_table(const std::filesystem::path& path, const Family* expected) {
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name + ": cannot open table file");
+  std::ifstream in = open_for_reading(path);
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string data = ss.str();
@@ -240,12 +240,6 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   if (version != kTableVersion)
     r.fail("table format version " + std::to_string(version) + ", this pdrt reads version " +
            std::to_string(kTableVersion) + "; regenerate with `pdrt tables`");
-  if (data.size() < 8 + 8) r.fail("truncated: no checksum");
-  uint64_t stored;
-  std::memcpy(&stored, data.data() + data.size() - 8, 8);
-  if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored)
-    r.fail("checksum mismatch: the file is truncated or corrupted");
-
   SampleTable t;
   uint8_t family = r.get<uint8_t>("the header");
   if (family >= kFamilyCount) r.fail("unknown family " + std::to_string(family));
@@ -265,9 +259,25 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   t.params.attempts = r.get<double>("the header");
   t.params.magnification = r.get<double>("the header");
   const bool pixel = t.params.family == Family::Pixel;
-  if (tables == 0 || t.params.tile == 0 || (pixel && t.params.tile > 4096) || (!pixel && t.params.tile != 1))
-    r.fail("bad table header (tables " + std::to_string(tables) + ", tile " + std::to_string(t.params.tile) + ")");
+  // Each header field on its own, before the checksum, so a damaged header says which field is wrong.
+  if (tables == 0) r.fail("header field tables is 0");
+  if (t.params.tile == 0 || (pixel && t.params.tile > 4096) || (!pixel && t.params.tile != 1))
+    r.fail("header field tile is " + std::to_string(t.params.tile) + ", expected " +
+           (pixel ? "1 to 4096 for the pixel family" : "1 for this family"));
   const std::size_t cells = std::size_t(t.params.tile) * t.params.tile;
+  // The smallest file the header allows: per table its count, then the pixel index, or
+  // `points` coordinates and radii (pixel tables hold a variable count).
+  const double per_table = 4.0 + (pixel ? 8.0 * double(cells) : double(t.params.points) * (4.0 * t.dim + 4.0));
+  const double least = double(r.pos()) + double(tables) * per_table + 8.0;
+  if (least > double(data.size()))
+    r.fail("header says " + std::to_string(tables) + " tables" +
+           (pixel ? " of " + std::to_string(t.params.tile) + "x" + std::to_string(t.params.tile) + " pixels"
+                  : " of " + std::to_string(t.params.points) + " points") +
+           ", which needs at least " + std::to_string(uint64_t(least)) + " bytes; the file has " +
+           std::to_string(data.size()) + " (header field tables or points is wrong, or the file is truncated)");
+  uint64_t stored;
+  std::memcpy(&stored, data.data() + data.size() - 8, 8);
+  if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");
   t.coords.resize(tables);
   t.radius.resize(tables);
   if (pixel) t.cell_start.resize(tables), t.cell_count.resize(tables);

@@ -404,7 +404,7 @@ TEST_F(SceneLoader, ZeroResolution) {
   "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
   "film": {"width": 0, "height": 8}
 })");
-  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer >= 1, got 0");
+  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer in [1, 65536], got 0");
 }
 
 TEST_F(SceneLoader, NegativeResolution) {
@@ -412,7 +412,7 @@ TEST_F(SceneLoader, NegativeResolution) {
   "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
   "film": {"width": 8, "height": -4}
 })");
-  EXPECT_ERROR(f, "s.json:3:34: film.height must be an integer >= 1, got -4");
+  EXPECT_ERROR(f, "s.json:3:34: film.height must be an integer in [1, 65536], got -4");
 }
 
 TEST_F(SceneLoader, FractionalResolution) {
@@ -420,7 +420,7 @@ TEST_F(SceneLoader, FractionalResolution) {
   "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
   "film": {"width": 8.5, "height": 8}
 })");
-  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer, got 8.5");
+  EXPECT_ERROR(f, "s.json:3:21: film.width must be an integer in [1, 65536], got 8.5");
 }
 
 TEST_F(SceneLoader, ZeroLengthUpVector) {
@@ -654,13 +654,13 @@ TEST_F(SceneLoader, ObjMalformedFaceVertex) {
 TEST_F(SceneLoader, ByteOrderMarkIgnored) {
   fs::path f = scene("\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
                      " \"film\": {\"width\": 8, \"height\": 0}}");
-  EXPECT_ERROR(f, "s.json:2:33: film.height must be an integer >= 1, got 0");
+  EXPECT_ERROR(f, "s.json:2:33: film.height must be an integer in [1, 65536], got 0");
 }
 
 TEST_F(SceneLoader, AllDegenerateObjIsError) {
   fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"all-degenerate.obj\"}]\n}\n",
                      {"all-degenerate.obj"});
-  EXPECT_ERROR(f, "s.json:4:39: objects[0].file has no triangles (all 1 skipped as degenerate)");
+  EXPECT_ERROR(f, "s.json:4:39: objects[0].file \"all-degenerate.obj\" has no triangles (all 1 are degenerate)");
 }
 
 // --- JSON locations -----------------------------------------------------------------------
@@ -681,4 +681,98 @@ TEST(JsonLocations, ColumnsCountCharactersNotBytes) {
   auto k = at.key("materials[\"caf\xC3\xA9\"]");
   ASSERT_TRUE(k);
   EXPECT_EQ(k->col, 16);
+}
+
+// --- bad input: hostile nesting, bytes and OBJ files -------------------------------------
+
+namespace {
+std::string nested_arrays(size_t depth, bool closed) {
+  std::string s(depth, '[');
+  if (closed) s += "1" + std::string(depth, ']');
+  return s;
+}
+}  // namespace
+
+TEST_F(SceneLoader, DeeplyNestedValueIsRefusedAtTheLimitNotCrashing) {
+  // 10^5 levels at camera.position used to overflow the stack while formatting "got <value>".
+  fs::path f = scene("{\n  \"camera\": {\"position\": " + nested_arrays(100000, true) +
+                     ", \"look_at\": [0, 0, 0]},\n  \"film\": {\"width\": 8, \"height\": 8}\n}\n");
+  // Depth 1 is the top-level object, 2 camera, 3 the outer '[' at column 26; depth 65 is the
+  // 63rd '[' (column 26 + 62).
+  EXPECT_ERROR(f, "s.json:2:88: JSON nested deeper than 64 levels");
+}
+
+TEST_F(SceneLoader, MillionDeepDocumentIsRefusedWhetherClosedOrNot) {
+  for (bool closed : {true, false}) {
+    fs::path f = scene(nested_arrays(1000000, closed));
+    EXPECT_ERROR(f, "s.json:1:65: JSON nested deeper than 64 levels");
+  }
+}
+
+TEST_F(SceneLoader, NestingAtTheLimitIsParsedAndReportedShortly) {
+  // 64 levels are accepted by the parser; the value is then wrong, and its rendering is short.
+  fs::path f = scene("{\n  \"camera\": {\"position\": " + nested_arrays(62, true) +
+                     ", \"look_at\": [0, 0, 0]},\n  \"film\": {\"width\": 8, \"height\": 8}\n}\n");
+  std::string m = load_error(f);
+  EXPECT_NE(m.find("camera.position must be an array of 3 numbers, got [[[[...]]]]"), std::string::npos) << m;
+  EXPECT_LT(m.size(), 200u) << m;
+}
+
+TEST_F(SceneLoader, SyntaxErrorBeforeTheDepthLimitIsReportedFirst) {
+  fs::path f = scene("{\"camera\": tru, \"x\": " + nested_arrays(1000, false));
+  EXPECT_ERROR(f, "s.json:1:15: JSON syntax error");
+}
+
+TEST_F(SceneLoader, BracketsInsideStringsDoNotCountAsNesting) {
+  fs::path f = scene(kHead + "  \"materials\": {\"" + std::string(200, '[') + "\": {\"type\": \"diffuse\"}}\n}\n");
+  EXPECT_NO_THROW(load_scene(f));
+}
+
+TEST_F(SceneLoader, LongValuesAreAbbreviatedInMessages) {
+  std::string big = "[";
+  for (int i = 0; i < 100000; ++i) big += (i ? ",\"" : "\"") + std::to_string(i) + "\"";
+  big += "]";
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"sphere\", \"radius\": 1, \"material\": " + big + "}]\n}\n");
+  std::string m = load_error(f);
+  EXPECT_NE(m.find("must be a string, got [\"0\",\"1\""), std::string::npos) << m;
+  EXPECT_NE(m.find("..."), std::string::npos) << m;
+  EXPECT_LT(m.size(), 200u) << m;
+}
+
+TEST_F(SceneLoader, InvalidUtf8IsEscapedInMessages) {
+  fs::path f = scene("{\n  \"camera\": \xFF\xFE\x1B[31m\n}\n");
+  std::string m = load_error(f);
+  EXPECT_NE(m.find("s.json:2:13: JSON syntax error"), std::string::npos) << m;
+  for (char c : m) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7F) << m;
+  EXPECT_NE(m.find("\\xFF"), std::string::npos) << m;
+}
+
+TEST_F(SceneLoader, EmptyObjIsNamedAndCalledEmpty) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"e.obj\"}]\n}\n");
+  write(f.parent_path() / "e.obj", "");
+  std::string m = load_error(f);
+  EXPECT_NE(m.find("e.obj: empty file"), std::string::npos) << m;
+}
+
+TEST_F(SceneLoader, BinaryObjIsNamedAndCalledNotText) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"b.obj\"}]\n}\n");
+  write(f.parent_path() / "b.obj", std::string("v 0 0 0\n\x7F" "ELF\x02\x01\x01\0\0\0", 16));
+  std::string m = load_error(f);
+  EXPECT_NE(m.find("b.obj:2: not a text file (control byte 0x7F)"), std::string::npos) << m;
+}
+
+TEST_F(SceneLoader, ObjWithoutFacesSaysSo) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"v.obj\"}]\n}\n");
+  write(f.parent_path() / "v.obj", "v 0 0 0\nv 1 0 0\n");
+  EXPECT_ERROR(f, "objects[0].file \"v.obj\" has no triangles (no f lines)");
+}
+
+TEST_F(SceneLoader, SppAboveTheSharedLimitIsRefused) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"spp\": 16777217}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:22: sampler.spp must be an integer in [1, 16777216], got 16777217");
+}
+
+TEST_F(SceneLoader, NegativeSeedIsRefusedWithTheRange) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"seed\": -1}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:23: sampler.seed must be an integer in [0, 18446744073709551615], got -1");
 }

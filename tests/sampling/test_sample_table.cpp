@@ -221,3 +221,28 @@ TEST(AnalyzeTableCli, RefusesCorruptTableWithoutOutput) {
 
 }  // namespace
 }  // namespace pdrt
+
+namespace pdrt {
+namespace {
+
+// A damaged header names the field, not just "checksum mismatch".
+TEST(SampleTable, RefusesImpossibleTableCountByName) {
+  expect_refused([](std::string& b) { b[16] = b[17] = b[18] = b[19] = char(0xFF); }, "header says 4294967295 tables");
+}
+TEST(SampleTable, RefusesZeroTableCountByName) {
+  expect_refused([](std::string& b) { b[16] = b[17] = b[18] = b[19] = 0; }, "header field tables is 0");
+}
+TEST(SampleTable, RefusesWrongDimensionByName) {
+  expect_refused([](std::string& b) { b[13] = 7; }, "dimension 7 does not match its family");
+}
+TEST(SampleTable, RefusesDirectoryWithTheReason) {
+  EXPECT_THROW(
+      try { read_table(std::filesystem::temp_directory_path()); } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("Is a directory"), std::string::npos) << e.what();
+        throw;
+      },
+      InputError);
+}
+
+}  // namespace
+}  // namespace pdrt

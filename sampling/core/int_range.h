@@ -1,0 +1,15 @@
+#pragma once
+// A closed range of non-negative integers: the one definition of what a count, size or seed
+// may be, shared by the command line and the files that set the same value.
+#include <cstdint>
+#include <string>
+
+namespace pdrt {
+
+struct IntRange {
+  uint64_t lo, hi;
+  bool contains(uint64_t v) const { return v >= lo && v <= hi; }
+  std::string str() const { return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; }
+};
+
+}  // namespace pdrt

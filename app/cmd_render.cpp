@@ -142,13 +142,12 @@ void add_render_command(CLI::App& app) {
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
 
+    // Ctrl-C from here on gives the partial image, even while the image module loads.
+    auto previous = std::signal(SIGINT, on_sigint);
+    require_image_io();  // the last check: a missing module is refused before anything is said or rendered
     if (!o->quiet)
       std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
                    format_sample_cost(scene_sample_count(scene)).c_str());
-
-    // Ctrl-C from here on gives the partial image, even while the image module loads.
-    auto previous = std::signal(SIGINT, on_sigint);
-    require_image_io();
 
     auto sampler = make_scene_sampler(scene.sampler);
     RenderOptions ro;

@@ -10,11 +10,6 @@ using namespace pdrt::test;
 
 namespace {
 
-double mean_rgb(const Image& im, int x, int y) {
-  std::size_t i = 3 * (std::size_t(y) * im.width + x);
-  return (im.rgb[i] + im.rgb[i + 1] + im.rgb[i + 2]) / 3.0;
-}
-
 double image_mean(const Image& im) {
   double sum = 0;
   for (int y = 0; y < im.height; ++y)

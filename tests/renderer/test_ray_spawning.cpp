@@ -15,11 +15,6 @@ using namespace pdrt::test;
 
 namespace {
 
-double mean_rgb(const Image& im, int x, int y) {
-  std::size_t i = 3 * (std::size_t(y) * im.width + x);
-  return (im.rgb[i] + im.rgb[i + 1] + im.rgb[i + 2]) / 3.0;
-}
-
 // Placement of a whole scene: p -> offset + scale p.
 struct Placement {
   Vec3 offset;

@@ -17,11 +17,6 @@ using namespace pdrt::test;
 
 namespace {
 
-double mean_rgb(const Image& im, int x, int y) {
-  std::size_t i = 3 * (std::size_t(y) * im.width + x);
-  return (im.rgb[i] + im.rgb[i + 1] + im.rgb[i + 2]) / 3.0;
-}
-
 // Form factor from a point to the rectangle [0,x]x[0,y] at height h whose corner is
 // straight above the point (parallel planes), extended to signed extents.
 double corner_form_factor(double x, double y, double h) {

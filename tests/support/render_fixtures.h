@@ -68,6 +68,12 @@ inline SceneDesc base_scene(int width, int height, int spp) {
   return s;
 }
 
+// Mean of the three channels of pixel (x, y).
+inline double mean_rgb(const Image& im, int x, int y) {
+  std::size_t i = 3 * (std::size_t(y) * im.width + x);
+  return (im.rgb[i] + im.rgb[i + 1] + im.rgb[i + 2]) / 3.0;
+}
+
 inline RenderResult render_quietly(const SceneDesc& s, int threads = 0) {
   auto sampler = make_scene_sampler(s.sampler);
   RenderOptions o;

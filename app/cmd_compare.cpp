@@ -28,7 +28,7 @@ void add_compare_command(CLI::App& app) {
     int reference_spp = 4096, threads = 0;
     double adaptive_threshold = 0;
     int adaptive_target_spp = 64;
-    std::string adaptive_metric, adaptive_variance;
+    std::string adaptive_metric, adaptive_variance, adaptive_decision;
     bool adaptive = false, quiet = false, no_plots = false, allow_long = false;
   };
   auto o = std::make_shared<Opts>();
@@ -44,6 +44,7 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--adaptive-metric", o->adaptive_metric,
                   "error-per-sample | relative-error | contrast (default: the scene's)");
   cmd->add_option("--adaptive-variance", o->adaptive_variance, "samples | halves (default: the scene's)");
+  cmd->add_option("--adaptive-decision", o->adaptive_decision, "shared | split (default: the scene's)");
   add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
                      "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
       ->default_str("64");
@@ -71,6 +72,7 @@ void add_compare_command(CLI::App& app) {
     c.adaptive_threshold = o->adaptive_threshold;
     c.adaptive_metric = o->adaptive_metric;
     c.adaptive_variance = o->adaptive_variance;
+    c.adaptive_decision = o->adaptive_decision;
     c.adaptive_target_spp = o->adaptive_target_spp;
     c.reference_spp = o->reference_spp;
     c.threads = o->threads;

@@ -68,7 +68,7 @@ void add_render_command(CLI::App& app) {
     std::optional<uint64_t> seed;
     std::optional<int> min_spp, max_spp;
     std::optional<double> threshold;
-    std::string metric, variance;
+    std::string metric, variance, decision;
     int threads = 0;
     bool quiet = false, adaptive = false, allow_long = false;
   };
@@ -97,6 +97,8 @@ void add_render_command(CLI::App& app) {
   add_real_option(cmd, "--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
   cmd->add_option("--adaptive-metric", o->metric, "Adaptive: error-per-sample | relative-error | contrast");
   cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
+  cmd->add_option("--adaptive-decision", o->decision,
+                  "Adaptive: shared | split (split: odd samples decide, even samples estimate; unbiased)");
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
@@ -112,6 +114,7 @@ void add_render_command(CLI::App& app) {
       throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
     if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
     if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
+    if (!o->decision.empty()) require_adaptive_choice("--adaptive-decision", o->decision, kAdaptiveDecisions);
     for (std::size_t i = 0; i < o->outs.size(); ++i) {
       check_image_extension(o->outs[i]);
       for (std::size_t k = 0; k < i; ++k)
@@ -122,12 +125,13 @@ void add_render_command(CLI::App& app) {
     SceneDesc scene = load_scene(o->scene);
     AdaptiveDesc& ad = scene.sampler.adaptive;
     ad.enabled = ad.enabled || o->adaptive || o->min_spp || o->max_spp || o->threshold || !o->metric.empty() ||
-                 !o->variance.empty();
+                 !o->variance.empty() || !o->decision.empty();
     if (o->min_spp) ad.min_spp = *o->min_spp;
     if (o->max_spp) ad.max_spp = *o->max_spp;
     if (o->threshold) ad.threshold = *o->threshold;
     if (!o->metric.empty()) ad.metric = o->metric;
     if (!o->variance.empty()) ad.variance = o->variance;
+    if (!o->decision.empty()) ad.decision = o->decision;
     if (ad.enabled && ad.min_spp > ad.max_spp)
       throw UsageError("adaptive: min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" +
                        std::to_string(ad.max_spp) + ")");
@@ -137,7 +141,8 @@ void add_render_command(CLI::App& app) {
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
     check_film_memory(scene.film.width, scene.film.height,
-                      o->width || o->height ? "--width/--height" : scene.film.size_where);
+                      o->width || o->height ? "--width/--height" : scene.film.size_where,
+                      ad.enabled && ad.decision == "split" ? 2 : 1);
     check_sample_budget(scene_sample_count(scene), describe_sample_count(scene), o->allow_long);
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
@@ -167,7 +172,8 @@ void add_render_command(CLI::App& app) {
                    {"pdrt:partial", r.stats.partial ? "true" : "false"}};
     if (ad.enabled)
       md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
-                                         ", " + ad.metric + " " + std::to_string(effective_threshold(ad))});
+                                         ", " + ad.metric + " " + std::to_string(effective_threshold(ad)) +
+                                         ", decision " + ad.decision});
     // One render, every requested format; each file is written all-or-nothing.
     for (const auto& out : o->outs) write_image(out, r.image, md);
     if (!o->stats.empty()) {
@@ -188,7 +194,8 @@ void add_render_command(CLI::App& app) {
       if (ad.enabled)
         j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
                          {"metric", ad.metric},       {"threshold", effective_threshold(ad)},
-                         {"variance", ad.variance},   {"rounds", r.stats.adaptive_rounds}};
+                         {"variance", ad.variance},   {"decision", ad.decision},
+                         {"rounds", r.stats.adaptive_rounds}};
       j["triangles"] = r.stats.triangles;
       j["threads"] = r.stats.threads;
       j["partial"] = r.stats.partial;

@@ -113,6 +113,8 @@ void validate_compare_options(const CompareOptions& o) {
   if (!o.adaptive_metric.empty()) require_adaptive_choice("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
   if (!o.adaptive_variance.empty())
     require_adaptive_choice("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
+  if (!o.adaptive_decision.empty())
+    require_adaptive_choice("--adaptive-decision", o.adaptive_decision, kAdaptiveDecisions);
   if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
   if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
     throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +
@@ -323,6 +325,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       ad.max_spp = std::max(ad.min_spp, o.spp.back());
       if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
       if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
+      if (!o.adaptive_decision.empty()) ad.decision = o.adaptive_decision;
       const double base_threshold = o.adaptive_threshold > 0 ? o.adaptive_threshold : effective_threshold(ad);
       std::vector<double> x, y;
       const Run* at_target = nullptr;

@@ -17,6 +17,7 @@ struct CompareOptions {
   double adaptive_threshold = 0;    // > 0: the centre of the threshold sweep (else the scene's, else the metric's default)
   std::string adaptive_metric;      // non-empty overrides the metric
   std::string adaptive_variance;    // non-empty overrides the variance estimator
+  std::string adaptive_decision;    // non-empty overrides the decision (shared | split)
   int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
   int reference_spp = 4096;
   std::string reference_sampler = "sobol";

@@ -13,6 +13,7 @@ namespace pdrt {
 inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-per-sample", "relative-error",
                                                                         "contrast"};
 inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
+inline constexpr std::initializer_list<const char*> kAdaptiveDecisions = {"shared", "split"};
 
 // Throws UsageError "`flag` must be one of a, b, c, got "value"" unless `value` is a name.
 void require_adaptive_choice(const std::string& flag, const std::string& value,

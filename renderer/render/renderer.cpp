@@ -29,8 +29,8 @@ std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) {
   return make_sampler(d.type, d.seed);
 }
 
-void check_film_memory(int width, int height, const std::string& where) {
-  double need = double(width) * double(height) * double(Film::kBytesPerPixel);
+void check_film_memory(int width, int height, const std::string& where, int films) {
+  double need = double(width) * double(height) * double(Film::kBytesPerPixel) * films;
   double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (need > 0.75 * have) {
     char buf[200];
@@ -54,7 +54,10 @@ struct PixelRenderer {
   // packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is, because
   // packet and single-ray kernels may differ in the last bit; so a pixel's samples are the
   // same whether it is rendered at once or over adaptive rounds.
-  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelSampleState& ps) const {
+  // With `decide` (decision "split"), odd samples go there and only even samples to `acc`;
+  // each set's `halves` buffers then split it by (i >> 1) parity.
+  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelAccum* decide,
+              PixelSampleState& ps) const {
     int64_t rays = 0;
     for (int64_t g = begin & ~int64_t(3); g < end; g += 4) {
       Ray ray[4];
@@ -79,7 +82,8 @@ struct PixelRenderer {
         }
         ps.start_pixel_sample(x, y, i);
         PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
-        acc.add(pr.radiance, w[k], pr.albedo, pr.normal, pr.depth, int(i & 1));  // drops NaN / inf
+        PixelAccum& dst = decide && (i & 1) ? *decide : acc;
+        dst.add(pr.radiance, w[k], pr.albedo, pr.normal, pr.depth, int(decide ? (i >> 1) & 1 : i & 1));  // drops NaN / inf
         rays += pr.rays;
       }
     }
@@ -91,7 +95,9 @@ struct PixelRenderer {
 }  // namespace
 
 RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
-  check_film_memory(desc.film.width, desc.film.height, desc.film.size_where);
+  const AdaptiveDesc& ad = desc.sampler.adaptive;
+  const bool split = ad.enabled && ad.decision == "split";
+  check_film_memory(desc.film.width, desc.film.height, desc.film.size_where, split ? 2 : 1);
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
   auto t0 = std::chrono::steady_clock::now();
@@ -103,6 +109,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);
   Film film(desc.film.width, desc.film.height);
+  // Kirk & Arvo (1991): samples that chose when a pixel stops bias its estimate, so with
+  // "split" they are kept apart from the image and only decide.
+  Film decision(split ? desc.film.width : 0, split ? desc.film.height : 0);
+  const Film& judged = split ? decision : film;
   // Rank selection ranks against the full sample budget of a pixel (max_spp when adaptive).
   const int rank_n = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
   PixelRenderer pr{camera, scene, integrator, {filter, desc.film.filter.rank_selection, rank_n}};
@@ -131,7 +141,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
           for (int x = x0; x < x1; ++x) {
             PixelAccum& acc = film.at(x, y);
             int64_t end = end_of(x, y);
-            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc, ps);
+            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc, split ? &decision.at(x, y) : nullptr, ps);
           }
         progress.advance();
       }
@@ -140,7 +150,6 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     return !cancelled;
   };
 
-  const AdaptiveDesc& ad = desc.sampler.adaptive;
   int rounds = 0;
   if (!ad.enabled) {
     pass("render", [&](int, int) { return int64_t(desc.sampler.spp); });
@@ -156,7 +165,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         // Rows in parallel, then summed in order: the same mean at any thread count.
         tbb::parallel_for(0, H, [&](int y) {
           double s = 0;
-          for (int x = 0; x < W; ++x) s += film.at(x, y).mean_luminance();
+          for (int x = 0; x < W; ++x) s += judged.at(x, y).mean_luminance();
           row_mean[y] = s / W;
         });
         double s = 0;
@@ -164,7 +173,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         metric.set_image_mean(s / H);
       }
       tbb::parallel_for(0, H, [&](int y) {
-        for (int x = 0; x < W; ++x) bad[std::size_t(y) * W + x] = !metric.converged(film.at(x, y));
+        for (int x = 0; x < W; ++x) bad[std::size_t(y) * W + x] = !metric.converged(judged.at(x, y));
       });
       int64_t n_active = 0;
       for (int y = 0; y < H; ++y)
@@ -198,7 +207,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   for (int64_t r : rays) res.stats.rays += r;
   for (float s : res.image.samples) res.stats.samples += int64_t(s);
   for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) res.stats.nonfinite_samples += film.at(x, y).dropped;
+    for (int x = 0; x < W; ++x) {
+      res.stats.nonfinite_samples += film.at(x, y).dropped;
+      if (split) res.stats.nonfinite_samples += decision.at(x, y).dropped, res.stats.samples += decision.at(x, y).samples;
+    }
   res.stats.samples += res.stats.nonfinite_samples;  // traced, whether or not they counted
   if (res.stats.nonfinite_samples > 0 && !opt.quiet)
     std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",

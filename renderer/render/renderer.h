@@ -42,7 +42,8 @@ std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d);
 
 // Refuses (InputError) a film whose buffers would not fit in this machine's memory; the
 // message starts with `where` (the scene's film.width location, or the options that set it).
-void check_film_memory(int width, int height, const std::string& where = "film");
+// `films`: 2 when adaptive decision "split" keeps a second film of decision samples.
+void check_film_memory(int width, int height, const std::string& where = "film", int films = 1);
 
 RenderResult render(const SceneDesc& scene, const Sampler& sampler, const RenderOptions& options);
 

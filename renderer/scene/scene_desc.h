@@ -49,6 +49,9 @@ struct AdaptiveDesc {
   float threshold = 0;  // 0 = the metric's own default (adaptive_metric.h)
   std::string metric = "error-per-sample";  // error-per-sample | relative-error | contrast
   std::string variance = "samples";         // samples | halves: how the mean's variance is estimated
+  // shared: every sample both decides and estimates (Kirk-Arvo biased); split: odd samples
+  // decide, even samples estimate (unbiased, half the samples in the image).
+  std::string decision = "shared";
 };
 
 struct SamplerDesc {

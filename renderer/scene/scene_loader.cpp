@@ -182,7 +182,7 @@ void SceneParser::sampler(const JsonObject& o) {
   if (auto n = o.get("seed")) s.seed = n->integer_in(kSeedRange);
   if (auto n = o.get("adaptive")) {
     JsonObject a = n->object();
-    a.allow({"min_spp", "max_spp", "threshold", "metric", "variance"});
+    a.allow({"min_spp", "max_spp", "threshold", "metric", "variance", "decision"});
     s.adaptive.enabled = true;
     auto min_n = a.get("min_spp"), max_n = a.get("max_spp");
     if (min_n) s.adaptive.min_spp = int(min_n->integer_in(kSppRange));
@@ -195,6 +195,7 @@ void SceneParser::sampler(const JsonObject& o) {
     if (auto t = a.get("threshold")) s.adaptive.threshold = t->positive();
     if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetrics);
     if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVariances);
+    if (auto d = a.get("decision")) s.adaptive.decision = d->choice(kAdaptiveDecisions);
   }
 }
 

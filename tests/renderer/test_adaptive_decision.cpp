@@ -18,7 +18,7 @@ constexpr float kLe = 1.0f;
 constexpr double kCoverage = 1.0 / 64;
 
 // Every pixel sees a centred emitter square 1/8 of its side (1/64 of its area), away from the origin.
-SceneDesc subpixel_emitters(const char* decision, uint64_t seed) {
+SceneDesc subpixel_emitters(const char* decision, uint64_t seed, const char* sampler_type = "random") {
   SceneDesc s = base_scene(kSize, kSize, 4);
   const Vec3 c{7, -3, 2};
   const float D = 5, vfov = 30;
@@ -31,6 +31,7 @@ SceneDesc subpixel_emitters(const char* decision, uint64_t seed) {
       s.shapes.push_back(quad({X - e / 2, Y - e / 2, c.z}, {e, 0, 0}, {0, e, 0}, m));
     }
   s.sampler.seed = seed;
+  s.sampler.type = sampler_type;
   s.sampler.adaptive.enabled = true;
   s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 256;
   s.sampler.adaptive.decision = decision;

@@ -99,6 +99,7 @@ TEST(CliRender, BadArgumentsAreRefusedBeforeRendering) {
       {"--adaptive-threshold -1", "--adaptive-threshold", 2},
       {"--adaptive-metric foo", "foo", 2},
       {"--adaptive-variance foo", "foo", 2},
+      {"--adaptive-decision foo", "--adaptive-decision must be one of shared, split, got \"foo\"", 2},
       {"--min-spp 8 --max-spp 4", "min_spp", 2},
   };
   for (const auto& c : cases) {
@@ -287,7 +288,8 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   fs::path d = scratch_dir("compare_bad");
   fs::path scene = write_scene(d);
   for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
-                        "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive --adaptive-target-spp 3"}) {
+                        "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive-decision foo",
+                        "--adaptive --adaptive-target-spp 3"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
     EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;

@@ -277,6 +277,18 @@ TEST_F(SceneLoader, UnknownAdaptiveVariance) {
   EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.variance must be one of samples, halves, got \"pixels\"");
 }
 
+TEST_F(SceneLoader, AdaptiveDecisionSplit) {
+  SceneDesc s = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {\"decision\": \"split\"}}\n}\n"));
+  EXPECT_EQ(s.sampler.adaptive.decision, "split");
+  SceneDesc d = load_scene(scene(kHead + "  \"sampler\": {\"adaptive\": {}}\n}\n"));
+  EXPECT_EQ(d.sampler.adaptive.decision, "shared");
+}
+
+TEST_F(SceneLoader, UnknownAdaptiveDecision) {
+  fs::path f = scene(kHead + "  \"sampler\": {\"adaptive\": {\"decision\": \"halves\"}}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.decision must be one of shared, split, got \"halves\"");
+}
+
 TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {
   SceneDesc s = load_scene(scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
   "objects": [{"type": "quad", "material": "grey", "corner": [1, 2, 3], "edge1": [2, 0, 0], "edge2": [0, 3, 0]}]

@@ -28,7 +28,7 @@ void add_compare_command(CLI::App& app) {
     int reference_spp = 4096, threads = 0;
     double adaptive_threshold = 0;
     int adaptive_target_spp = 64;
-    std::string adaptive_metric, adaptive_variance, adaptive_decision;
+    std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
     bool adaptive = false, quiet = false, no_plots = false, allow_long = false;
   };
   auto o = std::make_shared<Opts>();
@@ -45,6 +45,8 @@ void add_compare_command(CLI::App& app) {
                   "error-per-sample | relative-error | contrast (default: the scene's)");
   cmd->add_option("--adaptive-variance", o->adaptive_variance, "samples | halves (default: the scene's)");
   cmd->add_option("--adaptive-decision", o->adaptive_decision, "shared | split (default: the scene's)");
+  cmd->add_option("--reconstruction", o->reconstruction,
+                  "importance | splat | rank, for every render and the reference (default: the scene's)");
   add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
                      "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
       ->default_str("64");
@@ -82,6 +84,9 @@ void add_compare_command(CLI::App& app) {
     c.scene_label = o->scene;
     require_output_path("-o/--out", o->out);
     validate_compare_options(c);
+    Reconstruction recon{};
+    if (!o->reconstruction.empty() && !parse_reconstruction(o->reconstruction, &recon))
+      throw UsageError("--reconstruction: unknown mode \"" + o->reconstruction + "\" (importance, splat, rank)");
     std::string python;
     if (!o->no_plots) python = find_plot_python();
 
@@ -92,6 +97,10 @@ void add_compare_command(CLI::App& app) {
       ss << in.rdbuf();
       c.scene_content = ss.str();
     }
+    if (!o->reconstruction.empty()) scene.film.filter.reconstruction = recon;
+    const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;
+    if (c.adaptive && decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
+      throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
     check_film_memory(scene.film.width, scene.film.height,

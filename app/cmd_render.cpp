@@ -68,7 +68,7 @@ void add_render_command(CLI::App& app) {
     std::optional<uint64_t> seed;
     std::optional<int> min_spp, max_spp;
     std::optional<double> threshold;
-    std::string metric, variance, decision;
+    std::string metric, variance, decision, reconstruction;
     int threads = 0;
     bool quiet = false, adaptive = false, allow_long = false;
   };
@@ -87,6 +87,8 @@ void add_render_command(CLI::App& app) {
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
   add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height in pixels (overrides film.height)");
   cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
+  cmd->add_option("--reconstruction", o->reconstruction,
+                  "importance | splat | rank: how samples become pixels (overrides film.filter.reconstruction)");
   cmd->add_flag("--adaptive", o->adaptive,
                 "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
                 "--max-spp option turns it on too)");
@@ -115,6 +117,9 @@ void add_render_command(CLI::App& app) {
     if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
     if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
     if (!o->decision.empty()) require_adaptive_choice("--adaptive-decision", o->decision, kAdaptiveDecisions);
+    Reconstruction recon{};
+    if (!o->reconstruction.empty() && !parse_reconstruction(o->reconstruction, &recon))
+      throw UsageError("--reconstruction: unknown mode \"" + o->reconstruction + "\" (importance, splat, rank)");
     for (std::size_t i = 0; i < o->outs.size(); ++i) {
       check_image_extension(o->outs[i]);
       for (std::size_t k = 0; k < i; ++k)
@@ -135,6 +140,9 @@ void add_render_command(CLI::App& app) {
     if (ad.enabled && ad.min_spp > ad.max_spp)
       throw UsageError("adaptive: min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" +
                        std::to_string(ad.max_spp) + ")");
+    if (!o->reconstruction.empty()) scene.film.filter.reconstruction = recon;
+    if (ad.enabled && ad.decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
+      throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
     if (o->spp) scene.sampler.spp = *o->spp;
     if (!o->sampler.empty()) scene.sampler.type = o->sampler;
     if (o->seed) scene.sampler.seed = *o->seed;
@@ -167,6 +175,7 @@ void add_render_command(CLI::App& app) {
                    {"pdrt:scene", o->scene},
                    {"pdrt:sampler", scene.sampler.type},
                    {"pdrt:spp", std::to_string(scene.sampler.spp)},
+                   {"pdrt:reconstruction", reconstruction_name(scene.film.filter.reconstruction)},
                    {"pdrt:seed", std::to_string(scene.sampler.seed)},
                    {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
                    {"pdrt:partial", r.stats.partial ? "true" : "false"}};
@@ -184,6 +193,7 @@ void add_render_command(CLI::App& app) {
       j["width"] = scene.film.width;
       j["height"] = scene.film.height;
       j["spp"] = scene.sampler.spp;
+      j["reconstruction"] = reconstruction_name(scene.film.filter.reconstruction);
       j["seconds"] = r.stats.seconds;
       j["rays"] = r.stats.rays;
       j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;

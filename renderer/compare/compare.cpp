@@ -153,7 +153,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   rs.sampler.adaptive.enabled = false;
   std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
-                         std::to_string(rs.sampler.seed) + "|" + PDRT_VERSION + "|samplers-v2";  // bump when sampler output changes
+                         std::to_string(rs.sampler.seed) + "|" + reconstruction_name(rs.film.filter.reconstruction) + "|" +
+                         PDRT_VERSION + "|samplers-v3";  // bump when sampler output changes
   char key[32];
   std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
   fs::path cache = (o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir) / (std::string("ref-") + key + ".exr");

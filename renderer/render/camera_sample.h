@@ -1,6 +1,6 @@
 #pragma once
-// The camera-sample step (pbrt-v4's GetCameraSample): the pixel-filter offset, the shutter
-// time and the lens point of one sample, drawn in that order from the pixel's sampler state.
+// The camera-sample step (pbrt-v4's GetCameraSample): the film point, the shutter time and
+// the lens point of one sample, drawn in that order from the pixel's sampler state.
 #include "renderer/render/filter.h"
 #include "sampling/samplers/sampler.h"
 
@@ -9,22 +9,28 @@
 namespace pdrt {
 
 struct CameraSample {
-  float film_x = 0, film_y = 0;  // film point in pixels: pixel centre plus the filter offset
-  float weight = 0;              // filter weight (divided by the kept density under rank selection)
+  float film_x = 0, film_y = 0;  // film point in pixels
+  float weight = 0;              // the sample's weight in its own pixel (1 under splatting)
   float time = 0;                // fraction of the shutter, [0, 1)
   Vec2 lens{};                   // lens sample, [0, 1)^2
 };
 
-// How a pixel's samples are filtered: by weight, or (McCool–Fiume §5.2) kept by rank against
-// the filter among the pixel's `rank_budget` samples.
+// How a pixel's samples become film points (FilterDesc::reconstruction). Under rank selection
+// a pixel's budget of n samples is n / mean_keep() candidates, so that n are traced on average;
+// `rank_candidates` are those of the prefix being completed, `rank_candidates_before` those of
+// the prefix already taken (0 when none): a candidate is taken when it is kept against the
+// first and was not against the second.
 struct CameraSampleRule {
   const Filter& filter;
-  bool rank_selection = false;
-  int rank_budget = 0;
+  Reconstruction mode = Reconstruction::Importance;
+  double rank_candidates = 0, rank_candidates_before = 0;
 };
 
+// Candidates a rank-selected prefix of `spp` samples ranks against.
+double rank_candidates(const Filter& filter, int64_t spp);
+
 // Camera sample `index` of pixel (x, y); starts `ps` on that sample. False when the sample
-// is not taken (outside the filter, or not kept by rank); then time and lens are not drawn.
+// is not taken (only under rank selection); then time and lens are not drawn.
 bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index, PixelSampleState& ps,
                        CameraSample* out);
 

@@ -35,8 +35,9 @@ double PixelAccum::contrast(int k) const {
 }
 
 Vec3 PixelAccum::value() const {
-  if (w == 0) return Vec3(0.0f);
-  return Vec3(float(rgb[0] / w), float(rgb[1] / w), float(rgb[2] / w));
+  const double d = norm > 0 ? norm : w;
+  if (d == 0) return Vec3(0.0f);
+  return Vec3(float(rgb[0] / d), float(rgb[1] / d), float(rgb[2] / d));
 }
 
 double PixelAccum::variance_of_mean() const {
@@ -66,7 +67,7 @@ Image Film::image(float exposure_stops) const {
     const PixelAccum& p = px_[i];
     Vec3 v = p.value() * scale;
     img.rgb[3 * i] = v.x, img.rgb[3 * i + 1] = v.y, img.rgb[3 * i + 2] = v.z;
-    img.samples[i] = float(p.samples);
+    img.samples[i] = float(p.traced);
     img.variance[i] = float(p.variance_of_mean() * scale * scale);
     double inv = p.abs_w > 0 ? 1.0 / p.abs_w : 0.0;
     for (int k = 0; k < 3; ++k) {

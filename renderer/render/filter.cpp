@@ -1,5 +1,7 @@
 #include "renderer/render/filter.h"
 
+#include "renderer/render/concentric_disk.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,8 +26,60 @@ Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius) {
   gauss_tail_ = std::exp(-radius_ * radius_);
   max_ = eval(0, 0);
   for (int i = 0; i <= 256; ++i)
-    for (int j = 0; j <= 256; ++j)
-      min_ = std::min(min_, eval(radius_ * (i / 128.0f - 1), radius_ * (j / 128.0f - 1)));
+    for (int j = 0; j <= 256; ++j) min_ = std::min(min_, eval(radius_ * (i / 128.0f - 1), radius_ * (j / 128.0f - 1)));
+  // Midpoint rule (eval is 0 on the square's edge, which a lattice through it would count).
+  double sum = 0;
+  const int m = 512;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) sum += eval(radius_ * float((i + 0.5) / (m / 2) - 1), radius_ * float((j + 0.5) / (m / 2) - 1));
+  mean_ = sum / (double(m) * m);
+  // pbrt-v4 tabulates 32 cells per pixel of radius; a cell's value is the mean |f| on a 5 x 5
+  // lattice spanning the cell (corners pulled in by 1/1000 of a cell, as eval is 0 on the
+  // square's edge), so a cell the support only clips still gets samples.
+  const int n = std::clamp(int(std::ceil(32 * radius_)), 16, 256);
+  std::vector<double> f(std::size_t(n) * n);
+  const double cell = 2.0 * radius_ / n;
+  auto at = [&](int i, int a) { return float(-radius_ + (i + 0.001 + a * (0.998 / 4)) * cell); };
+  for (int iy = 0; iy < n; ++iy)
+    for (int ix = 0; ix < n; ++ix) {
+      double s = 0;
+      for (int a = 0; a <= 4; ++a)
+        for (int b = 0; b <= 4; ++b) s += std::abs(eval(at(ix, a), at(iy, b)));
+      f[std::size_t(iy) * n + ix] = s / 25;
+    }
+  table_ = PiecewiseConstant2D(f, n, n, -radius_, radius_, -radius_, radius_);
+  if (type_ == FilterType::Gaussian) {
+    // Radial support: a square table's cells on the circle would put samples where f = 0,
+    // so the Gaussian is tabulated over s = d^2 in [0, r^2) instead (uniform s is uniform area).
+    const int m = 256;
+    std::vector<double> g(m);
+    const double ds = double(radius_) * radius_ / m;
+    for (int i = 0; i < m; ++i) {
+      double sum = 0;
+      for (int a = 0; a <= 4; ++a) sum += std::exp(-(i + 0.001 + a * (0.998 / 4)) * ds) - gauss_tail_;
+      g[i] = sum / 5;
+    }
+    radial_ = PiecewiseConstant1D(g, 0, double(radius_) * radius_);
+  }
+}
+
+FilterSample Filter::sample(std::array<double, 2> u) const {
+  double pdf = 0;
+  FilterSample s;
+  if (radial_.size() > 0) {
+    // The concentric map keeps the pattern's stratification and makes rho^2 uniform; the
+    // radial table then moves rho^2 to s = d^2. Area density = pdf(s) / pi.
+    auto [rho, phi] = concentric_disk_polar(u);
+    double d = std::sqrt(radial_.sample(double(rho) * rho, &pdf)) * (rho < 0 ? -1.0 : 1.0);
+    pdf /= double(kPi);
+    s.x = float(d * std::cos(phi)), s.y = float(d * std::sin(phi));
+  } else {
+    auto p = table_.sample(u, &pdf);
+    s.x = float(p[0]), s.y = float(p[1]);
+  }
+  float f = eval(s.x, s.y);
+  s.weight = pdf > 0 ? float(f / pdf) : 0.0f;
+  return s;
 }
 
 float Filter::eval(float x, float y) const {

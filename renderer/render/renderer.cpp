@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -48,47 +49,78 @@ struct PixelRenderer {
   const ThinLensCamera& camera;
   const EmbreeScene& scene;
   const PathIntegrator& integrator;
-  CameraSampleRule rule;
+  const Filter& filter;
+  Reconstruction mode;
 
-  // Samples [begin, end) of pixel (x, y); returns rays traced. Camera rays go to Embree as
-  // packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is, because
-  // packet and single-ray kernels may differ in the last bit; so a pixel's samples are the
-  // same whether it is rendered at once or over adaptive rounds.
-  // With `decide` (decision "split"), odd samples go there and only even samples to `acc`;
+  // Pixels beyond its own that a splatted sample can reach (film point in [x, x + 1)).
+  int splat_margin() const { return int(std::ceil(filter.radius())) + 1; }
+
+  // Samples [begin, end) of pixel (x, y) into `film`; returns rays traced. Camera rays go to
+  // Embree as packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is,
+  // because packet and single-ray kernels may differ in the last bit; so a pixel's samples
+  // are the same whether it is rendered at once or over adaptive rounds.
+  // With `decide` (decision "split"), odd samples go there and only even samples to `film`;
   // each set's `halves` buffers then split it by (i >> 1) parity.
-  int64_t run(int x, int y, int64_t begin, int64_t end, PixelAccum& acc, PixelAccum* decide,
-              PixelSampleState& ps) const {
+  // Under rank selection [begin, end) is a budget: every candidate of the larger prefix is
+  // visited, and those kept now but not before are traced.
+  int64_t run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps) const {
+    CameraSampleRule rule{filter, mode};
+    int64_t first = begin & ~int64_t(3), last = end;
+    if (mode == Reconstruction::Rank) {
+      rule.rank_candidates = rank_candidates(filter, end);
+      rule.rank_candidates_before = begin > 0 ? rank_candidates(filter, begin) : 0.0;
+      first = 0, last = int64_t(std::ceil(rule.rank_candidates));
+    }
     int64_t rays = 0;
-    for (int64_t g = begin & ~int64_t(3); g < end; g += 4) {
+    for (int64_t g = first; g < last; g += 4) {
       Ray ray[4];
-      float w[4] = {0, 0, 0, 0};
+      CameraSample cs[4];
       bool live[4], found[4];
       SurfaceHit hit[4];
       for (int k = 0; k < 4; ++k) {
-        CameraSample cs;
-        live[k] = get_camera_sample(rule, x, y, g + k, ps, &cs);
-        if (!live[k]) continue;
-        ray[k] = camera.generate(cs.film_x, cs.film_y, cs.lens, cs.time);
-        w[k] = cs.weight;
+        live[k] = get_camera_sample(rule, x, y, g + k, ps, &cs[k]);
+        if (live[k]) ray[k] = camera.generate(cs[k].film_x, cs[k].film_y, cs[k].lens, cs[k].time);
       }
       if (!(live[0] || live[1] || live[2] || live[3])) continue;
       scene.intersect4(ray, live, hit, found);
       for (int k = 0; k < 4; ++k) {
         const int64_t i = g + k;
         if (!live[k]) continue;
-        if (i < begin || i >= end) {
+        if (mode != Reconstruction::Rank && (i < begin || i >= end)) {
           ++rays;  // traced for the packet's sake only
           continue;
         }
         ps.start_pixel_sample(x, y, i);
         PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
-        PixelAccum& dst = decide && (i & 1) ? *decide : acc;
-        dst.add(pr.radiance, w[k], pr.albedo, pr.normal, pr.depth, int(decide ? (i >> 1) & 1 : i & 1));  // drops NaN / inf
         rays += pr.rays;
+        Film& dst = decide && (i & 1) ? *decide : film;
+        const int half = int(decide ? (i >> 1) & 1 : i & 1);
+        PixelAccum& own = dst.at(x, y);
+        ++own.traced;
+        if (mode != Reconstruction::Splat) {
+          own.add(pr.radiance, cs[k].weight, pr.albedo, pr.normal, pr.depth, half);  // drops NaN / inf
+        } else if (!is_finite(pr.radiance)) {
+          ++own.dropped;  // once, not in every pixel it would have reached
+        } else {
+          splat(dst, cs[k].film_x, cs[k].film_y, pr, half);
+        }
       }
     }
-    acc.prefix = end;
+    film.at(x, y).prefix = end;
+    if (mode == Reconstruction::Rank) film.at(x, y).norm = rule.rank_candidates * filter.mean_value();
     return rays;
+  }
+
+  // Cook §4.2: the sample at film point (fx, fy) adds to every pixel whose filter covers it.
+  void splat(Film& film, float fx, float fy, const PathResult& pr, int half) const {
+    const float r = filter.radius();
+    const int x0 = std::max(0, int(std::ceil(fx - 0.5f - r))), x1 = std::min(film.width() - 1, int(std::floor(fx - 0.5f + r)));
+    const int y0 = std::max(0, int(std::ceil(fy - 0.5f - r))), y1 = std::min(film.height() - 1, int(std::floor(fy - 0.5f + r)));
+    for (int qy = y0; qy <= y1; ++qy)
+      for (int qx = x0; qx <= x1; ++qx) {
+        const float w = filter.eval(fx - (float(qx) + 0.5f), fy - (float(qy) + 0.5f));
+        if (w != 0) film.at(qx, qy).add(pr.radiance, w, pr.albedo, pr.normal, pr.depth, half);
+      }
   }
 };
 
@@ -97,6 +129,8 @@ struct PixelRenderer {
 RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
   const AdaptiveDesc& ad = desc.sampler.adaptive;
   const bool split = ad.enabled && ad.decision == "split";
+  if (split && desc.film.filter.reconstruction == Reconstruction::Rank)
+    throw InputError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
   check_film_memory(desc.film.width, desc.film.height, desc.film.size_where, split ? 2 : 1);
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
@@ -113,9 +147,8 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   // "split" they are kept apart from the image and only decide.
   Film decision(split ? desc.film.width : 0, split ? desc.film.height : 0);
   const Film& judged = split ? decision : film;
-  // Rank selection ranks against the full sample budget of a pixel (max_spp when adaptive).
-  const int rank_n = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
-  PixelRenderer pr{camera, scene, integrator, {filter, desc.film.filter.rank_selection, rank_n}};
+  const Reconstruction mode = desc.film.filter.reconstruction;
+  PixelRenderer pr{camera, scene, integrator, filter, mode};
 
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int W = desc.film.width, H = desc.film.height;
@@ -123,29 +156,39 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   tbb::enumerable_thread_specific<int64_t> rays(0);
   bool stopped = false;
 
+  // Splatting writes into neighbouring tiles, so tiles run in waves whose footprints (tile
+  // plus margin) are disjoint: no locks, and every pixel receives its contributions in the
+  // same order at any thread count (wave order, then the tile's pixel order).
+  const int period = mode == Reconstruction::Splat ? 1 + (2 * pr.splat_margin() + kTile - 1) / kTile : 1;
+  std::vector<std::vector<int>> waves(std::size_t(period) * period);
+  for (int t = 0; t < tx * ty; ++t) waves[std::size_t((t / tx) % period) * period + (t % tx) % period].push_back(t);
+
   // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
   auto pass = [&](const char* label, auto&& end_of) {
     std::atomic<bool> cancelled{false};
     Progress progress(label, double(tx) * ty, opt.quiet);
-    tbb::parallel_for(tbb::blocked_range<int>(0, tx * ty, 1), [&](const tbb::blocked_range<int>& r) {
-      for (int t = r.begin(); t != r.end(); ++t) {
-        if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
-          cancelled = true;
-          return;
-        }
-        int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
-        int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
-        int64_t& local = rays.local();
-        PixelSampleState ps(sampler);
-        for (int y = y0; y < y1; ++y)
-          for (int x = x0; x < x1; ++x) {
-            PixelAccum& acc = film.at(x, y);
-            int64_t end = end_of(x, y);
-            if (end > acc.prefix) local += pr.run(x, y, acc.prefix, end, acc, split ? &decision.at(x, y) : nullptr, ps);
+    for (const std::vector<int>& wave : waves) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, wave.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t j = r.begin(); j != r.end(); ++j) {
+          if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
+            cancelled = true;
+            return;
           }
-        progress.advance();
-      }
-    });
+          const int t = wave[j];
+          int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
+          int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
+          int64_t& local = rays.local();
+          PixelSampleState ps(sampler);
+          for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+              int64_t begin = film.at(x, y).prefix, end = end_of(x, y);
+              if (end > begin) local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps);
+            }
+          progress.advance();
+        }
+      });
+      if (cancelled) break;
+    }
     stopped = stopped || cancelled;
     return !cancelled;
   };
@@ -205,13 +248,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.build_seconds = build_seconds;
   for (int64_t r : rays) res.stats.rays += r;
-  for (float s : res.image.samples) res.stats.samples += int64_t(s);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
+      res.stats.samples += film.at(x, y).traced;  // whether or not they counted
       res.stats.nonfinite_samples += film.at(x, y).dropped;
-      if (split) res.stats.nonfinite_samples += decision.at(x, y).dropped, res.stats.samples += decision.at(x, y).samples;
+      if (split) res.stats.nonfinite_samples += decision.at(x, y).dropped, res.stats.samples += decision.at(x, y).traced;
     }
-  res.stats.samples += res.stats.nonfinite_samples;  // traced, whether or not they counted
   if (res.stats.nonfinite_samples > 0 && !opt.quiet)
     std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",
                  (long long)res.stats.nonfinite_samples);

@@ -1,5 +1,7 @@
 #include "renderer/render/thin_lens_camera.h"
 
+#include "renderer/render/concentric_disk.h"
+
 #include <cmath>
 
 namespace pdrt {
@@ -44,12 +46,7 @@ ThinLensCamera::Pose ThinLensCamera::pose_at(float time) const {
 
 std::array<float, 2> ThinLensCamera::aperture_point(std::array<double, 2> u, int blades, float rotation) {
   if (blades < 3) {
-    // Shirley–Chiu concentric map: keeps the stratification of the lens pattern.
-    float a = float(2 * u[0] - 1), b = float(2 * u[1] - 1);
-    if (a == 0 && b == 0) return {0, 0};
-    float r, phi;
-    if (std::abs(a) > std::abs(b)) r = a, phi = (kPi / 4) * (b / a);
-    else r = b, phi = kPi / 2 - (kPi / 4) * (a / b);
+    auto [r, phi] = concentric_disk_polar(u);
     return {r * std::cos(phi + rotation), r * std::sin(phi + rotation)};
   }
   // Regular polygon inscribed in the unit circle: pick a wedge with u0, then a uniform point in

@@ -30,10 +30,26 @@ struct CameraDesc {
 
 enum class FilterType { Box, Tent, Gaussian, Mitchell };
 
+// How samples become pixels (docs/renderer.md, "Reconstruction"):
+//   Importance  offsets drawn in proportion to |f|, weight sign(f) * integral |f| (pbrt-v4)
+//   Splat       the image-plane pattern at pixel scale; each sample feeds every pixel whose
+//               filter covers it (Cook §4.2)
+//   Rank        offsets uniform over the support, kept when a randomised rank is below the
+//               normalised filter value (McCool–Fiume §5.2)
+enum class Reconstruction { Importance, Splat, Rank };
+inline constexpr const char* kReconstructionNames[] = {"importance", "splat", "rank"};
+inline const char* reconstruction_name(Reconstruction r) { return kReconstructionNames[int(r)]; }
+// False for a name that is none of kReconstructionNames.
+inline bool parse_reconstruction(const std::string& name, Reconstruction* out) {
+  for (int i = 0; i < 3; ++i)
+    if (name == kReconstructionNames[i]) return *out = Reconstruction(i), true;
+  return false;
+}
+
 struct FilterDesc {
   FilterType type = FilterType::Gaussian;
   float radius = 1.5f;             // pixels (Cook's w = 1.5 for the Gaussian)
-  bool rank_selection = false;     // filter importance by rank threshold (McCool–Fiume §5.2)
+  Reconstruction reconstruction = Reconstruction::Importance;
 };
 
 struct FilmDesc {

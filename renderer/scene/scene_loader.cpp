@@ -160,7 +160,9 @@ void SceneParser::film(const JsonObject& o) {
   if (auto n = o.get("exposure")) f.exposure = n->number();
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
-    fo.allow({"type", "radius", "selection"});
+    if (auto old = fo.get("selection"))
+      old->fail_key("was replaced by \"reconstruction\": \"importance\" (default), \"splat\" or \"rank\"");
+    fo.allow({"type", "radius", "reconstruction"});
     std::string type = "gaussian";
     if (auto t = fo.get("type")) type = t->choice({"box", "tent", "gaussian", "mitchell"});
     static const std::map<std::string, std::pair<FilterType, float>> kinds = {
@@ -170,7 +172,8 @@ void SceneParser::film(const JsonObject& o) {
         {"mitchell", {FilterType::Mitchell, 2.0f}}};
     std::tie(f.filter.type, f.filter.radius) = kinds.at(type);
     if (auto r = fo.get("radius")) f.filter.radius = r->positive();
-    if (auto s = fo.get("selection")) f.filter.rank_selection = s->choice({"weights", "rank"}) == "rank";
+    if (auto m = fo.get("reconstruction"))
+      parse_reconstruction(m->choice({"importance", "splat", "rank"}), &f.filter.reconstruction);
   }
 }
 
@@ -195,7 +198,13 @@ void SceneParser::sampler(const JsonObject& o) {
     if (auto t = a.get("threshold")) s.adaptive.threshold = t->positive();
     if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetrics);
     if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVariances);
-    if (auto d = a.get("decision")) s.adaptive.decision = d->choice(kAdaptiveDecisions);
+    if (auto d = a.get("decision")) {
+      s.adaptive.decision = d->choice(kAdaptiveDecisions);
+      // Rank selection keeps a candidate by its index among all of the pixel's, so the odd
+      // and even halves are not each an unbiased estimate.
+      if (s.adaptive.decision == "split" && scene_.film.filter.reconstruction == Reconstruction::Rank)
+        d->fail_got("\"split\" needs film.filter.reconstruction \"importance\" or \"splat\" (not \"rank\")");
+    }
   }
 }
 

@@ -91,6 +91,7 @@ class Sampler {
 class PixelSampleState {
  public:
   explicit PixelSampleState(const Sampler& s) : s_(&s) {}
+  const Sampler& sampler() const { return *s_; }
   void start_pixel_sample(int px, int py, int64_t index) {
     if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
     index_ = index;

@@ -54,6 +54,39 @@ TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
   EXPECT_GT(j["rays"].get<int64_t>(), 0);
 }
 
+// The spp asked for is what is traced and what every report says: the summary line, the
+// stats and the samples AOV (the old default traced about 50 of 64 and printed "50.0 spp").
+TEST(CliRender, SppAskedForIsTracedAndReportedInEveryMode) {
+  fs::path d = scratch_dir("render_spp");
+  fs::path scene = write_scene(d);
+  for (const char* mode : {"importance", "splat"}) {
+    fs::path stats = d / (std::string(mode) + ".json");
+    auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --spp 64 --reconstruction " +
+                      mode + " --stats " + stats.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find(", 64.0 spp, "), std::string::npos) << r.err;
+    nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+    EXPECT_EQ(j["spp_mean"].get<double>(), 64.0) << mode;
+    EXPECT_EQ(j["reconstruction"].get<std::string>(), mode);
+    auto in = OIIO::ImageInput::open((d / "out.exr").string());
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().get_string_attribute("pdrt:reconstruction"), mode);
+  }
+}
+
+TEST(CliRender, UnknownReconstructionIsAUsageError) {
+  fs::path d = scratch_dir("render_recon_bad");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --reconstruction weights");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--reconstruction: unknown mode \"weights\" (importance, splat, rank)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "out.exr"));
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() +
+               " --reconstruction rank --adaptive-decision split");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("adaptive decision \"split\" needs reconstruction"), std::string::npos) << r.err;
+}
+
 // "threads" is the count the render ran on: --threads 0 (the default) means all of them.
 TEST(CliRender, StatsReportTheThreadsUsedNotTheOption) {
   fs::path d = scratch_dir("render_threads");

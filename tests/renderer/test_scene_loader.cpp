@@ -110,7 +110,7 @@ TEST_F(SceneLoader, ExampleFilmSamplerIntegratorValues) {
   EXPECT_EQ(s.film.width, 320);
   EXPECT_EQ(s.film.height, 240);
   EXPECT_EQ(s.film.filter.type, FilterType::Mitchell);
-  EXPECT_TRUE(s.film.filter.rank_selection);
+  EXPECT_EQ(s.film.filter.reconstruction, Reconstruction::Rank);
   EXPECT_FLOAT_EQ(s.film.exposure, 0.5f);
   EXPECT_EQ(s.sampler.type, "poisson");
   EXPECT_EQ(s.sampler.spp, 32);
@@ -227,7 +227,7 @@ TEST_F(SceneLoader, DefaultsFilledIn) {
   EXPECT_FLOAT_EQ(s.camera.shutter_close, 1);
   EXPECT_EQ(s.film.filter.type, FilterType::Gaussian);
   EXPECT_FLOAT_EQ(s.film.filter.radius, 1.5f);
-  EXPECT_FALSE(s.film.filter.rank_selection);
+  EXPECT_EQ(s.film.filter.reconstruction, Reconstruction::Importance);
   EXPECT_EQ(s.sampler.type, "poisson");
   EXPECT_EQ(s.sampler.spp, 16);
   EXPECT_FALSE(s.sampler.adaptive.enabled);
@@ -287,6 +287,38 @@ TEST_F(SceneLoader, AdaptiveDecisionSplit) {
 TEST_F(SceneLoader, UnknownAdaptiveDecision) {
   fs::path f = scene(kHead + "  \"sampler\": {\"adaptive\": {\"decision\": \"halves\"}}\n}\n");
   EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.decision must be one of shared, split, got \"halves\"");
+}
+
+std::string film_with_filter(const std::string& filter) {
+  return "{\n  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+         "  \"film\": {\"width\": 8, \"height\": 8, \"filter\": " + filter + "}";
+}
+
+TEST_F(SceneLoader, FilterReconstructionModes) {
+  const std::pair<const char*, Reconstruction> modes[] = {
+      {"importance", Reconstruction::Importance}, {"splat", Reconstruction::Splat}, {"rank", Reconstruction::Rank}};
+  for (const auto& [name, mode] : modes) {
+    SceneDesc s = load_scene(scene(film_with_filter(std::string("{\"reconstruction\": \"") + name + "\"}") + "\n}\n"));
+    EXPECT_EQ(s.film.filter.reconstruction, mode) << name;
+  }
+}
+
+TEST_F(SceneLoader, UnknownReconstruction) {
+  fs::path f = scene(film_with_filter("{\"reconstruction\": \"weights\"}") + "\n}\n");
+  EXPECT_ERROR(f, "s.json:3:66: film.filter.reconstruction must be one of importance, splat, rank, got \"weights\"");
+}
+
+TEST_F(SceneLoader, OldSelectionKeyNamesItsReplacement) {
+  fs::path f = scene(film_with_filter("{\"selection\": \"rank\"}") + "\n}\n");
+  EXPECT_ERROR(f, "s.json:3:48: film.filter.selection was replaced by \"reconstruction\": \"importance\" (default), "
+                  "\"splat\" or \"rank\"");
+}
+
+TEST_F(SceneLoader, SplitDecisionWithRankReconstructionIsRefused) {
+  fs::path f = scene(film_with_filter("{\"reconstruction\": \"rank\"}") +
+                     ",\n  \"sampler\": {\"adaptive\": {\"decision\": \"split\"}}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.decision \"split\" needs film.filter.reconstruction \"importance\" or "
+                  "\"splat\" (not \"rank\"), got \"split\"");
 }
 
 TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {

@@ -9,6 +9,7 @@
 #include "renderer/render/path_integrator.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/progress.h"
+#include "sampling/core/rng.h"
 #include "renderer/render/thin_lens_camera.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -59,11 +60,15 @@ struct PixelRenderer {
   // Embree as packets of four: always the samples [4j, 4j + 4), whatever [begin, end) is,
   // because packet and single-ray kernels may differ in the last bit; so a pixel's samples
   // are the same whether it is rendered at once or over adaptive rounds.
-  // With `decide` (decision "split"), odd samples go there and only even samples to `film`;
-  // each set's `halves` buffers then split it by (i >> 1) parity.
+  // With `decide` (decision "split"), odd i go there and even i to `film`, as sample i >> 1
+  // of two independent samplers (`pd` for the decision, seeded apart): each film gets a full
+  // prefix of its own sampler, stratified as a whole, and the estimate's samples are
+  // independent of the ones that chose when to stop. Each film's `halves` buffers split it by
+  // the parity of i >> 1.
   // Under rank selection [begin, end) is a budget: every candidate of the larger prefix is
   // visited, and those kept now but not before are traced.
-  int64_t run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps) const {
+  int64_t run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps,
+              PixelSampleState* pd) const {
     CameraSampleRule rule{filter, mode};
     int64_t first = begin & ~int64_t(3), last = end;
     if (mode == Reconstruction::Rank) {
@@ -77,8 +82,10 @@ struct PixelRenderer {
       CameraSample cs[4];
       bool live[4], found[4];
       SurfaceHit hit[4];
+      auto stream = [&](int64_t i) -> PixelSampleState& { return decide && (i & 1) ? *pd : ps; };
+      auto index = [&](int64_t i) { return decide ? i >> 1 : i; };
       for (int k = 0; k < 4; ++k) {
-        live[k] = get_camera_sample(rule, x, y, g + k, ps, &cs[k]);
+        live[k] = get_camera_sample(rule, x, y, index(g + k), stream(g + k), &cs[k]);
         if (live[k]) ray[k] = camera.generate(cs[k].film_x, cs[k].film_y, cs[k].lens, cs[k].time);
       }
       if (!(live[0] || live[1] || live[2] || live[3])) continue;
@@ -90,11 +97,12 @@ struct PixelRenderer {
           ++rays;  // traced for the packet's sake only
           continue;
         }
-        ps.start_pixel_sample(x, y, i);
-        PathResult pr = integrator.trace(ray[k], ps, hit[k], found[k]);
+        PixelSampleState& st = stream(i);
+        st.start_pixel_sample(x, y, index(i));
+        PathResult pr = integrator.trace(ray[k], st, hit[k], found[k]);
         rays += pr.rays;
         Film& dst = decide && (i & 1) ? *decide : film;
-        const int half = int(decide ? (i >> 1) & 1 : i & 1);
+        const int half = int(index(i) & 1);
         PixelAccum& own = dst.at(x, y);
         ++own.traced;
         if (mode != Reconstruction::Splat) {
@@ -146,6 +154,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   // Kirk & Arvo (1991): samples that chose when a pixel stops bias its estimate, so with
   // "split" they are kept apart from the image and only decide.
   Film decision(split ? desc.film.width : 0, split ? desc.film.height : 0);
+  std::unique_ptr<Sampler> decider;
+  if (split) {
+    SamplerDesc d = desc.sampler;
+    d.type = sampler.name(), d.seed = mix64(sampler.seed() ^ 0x6465636964657273ull);  // "deciders"
+    decider = make_scene_sampler(d);
+  }
   const Film& judged = split ? decision : film;
   const Reconstruction mode = desc.film.filter.reconstruction;
   PixelRenderer pr{camera, scene, integrator, filter, mode};
@@ -179,10 +193,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
           int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
           int64_t& local = rays.local();
           PixelSampleState ps(sampler);
+          std::optional<PixelSampleState> pd;
+          if (decider) pd.emplace(*decider);
           for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
               int64_t begin = film.at(x, y).prefix, end = end_of(x, y);
-              if (end > begin) local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps);
+              if (end > begin) local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps, pd ? &*pd : nullptr);
             }
           progress.advance();
         }

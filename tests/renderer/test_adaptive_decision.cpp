@@ -39,11 +39,11 @@ SceneDesc subpixel_emitters(const char* decision, uint64_t seed, const char* sam
 }
 
 // Mean pixel value over 8 seeds relative to the analytic coverage x radiance, and its standard error.
-std::pair<double, double> relative_mean(const char* decision) {
+std::pair<double, double> relative_mean(const char* decision, const char* sampler = "random") {
   double s1 = 0, s2 = 0;
   int n = 0;
   for (uint64_t seed = 1; seed <= 8; ++seed) {
-    Image im = render_quietly(subpixel_emitters(decision, seed)).image;
+    Image im = render_quietly(subpixel_emitters(decision, seed, sampler)).image;
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
         double v = mean_rgb(im, x, y) / (kCoverage * kLe);
@@ -51,7 +51,7 @@ std::pair<double, double> relative_mean(const char* decision) {
       }
   }
   double mean = s1 / n, se = std::sqrt(std::max(0.0, s2 / n - mean * mean) / (n - 1));
-  std::printf("decision %s: mean / analytic = %.4f +- %.4f\n", decision, mean, se);
+  std::printf("%s, decision %s: mean / analytic = %.4f +- %.4f\n", sampler, decision, mean, se);
   return {mean, se};
 }
 
@@ -65,6 +65,17 @@ TEST(AdaptiveDecision, SharedDecisionIsBiasedOnSubpixelEmitters) {
 TEST(AdaptiveDecision, SplitDecisionIsUnbiasedOnSubpixelEmitters) {
   auto [mean, se] = relative_mean("split");
   EXPECT_LE(std::abs(mean - 1), 3 * se);
+}
+
+// The decision samples come from an independent sampler, so the estimate's samples are a full
+// prefix of the scene's sampler: unbiased for the stratified samplers too. Poisson is not
+// here: on this scene it is biased without adaptivity (8 seeds, fixed spp: 2.457 at 2 spp,
+// 0.912 at 64), as its values are not yet randomised over seeds (issue 15).
+TEST(AdaptiveDecision, SplitDecisionIsUnbiasedForStratifiedSamplers) {
+  for (const char* sampler : {"jitter", "sobol"}) {
+    auto [mean, se] = relative_mean("split", sampler);
+    EXPECT_LE(std::abs(mean - 1), 3 * se) << sampler;
+  }
 }
 
 TEST(AdaptiveDecision, SplitIsBitIdenticalAtOneAndTwoThreads) {

@@ -96,20 +96,20 @@ TEST(EnergyCompensation, RoughDielectricSphereFurnaceKeepsTheEnergy) {
 }
 
 // Directional albedo of the white conductor at normal incidence and at 60 and 84 degrees:
-// 1 within 1.5 % with compensation; without, at roughness 1 and normal incidence, the 0.31 of
+// 1 within 1 % with compensation; without, at roughness 1 and normal incidence, the 0.31 of
 // issue 14. 2e5 samples (sigma < 1e-3).
 TEST(EnergyCompensation, WhiteConductorDirectionalAlbedoIsOne) {
   for (float r : {0.25f, 0.5f, 1.0f})
     for (float mu : {1.0f, 0.5f, 0.1f}) {
       double on = sampled_albedo(Bsdf(white_conductor(r, true)), wo_at(mu), 1, 200000, 41);
-      EXPECT_NEAR(on, 1.0, 0.015) << "roughness " << r << " mu " << mu;
+      EXPECT_NEAR(on, 1.0, 0.01) << "roughness " << r << " mu " << mu;
     }
   double off = sampled_albedo(Bsdf(white_conductor(1.0f, false)), wo_at(1.0f), 1, 200000, 42);
   EXPECT_NEAR(off, 0.31, 0.02);
 }
 
 // Reflection plus transmission (as energy) of the white rough dielectric from both sides,
-// including beyond the critical angle inside: 1 within 1.5 %.
+// including beyond the critical angle inside: 1 within 1 % (measured: within 0.7 %).
 TEST(EnergyCompensation, WhiteRoughDielectricConservesEnergyFromBothSides) {
   for (float ior : {1.33f, 1.5f, 2.4f})
     for (float r : {0.3f, 0.8f, 1.0f})
@@ -118,7 +118,7 @@ TEST(EnergyCompensation, WhiteRoughDielectricConservesEnergyFromBothSides) {
           Vec3 wo = wo_at(mu);
           wo.z *= side;
           double e = sampled_albedo(Bsdf(glass(ior, r)), wo, ior, 200000, 43);
-          EXPECT_NEAR(e, 1.0, 0.015) << "ior " << ior << " roughness " << r << " mu " << mu << " side " << side;
+          EXPECT_NEAR(e, 1.0, 0.01) << "ior " << ior << " roughness " << r << " mu " << mu << " side " << side;
         }
 }
 

@@ -2,6 +2,7 @@
 
 #include "renderer/render/fresnel.h"
 #include "renderer/render/ggx_albedo.h"
+#include "renderer/render/ggx_albedo_tables.h"
 #include "renderer/render/microfacet_ggx.h"
 
 namespace pdrt {
@@ -38,6 +39,7 @@ bool refraction_normal(const Vec3& wo, const Vec3& wi, double eta, Refraction* r
 }  // namespace
 
 Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
+  static_assert(ggx_tables::kMu <= kMsNodes && ggx_tables::kDielMu <= kMsNodes, "e_row_ holds a table row");
   float alpha = std::max(kMinGgxAlpha, m.roughness * m.roughness);
   switch (m.type) {
     case MaterialType::Emitter:
@@ -60,6 +62,8 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
         if (1.0f - e_avg > 1e-5f) {
           ms_ = true;
           e_avg_[0] = e_avg;
+          e_nodes_ = ggx_albedo_nodes(false);
+          for (int i = 0; i < e_nodes_; ++i) e_row_[0][i] = ggx_conductor_albedo(float(i) / float(e_nodes_ - 1), alpha_);
           Vec3 f_avg = albedo_ + (Vec3(1.0f) - albedo_) * (1.0f / 21.0f);
           Vec3 f_ms = f_avg * f_avg * e_avg / (Vec3(1.0f) - f_avg * (1.0f - e_avg));
           ms_scale_ = f_ms * (kInvPi / (1.0f - e_avg));
@@ -89,6 +93,10 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
         e_avg_[1] = ggx_dielectric_albedo_average(alpha_, 1.0f / ior_);
         if (std::min(1.0f - e_avg_[0], 1.0f - e_avg_[1]) > 1e-5f) {
           ms_ = true;
+          e_nodes_ = ggx_albedo_nodes(true);
+          for (int i = 0; i < e_nodes_; ++i)
+            for (int side = 0; side < 2; ++side)
+              e_row_[side][i] = ggx_dielectric_albedo(float(i) / float(e_nodes_ - 1), alpha_, side == 0 ? ior_ : 1.0f / ior_);
           int rare = ior_ >= 1 ? 0 : 1, dense = 1 - rare;
           float n2[2] = {1.0f, ior_ * ior_};
           reflect_[rare] = float(fresnel_dielectric_average(rare == 0 ? ior_ : 1.0 / ior_));
@@ -227,8 +235,11 @@ bool Bsdf::sample_ggx(const Vec3& wo, float u1, float u2, BsdfSample* out) const
 // ---- Multiple-scattering compensation.
 
 float Bsdf::ms_albedo(float mu, int side) const {
-  if (kind_ == Kind::Ggx) return std::min(1.0f, ggx_conductor_albedo(mu, alpha_));
-  return std::min(1.0f, ggx_dielectric_albedo(mu, alpha_, side == 0 ? ior_ : 1.0f / ior_));
+  // The tables are linear in mu between their nodes, so this equals the full lookup.
+  float g = std::clamp(mu, 0.0f, 1.0f) * float(e_nodes_ - 1);
+  int i = std::min(int(g), e_nodes_ - 2);
+  const float* e = e_row_[side];
+  return std::min(1.0f, e[i] + (e[i + 1] - e[i]) * (g - float(i)));
 }
 
 float Bsdf::ms_probability(const Vec3& wo) const {
@@ -282,6 +293,12 @@ bool Bsdf::sample_compensated(const Vec3& wo, float u1, float u2, float uc, Bsdf
     float v = std::min((uc - p) / (1.0f - p), one_minus);
     bool ok = kind_ == Kind::Ggx ? sample_ggx(wo, u1, u2, out) : sample_rough_dielectric(wo, u1, u2, v, out);
     if (!ok) return false;
+    // The single-scattering sampler gave f_ss cos / pdf_ss and pdf_ss: add the lobe to both.
+    float cos_i = std::abs(out->wi.z), pdf_ss = out->pdf;
+    out->pdf = (1.0f - p) * pdf_ss + p * pdf_ms(wo, out->wi);
+    if (!(out->pdf > 0)) return false;
+    out->weight = (out->weight * pdf_ss + eval_ms(wo, out->wi) * cos_i) / out->pdf;
+    return true;
   }
   // A mixture: the weight is the whole f cos over the whole pdf, so that MIS sees the same pdf.
   out->pdf = pdf(wo, out->wi);

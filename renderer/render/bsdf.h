@@ -74,6 +74,10 @@ class Bsdf {
   Vec3 ms_scale_{0.0f};    // conductor: F_ms / (pi (1 - E_avg)) per channel
   float ms_pick_ss_ = 0, ms_pick_ms_ = 0;  // conductor: mean F_avg and F_ms, weights of the lobe choice
   float e_avg_[2] = {1, 1};  // E_avg per side (the conductor uses side 0)
+  // E(mu) per side at this alpha (and eta) on the tables' mu nodes, so that a lookup is one lerp.
+  static constexpr int kMsNodes = 32;
+  float e_row_[2][kMsNodes] = {};
+  int e_nodes_ = kMsNodes;
   float reflect_[2] = {1, 1};  // dielectric: reflected fraction of the compensation lobe per side
 };
 

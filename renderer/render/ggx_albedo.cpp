@@ -58,6 +58,8 @@ float ggx_dielectric_albedo(float mu, float alpha, float eta) {
   return mix(plane(e.k.i), plane(e.k.i + 1), e.k.t);
 }
 
+int ggx_albedo_nodes(bool dielectric) { return dielectric ? kDielMu : kMu; }
+
 float ggx_dielectric_albedo_average(float alpha, float eta) {
   EtaAt e = eta_at(eta);
   Lerp r = lerp_at(std::sqrt(alpha), kDielRough);

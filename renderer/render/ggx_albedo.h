@@ -16,4 +16,8 @@ float ggx_conductor_albedo_average(float alpha);
 float ggx_dielectric_albedo(float mu, float alpha, float eta);
 float ggx_dielectric_albedo_average(float alpha, float eta);
 
+// Number of mu nodes of the conductor (false) or dielectric (true) tables: between them the
+// lookups are linear in mu.
+int ggx_albedo_nodes(bool dielectric);
+
 }  // namespace pdrt

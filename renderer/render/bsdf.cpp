@@ -1,6 +1,8 @@
 #include "renderer/render/bsdf.h"
 
 #include "renderer/render/fresnel.h"
+#include "renderer/render/ggx_albedo.h"
+#include "renderer/render/ggx_albedo_tables.h"
 #include "renderer/render/microfacet_ggx.h"
 
 namespace pdrt {
@@ -37,6 +39,7 @@ bool refraction_normal(const Vec3& wo, const Vec3& wi, double eta, Refraction* r
 }  // namespace
 
 Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
+  static_assert(ggx_tables::kMu <= kMsNodes && ggx_tables::kDielMu <= kMsNodes, "e_row_ holds a table row");
   float alpha = std::max(kMinGgxAlpha, m.roughness * m.roughness);
   switch (m.type) {
     case MaterialType::Emitter:
@@ -50,6 +53,24 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
       kind_ = m.lobe == GlossLobe::Phong ? Kind::Phong : Kind::Ggx;
       alpha_ = alpha;
       exponent_ = std::max(0.0f, m.exponent);
+      if (kind_ == Kind::Ggx && m.energy_compensation) {
+        // Kulla & Conty 2017: f_ms carries 1 - E(mu_o) when F = 1. With Fresnel, the light that
+        // does not leave after a bounce (1 - E_avg) is reflected with F_avg and leaves with E_avg
+        // at each further bounce: sum_k F_avg^(k+1) E_avg (1 - E_avg)^k = (1 - E_avg) F_ms with
+        // F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)). Schlick's F_avg = F0 + (1 - F0) / 21.
+        float e_avg = ggx_conductor_albedo_average(alpha_);
+        if (1.0f - e_avg > 1e-5f) {
+          ms_ = true;
+          e_avg_[0] = e_avg;
+          e_nodes_ = ggx_albedo_nodes(false);
+          for (int i = 0; i < e_nodes_; ++i) e_row_[0][i] = ggx_conductor_albedo(float(i) / float(e_nodes_ - 1), alpha_);
+          Vec3 f_avg = albedo_ + (Vec3(1.0f) - albedo_) * (1.0f / 21.0f);
+          Vec3 f_ms = f_avg * f_avg * e_avg / (Vec3(1.0f) - f_avg * (1.0f - e_avg));
+          ms_scale_ = f_ms * (kInvPi / (1.0f - e_avg));
+          ms_pick_ss_ = (f_avg.x + f_avg.y + f_avg.z) / 3.0f;
+          ms_pick_ms_ = (f_ms.x + f_ms.y + f_ms.z) / 3.0f;
+        }
+      }
       break;
     case MaterialType::Mirror:
       kind_ = Kind::Mirror;
@@ -59,6 +80,30 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
       kind_ = m.roughness > 0 && m.ior != 1.0f ? Kind::RoughDielectric : Kind::SmoothDielectric;
       alpha_ = alpha;
       ior_ = m.ior;
+      if (kind_ == Kind::RoughDielectric && m.energy_compensation) {
+        // On side s (0 outside, index 1; 1 inside, index ior) with total albedo E_s, the lobe
+        //   reflection   r_s (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (pi (1 - E_avg,s))
+        //   transmission (1 - r_s) (1 - E_s(mu_o)) (1 - E_s'(mu_i)) / (pi (1 - E_avg,s')) / eta^2
+        // returns exactly the 1 - E_s(mu_o) that single scattering loses. The reflection is
+        // symmetric; the BTDF obeys f(o -> i) ior^2 = f(i -> o) (Veach 1997 §5.2) when
+        // (1 - r_s)(1 - E_avg,s) n_s^2 is the same on both sides (n_s the side's index). r is the
+        // smooth interface's average Fresnel reflectance on the side entering the denser medium;
+        // the other side's r follows (clamped to [0, 1], where reciprocity would be lost).
+        e_avg_[0] = ggx_dielectric_albedo_average(alpha_, ior_);
+        e_avg_[1] = ggx_dielectric_albedo_average(alpha_, 1.0f / ior_);
+        if (std::min(1.0f - e_avg_[0], 1.0f - e_avg_[1]) > 1e-5f) {
+          ms_ = true;
+          e_nodes_ = ggx_albedo_nodes(true);
+          for (int i = 0; i < e_nodes_; ++i)
+            for (int side = 0; side < 2; ++side)
+              e_row_[side][i] = ggx_dielectric_albedo(float(i) / float(e_nodes_ - 1), alpha_, side == 0 ? ior_ : 1.0f / ior_);
+          int rare = ior_ >= 1 ? 0 : 1, dense = 1 - rare;
+          float n2[2] = {1.0f, ior_ * ior_};
+          reflect_[rare] = float(fresnel_dielectric_average(rare == 0 ? ior_ : 1.0 / ior_));
+          float tau = (1.0f - reflect_[rare]) * (1.0f - e_avg_[rare]) * n2[rare];
+          reflect_[dense] = std::clamp(1.0f - tau / ((1.0f - e_avg_[dense]) * n2[dense]), 0.0f, 1.0f);
+        }
+      }
       break;
   }
 }
@@ -71,15 +116,8 @@ Vec3 Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
   switch (kind_) {
     case Kind::Lambert:
       return same_hemisphere_up(wo, wi) ? albedo_ * kInvPi : Vec3(0.0f);
-    case Kind::Ggx: {
-      if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
-      Vec3 h = wo + wi;
-      if (dot(h, h) == 0) return Vec3(0.0f);
-      h = normalize(h);
-      MicrofacetGgx ggx(alpha_);
-      // Cook-Torrance / Walter 2007 eq. 20.
-      return fresnel_schlick(albedo_, dot(wi, h)) * (ggx.d(h) * ggx.g2(wo, wi) / (4.0f * wo.z * wi.z));
-    }
+    case Kind::Ggx:
+      return ms_ ? eval_ggx(wo, wi) + eval_ms(wo, wi) : eval_ggx(wo, wi);
     case Kind::Phong: {
       if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
       float c = dot(wi, mirror_z(wo));
@@ -88,7 +126,7 @@ Vec3 Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
       return albedo_ * ((exponent_ + 2.0f) * (0.5f * kInvPi) * std::pow(c, exponent_));
     }
     case Kind::RoughDielectric:
-      return eval_rough_dielectric(wo, wi);
+      return ms_ ? eval_rough_dielectric(wo, wi) + eval_ms(wo, wi) : eval_rough_dielectric(wo, wi);
     default:
       return Vec3(0.0f);
   }
@@ -98,13 +136,12 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   switch (kind_) {
     case Kind::Lambert:
       return same_hemisphere_up(wo, wi) ? wi.z * kInvPi : 0.0f;
-    case Kind::Ggx: {
-      if (!same_hemisphere_up(wo, wi)) return 0.0f;
-      Vec3 h = wo + wi;
-      if (dot(h, h) == 0) return 0.0f;
-      h = normalize(h);
-      // Visible-normal density times the reflection Jacobian dm/dwi = 1 / (4 wo.m).
-      return MicrofacetGgx(alpha_).pdf_visible(wo, h) / (4.0f * dot(wo, h));
+    case Kind::Ggx:
+    case Kind::RoughDielectric: {
+      float ss = kind_ == Kind::Ggx ? pdf_ggx(wo, wi) : pdf_rough_dielectric(wo, wi);
+      if (!ms_) return ss;
+      float p = ms_probability(wo);
+      return (1.0f - p) * ss + p * pdf_ms(wo, wi);
     }
     case Kind::Phong: {
       if (!same_hemisphere_up(wo, wi)) return 0.0f;
@@ -112,8 +149,6 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
       if (c <= 0) return 0.0f;
       return (exponent_ + 1.0f) * (0.5f * kInvPi) * std::pow(c, exponent_);
     }
-    case Kind::RoughDielectric:
-      return pdf_rough_dielectric(wo, wi);
     default:
       return 0.0f;
   }
@@ -133,20 +168,8 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
       out->weight = albedo_;
       return true;
     }
-    case Kind::Ggx: {
-      if (wo.z <= 0) return false;
-      MicrofacetGgx ggx(alpha_);
-      Vec3 m = ggx.sample_visible(wo, u1, u2);
-      float c = dot(wo, m);
-      if (c <= 0) return false;
-      Vec3 wi = reflect(wo, m);
-      if (wi.z <= 0) return false;
-      out->wi = normalize(wi);
-      out->pdf = ggx.pdf_visible(wo, m) / (4.0f * c);
-      // f cos / pdf with the visible-normal pdf: D and the Jacobian cancel, G1(wo) remains.
-      out->weight = fresnel_schlick(albedo_, c) * (ggx.g2(wo, wi) / ggx.g1(wo));
-      return true;
-    }
+    case Kind::Ggx:
+      return ms_ ? sample_compensated(wo, u1, u2, uc, out) : sample_ggx(wo, u1, u2, out);
     case Kind::Phong: {
       if (wo.z <= 0) return false;
       // cos(alpha) distributed as (n+1) c^n dc by inversion; 1 - u1 keeps c > 0.
@@ -169,10 +192,119 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
     case Kind::SmoothDielectric:
       return sample_smooth_dielectric(wo, uc, out);
     case Kind::RoughDielectric:
-      return sample_rough_dielectric(wo, u1, u2, uc, out);
+      return ms_ ? sample_compensated(wo, u1, u2, uc, out) : sample_rough_dielectric(wo, u1, u2, uc, out);
     default:
       return false;
   }
+}
+
+Vec3 Bsdf::eval_ggx(const Vec3& wo, const Vec3& wi) const {
+  if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
+  Vec3 h = wo + wi;
+  if (dot(h, h) == 0) return Vec3(0.0f);
+  h = normalize(h);
+  MicrofacetGgx ggx(alpha_);
+  // Cook-Torrance / Walter 2007 eq. 20.
+  return fresnel_schlick(albedo_, dot(wi, h)) * (ggx.d(h) * ggx.g2(wo, wi) / (4.0f * wo.z * wi.z));
+}
+
+float Bsdf::pdf_ggx(const Vec3& wo, const Vec3& wi) const {
+  if (!same_hemisphere_up(wo, wi)) return 0.0f;
+  Vec3 h = wo + wi;
+  if (dot(h, h) == 0) return 0.0f;
+  h = normalize(h);
+  // Visible-normal density times the reflection Jacobian dm/dwi = 1 / (4 wo.m).
+  return MicrofacetGgx(alpha_).pdf_visible(wo, h) / (4.0f * dot(wo, h));
+}
+
+bool Bsdf::sample_ggx(const Vec3& wo, float u1, float u2, BsdfSample* out) const {
+  if (wo.z <= 0) return false;
+  MicrofacetGgx ggx(alpha_);
+  Vec3 m = ggx.sample_visible(wo, u1, u2);
+  float c = dot(wo, m);
+  if (c <= 0) return false;
+  Vec3 wi = reflect(wo, m);
+  if (wi.z <= 0) return false;
+  out->wi = normalize(wi);
+  out->pdf = ggx.pdf_visible(wo, m) / (4.0f * c);
+  // f cos / pdf with the visible-normal pdf: D and the Jacobian cancel, G1(wo) remains.
+  out->weight = fresnel_schlick(albedo_, c) * (ggx.g2(wo, wi) / ggx.g1(wo));
+  return true;
+}
+
+// ---- Multiple-scattering compensation.
+
+float Bsdf::ms_albedo(float mu, int side) const {
+  // The tables are linear in mu between their nodes, so this equals the full lookup.
+  float g = std::clamp(mu, 0.0f, 1.0f) * float(e_nodes_ - 1);
+  int i = std::min(int(g), e_nodes_ - 2);
+  const float* e = e_row_[side];
+  return std::min(1.0f, e[i] + (e[i + 1] - e[i]) * (g - float(i)));
+}
+
+float Bsdf::ms_probability(const Vec3& wo) const {
+  if (wo.z == 0 || (kind_ == Kind::Ggx && wo.z < 0)) return 0.0f;
+  float e = ms_albedo(std::abs(wo.z), wo.z > 0 ? 0 : 1);
+  // The dielectric's two lobes carry E and 1 - E of a white furnace; the conductor's E F_avg
+  // and (1 - E) F_ms (channel means).
+  if (kind_ == Kind::RoughDielectric) return 1.0f - e;
+  float ss = e * ms_pick_ss_, ms = (1.0f - e) * ms_pick_ms_;
+  return ss + ms > 0 ? ms / (ss + ms) : 0.0f;
+}
+
+Vec3 Bsdf::eval_ms(const Vec3& wo, const Vec3& wi) const {
+  if (wo.z == 0 || wi.z == 0) return Vec3(0.0f);
+  int so = wo.z > 0 ? 0 : 1, si = wi.z > 0 ? 0 : 1;
+  float lo = 1.0f - ms_albedo(std::abs(wo.z), so);
+  if (kind_ == Kind::Ggx) {
+    if (so != 0 || si != 0) return Vec3(0.0f);
+    return ms_scale_ * (lo * (1.0f - ms_albedo(wi.z, 0)));
+  }
+  float li = (1.0f - ms_albedo(std::abs(wi.z), si)) / (kPi * (1.0f - e_avg_[si]));
+  if (so == si) return Vec3(reflect_[so] * lo * li);
+  float eta = so == 0 ? ior_ : 1.0f / ior_;
+  return albedo_ * ((1.0f - reflect_[so]) * lo * li / (eta * eta));
+}
+
+float Bsdf::pdf_ms(const Vec3& wo, const Vec3& wi) const {
+  if (wo.z == 0 || wi.z == 0) return 0.0f;
+  bool same = (wo.z > 0) == (wi.z > 0);
+  if (kind_ == Kind::Ggx) return wo.z > 0 && same ? wi.z * kInvPi : 0.0f;
+  float r = reflect_[wo.z > 0 ? 0 : 1];
+  return (same ? r : 1.0f - r) * std::abs(wi.z) * kInvPi;
+}
+
+bool Bsdf::sample_compensated(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const {
+  if (wo.z == 0 || (kind_ == Kind::Ggx && wo.z < 0)) return false;
+  const float one_minus = 0x1.fffffep-1f;
+  float p = ms_probability(wo);
+  if (uc < p) {
+    // The compensation lobe: reflect or transmit, then a cosine direction on that side (Malley).
+    float v = std::min(uc / p, one_minus);
+    bool transmit = kind_ == Kind::RoughDielectric && v >= reflect_[wo.z > 0 ? 0 : 1];
+    float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+    float z = std::sqrt(std::max(0.0f, 1.0f - u1));
+    if (z <= 0) return false;
+    float side = (wo.z > 0) != transmit ? 1.0f : -1.0f;
+    out->wi = {r * std::cos(phi), r * std::sin(phi), side * z};
+    out->transmission = transmit;
+    out->eta = transmit ? (wo.z > 0 ? ior_ : 1.0f / ior_) : 1.0f;
+  } else {
+    float v = std::min((uc - p) / (1.0f - p), one_minus);
+    bool ok = kind_ == Kind::Ggx ? sample_ggx(wo, u1, u2, out) : sample_rough_dielectric(wo, u1, u2, v, out);
+    if (!ok) return false;
+    // The single-scattering sampler gave f_ss cos / pdf_ss and pdf_ss: add the lobe to both.
+    float cos_i = std::abs(out->wi.z), pdf_ss = out->pdf;
+    out->pdf = (1.0f - p) * pdf_ss + p * pdf_ms(wo, out->wi);
+    if (!(out->pdf > 0)) return false;
+    out->weight = (out->weight * pdf_ss + eval_ms(wo, out->wi) * cos_i) / out->pdf;
+    return true;
+  }
+  // A mixture: the weight is the whole f cos over the whole pdf, so that MIS sees the same pdf.
+  out->pdf = pdf(wo, out->wi);
+  if (!(out->pdf > 0)) return false;
+  out->weight = eval(wo, out->wi) * (std::abs(out->wi.z) / out->pdf);
+  return true;
 }
 
 bool Bsdf::sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const {

@@ -10,6 +10,15 @@
 //   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
 //   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
 //               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
+// Energy compensation (Material::energy_compensation, on by default): single-scattering GGX
+// loses the light that bounces more than once between microfacets (31 % kept at roughness 1).
+// A diffuse-like multiple-scattering lobe built on the albedo tables of ggx_albedo.h returns it:
+//   GGX glossy  Kulla & Conty 2017: f_ms = (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)),
+//               times F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) for coloured F0.
+//   Dielectric  the same shape on each side with the total (R + T) albedo E_s of that side,
+//               split into reflection and transmission so that every side conserves energy and
+//               the BTDF stays reciprocal (see bsdf.cpp, Bsdf::Bsdf).
+// The lobe is sampled as a cosine lobe, chosen with a probability from the lobes' albedos.
 #include "renderer/scene/material.h"
 #include "renderer/scene/vec3.h"
 
@@ -41,16 +50,35 @@ class Bsdf {
  private:
   enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothDielectric, RoughDielectric };
 
+  Vec3 eval_ggx(const Vec3& wo, const Vec3& wi) const;
+  float pdf_ggx(const Vec3& wo, const Vec3& wi) const;
+  bool sample_ggx(const Vec3& wo, float u1, float u2, BsdfSample* out) const;
   Vec3 eval_rough_dielectric(Vec3 wo, Vec3 wi) const;
   float pdf_rough_dielectric(Vec3 wo, Vec3 wi) const;
   bool sample_rough_dielectric(Vec3 wo, float u1, float u2, float uc, BsdfSample* out) const;
   bool sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const;
+
+  // Multiple-scattering compensation (ms_ on): side 0 is wo.z > 0, 1 below (dielectrics only).
+  float ms_albedo(float mu, int side) const;       // E of the single-scattering lobe
+  float ms_probability(const Vec3& wo) const;      // of choosing the compensation lobe in sample()
+  Vec3 eval_ms(const Vec3& wo, const Vec3& wi) const;
+  float pdf_ms(const Vec3& wo, const Vec3& wi) const;  // of wi, given that the lobe is chosen
+  bool sample_compensated(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
 
   Kind kind_ = Kind::Black;
   Vec3 albedo_{0.0f};
   float alpha_ = 1.0f;     // GGX roughness, alpha = roughness^2 clamped to >= kMinGgxAlpha
   float exponent_ = 0.0f;  // Phong
   float ior_ = 1.5f;       // inside / outside
+  bool ms_ = false;        // energy compensation active
+  Vec3 ms_scale_{0.0f};    // conductor: F_ms / (pi (1 - E_avg)) per channel
+  float ms_pick_ss_ = 0, ms_pick_ms_ = 0;  // conductor: mean F_avg and F_ms, weights of the lobe choice
+  float e_avg_[2] = {1, 1};  // E_avg per side (the conductor uses side 0)
+  // E(mu) per side at this alpha (and eta) on the tables' mu nodes, so that a lookup is one lerp.
+  static constexpr int kMsNodes = 32;
+  float e_row_[2][kMsNodes] = {};
+  int e_nodes_ = kMsNodes;
+  float reflect_[2] = {1, 1};  // dielectric: reflected fraction of the compensation lobe per side
 };
 
 // Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.

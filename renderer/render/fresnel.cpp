@@ -23,6 +23,14 @@ double fresnel_dielectric(double cos_i, double eta) {
   return 0.5f * (rs * rs + rp * rp);
 }
 
+double fresnel_dielectric_average(double eta) {
+  // Midpoint rule in mu^2 (2 mu dmu = d(mu^2)): smooth but for the kink at the critical angle.
+  const int n = 4096;
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += fresnel_dielectric(std::sqrt((i + 0.5) / n), eta);
+  return s / n;
+}
+
 Vec3 fresnel_schlick(const Vec3& f0, float cos_i) {
   float m = std::clamp(1.0f - cos_i, 0.0f, 1.0f);
   float m5 = (m * m) * (m * m) * m;

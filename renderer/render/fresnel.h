@@ -17,6 +17,9 @@ bool refract(const Vec3& w, const Vec3& n, float eta, Vec3* wt);
 // the critical angle 1 - F loses all float precision (cos_t = sqrt(1 - sin_t^2)).
 double fresnel_dielectric(double cos_i, double eta);
 
+// Hemispherical cosine-weighted average 2 int_0^1 F(mu, eta) mu dmu of fresnel_dielectric.
+double fresnel_dielectric_average(double eta);
+
 // Schlick 1994: f0 + (1 - f0)(1 - cos)^5.
 Vec3 fresnel_schlick(const Vec3& f0, float cos_i);
 

@@ -20,6 +20,7 @@ struct Material {
   float ior = 1.5f;        // dielectric, relative to the outside medium
   Vec3 radiance{0.0f};     // emitted radiance (Emitter)
   bool two_sided = false;  // emitters: emit from both faces (default: front face only)
+  bool energy_compensation = true;  // GGX glossy and rough dielectric: add the multiple-scattering lobe
 };
 
 }  // namespace pdrt

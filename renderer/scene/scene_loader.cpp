@@ -228,7 +228,7 @@ void SceneParser::materials(const JsonNode& n) {
       m.type = MaterialType::Diffuse;
       m.albedo = Vec3(0.8f);
     } else if (type == "glossy") {
-      o.allow({"type", "albedo", "roughness", "exponent", "lobe"});
+      o.allow({"type", "albedo", "roughness", "exponent", "lobe", "energy_compensation"});
       m.type = MaterialType::Glossy;
       m.albedo = Vec3(0.9f);
       auto rough = o.get("roughness"), expo = o.get("exponent"), lobe = o.get("lobe");
@@ -248,16 +248,21 @@ void SceneParser::materials(const JsonNode& n) {
         m.lobe = GlossLobe::Phong;
         m.exponent = expo->positive();
       }
+      if (auto x = o.get("energy_compensation")) {
+        m.energy_compensation = x->boolean();
+        if (m.lobe == GlossLobe::Phong) x->fail_key("applies to the GGX lobe (roughness) only, not to exponent (Phong)");
+      }
     } else if (type == "mirror") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Mirror;
       m.albedo = Vec3(1.0f);
     } else if (type == "dielectric") {
-      o.allow({"type", "albedo", "ior", "roughness"});
+      o.allow({"type", "albedo", "ior", "roughness", "energy_compensation"});
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
       if (auto x = o.get("ior")) m.ior = x->positive();
       if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
     } else {
       o.allow({"type", "radiance", "two_sided"});
       m.type = MaterialType::Emitter;
@@ -485,7 +490,8 @@ void SceneParser::lights(const JsonNode& n) {
 bool same_material(const Material& a, const Material& b) {
   return a.name == b.name && a.type == b.type && is_black(a.albedo - b.albedo) && a.lobe == b.lobe &&
          a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior &&
-         is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided;
+         is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided &&
+         a.energy_compensation == b.energy_compensation;
 }
 
 void SceneParser::load_objs() {

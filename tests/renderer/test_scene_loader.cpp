@@ -556,6 +556,41 @@ TEST_F(SceneLoader, GlossyWithRoughnessAndExponent) {
   EXPECT_ERROR(f, "s.json:5:51: materials.shiny.exponent cannot be combined with roughness");
 }
 
+TEST_F(SceneLoader, EnergyCompensationDefaultsOnAndCanBeSwitchedOff) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {
+    "a": {"type": "glossy", "roughness": 0.5}, "b": {"type": "glossy", "roughness": 0.5, "energy_compensation": false},
+    "c": {"type": "dielectric", "roughness": 0.8}, "d": {"type": "dielectric", "roughness": 0.8, "energy_compensation": false}
+  }
+})"));
+  ASSERT_EQ(s.materials.size(), 4u);
+  EXPECT_TRUE(s.materials[0].energy_compensation);
+  EXPECT_FALSE(s.materials[1].energy_compensation);
+  EXPECT_TRUE(s.materials[2].energy_compensation);
+  EXPECT_FALSE(s.materials[3].energy_compensation);
+}
+
+TEST_F(SceneLoader, EnergyCompensationMustBeABoolean) {
+  fs::path f = scene(kHead + R"(  "materials": {
+    "g": {"type": "glossy", "roughness": 0.5, "energy_compensation": 1}
+  }
+})");
+  EXPECT_ERROR(f, "s.json:5:70: materials.g.energy_compensation must be");
+}
+
+TEST_F(SceneLoader, EnergyCompensationRefusedOnPhongAndDiffuse) {
+  fs::path phong = scene(kHead + R"(  "materials": {
+    "p": {"type": "glossy", "exponent": 20, "energy_compensation": true}
+  }
+})");
+  EXPECT_ERROR(phong, "s.json:5:45: materials.p.energy_compensation applies to the GGX lobe (roughness) only");
+  fs::path diffuse = scene(kHead + R"(  "materials": {
+    "d": {"type": "diffuse", "energy_compensation": true}
+  }
+})");
+  EXPECT_ERROR(diffuse, "s.json:5:30: materials.d");
+  EXPECT_ERROR(diffuse, "energy_compensation");
+}
+
 TEST_F(SceneLoader, AlbedoOutOfRange) {
   fs::path f = scene(kHead + R"(  "materials": {"hot": {"type": "diffuse", "albedo": [1.2, 0, 0]}}
 })");

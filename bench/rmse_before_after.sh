@@ -3,8 +3,9 @@
 # equal time, side by side in one run (issue 14's acceptance table).
 #   bench/rmse_before_after.sh OLD_PDRT NEW_PDRT OUT_DIR [SCALE]
 # SCALE divides each scene's resolution (default 2). Renders are linear TIFF (RGB only) so
-# that `idiff` measures the colour channels; references come from NEW_PDRT (sobol, its own
-# seed). Prints a markdown table; OUT_DIR keeps the images and stats.
+# that `idiff` measures the colour channels. Each build is measured against its own reference
+# (sobol, REF_SPP = 4096 spp, another seed), so the RMSE is noise, not the difference between
+# what the two builds converge to. Prints a markdown table; OUT_DIR keeps images and stats.
 set -euo pipefail
 old=$1 new=$2 out=$3 scale=${4:-2}
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,11 +17,12 @@ echo "|---|---|---|---|---|---|---|---|---|"
 for scene in ${SCENES:-dof-row pool-balls cornell-box soft-shadows}; do
   f=$here/scenes/$scene.json
   read -r w h < <(python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['film']; print(d['width']//$scale, d['height']//$scale)" "$f")
-  ref=$out/$scene-ref.tif
-  [ -f "$ref" ] || "$new" render "$f" --width "$w" --height "$h" --sampler sobol --seed 987654321 --spp ${REF_SPP:-4096} -o "$ref" --quiet --allow-long-render
   declare -A e t
   for who in before after; do
     bin=$old; [ $who = after ] && bin=$new
+    ref=$out/$scene-$who-ref.tif
+    [ -f "$ref" ] || "$bin" render "$f" --width "$w" --height "$h" --sampler sobol --seed 987654321 \
+      --spp "${REF_SPP:-4096}" -o "$ref" --quiet --allow-long-render
     for spp in 16 64 256; do
       img=$out/$scene-$who-$spp.tif
       "$bin" render "$f" --width "$w" --height "$h" --spp "$spp" -o "$img" --stats "$out/$scene-$who-$spp.json" --quiet

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 namespace pdrt {
@@ -103,6 +104,7 @@ TEST(CameraSample, ImportanceWastesNoWeightOnPositiveFilters) {
       fa *= h * h;
     }
     double bound = (fi / fa) * (fi / fa);
+    std::printf("filter %d: useful fraction %.4f (bound %.4f)\n", int(type), useful, bound);
     if (type == FilterType::Gaussian) {
       EXPECT_GE(useful, 0.99);
     }

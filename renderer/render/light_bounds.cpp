@@ -75,30 +75,41 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
   return m;
 }
 
-float LightBounds::importance(const Vec3& p, const Vec3& n) const {
-  const Vec3 pc = box.center();
-  const Vec3 to_p = p - pc;
+float LightBounds::importance(const Vec3& p, const Vec3& n) const { return PackedLightBounds(*this).importance(p, n); }
+
+PackedLightBounds::PackedLightBounds(const LightBounds& b)
+    : center(b.box.center()), w(b.normals.w), cos_o(b.normals.cos_theta), cos_e(b.cos_e), phi(b.phi),
+      two_sided(b.two_sided) {
+  r2 = 0.25f * dot(b.box.diagonal(), b.box.diagonal());  // bounding sphere of the box
+  r = std::sqrt(r2);
+  sin_o = safe_sqrt(1 - cos_o * cos_o);
+}
+
+float PackedLightBounds::importance(const Vec3& p, const Vec3& n) const {
+  const Vec3 to_p = p - center;
   const float d2 = dot(to_p, to_p);
-  const float r2 = 0.25f * dot(box.diagonal(), box.diagonal());  // bounding sphere of the box
-  // Inside the bounding sphere every direction is possible (theta_b = pi), and the distance
-  // is taken as the sphere's radius rather than letting 1/d^2 blow up.
-  const float cos_b = d2 <= r2 ? -1.0f : safe_sqrt(1 - r2 / d2), sin_b = safe_sqrt(1 - cos_b * cos_b);
-  const Vec3 wi = d2 > 0 ? to_p / std::sqrt(d2) : n;
+  // Inside the bounding sphere every direction is possible (theta_b = pi: every clamped
+  // angle below is 0), and the distance is taken as the sphere's radius rather than letting
+  // 1/d^2 blow up.
+  if (d2 <= r2) return cos_e < 1 && r2 > 0 ? phi / r2 : 0.0f;
+  const float inv_d = 1 / std::sqrt(d2);
+  const Vec3 wi = to_p * inv_d;
+  const float sin_b = std::min(1.0f, r * inv_d), cos_b = safe_sqrt(1 - sin_b * sin_b);
   // theta' = max(0, theta_w - theta_o - theta_b): the smallest angle between an emitter
   // normal and a direction from the box to p.
-  float cos_w = dot(normals.w, wi);
-  if (two_sided) cos_w = std::abs(cos_w);
-  const float sin_w = safe_sqrt(1 - cos_w * cos_w);
-  const float cos_o = normals.cos_theta, sin_o = safe_sqrt(1 - cos_o * cos_o);
-  const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-  const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-  const float cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+  float cos_p = 1;
+  if (cos_o > -1) {
+    float cos_w = dot(w, wi);
+    if (two_sided) cos_w = std::abs(cos_w);
+    const float sin_w = safe_sqrt(1 - cos_w * cos_w);
+    const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+  }
   if (cos_p <= cos_e) return 0;  // p is outside every emitter's emission cone: exact zero
-  float imp = phi * cos_p / std::max(d2, r2);
   // The receiver's cosine, bounded the same way (|cos|: either side, for transmission).
   const float cos_i = std::abs(dot(wi, n)), sin_i = safe_sqrt(1 - cos_i * cos_i);
-  imp *= cos_sub_clamped(sin_i, cos_i, sin_b, cos_b);
-  return std::max(imp, 0.0f);
+  return std::max(0.0f, phi * cos_p * cos_sub_clamped(sin_i, cos_i, sin_b, cos_b) / d2);
 }
 
 }  // namespace pdrt

@@ -46,4 +46,15 @@ struct LightBounds {
 
 LightBounds merge(const LightBounds& a, const LightBounds& b);
 
+// What importance() reads, with its derived terms (box centre, bounding-sphere radius, sin
+// theta_o) precomputed: the BVH evaluates it twice per level of every light choice.
+struct PackedLightBounds {
+  Vec3 center, w{0, 0, 1};
+  float r2 = 0, r = 0, cos_o = 1, sin_o = 0, cos_e = 0, phi = 0;
+  bool two_sided = false;
+  PackedLightBounds() = default;
+  explicit PackedLightBounds(const LightBounds& b);
+  float importance(const Vec3& p, const Vec3& n) const;
+};
+
 }  // namespace pdrt

@@ -32,6 +32,17 @@ float split_cost(const LightBounds& b, const Box3& node_box, int axis) {
   return b.phi * orientation_measure(b) * kr * b.box.surface_area();
 }
 
+// Same box, normal cone, emission angle and sidedness, and power within 1e-5.
+bool nearly_equal(const LightBounds& a, const LightBounds& b) {
+  auto same = [](const Vec3& x, const Vec3& y, float tol) {
+    return std::abs(x.x - y.x) <= tol && std::abs(x.y - y.y) <= tol && std::abs(x.z - y.z) <= tol;
+  };
+  const float size = max_component(a.box.diagonal()) + 1e-30f;
+  return a.two_sided == b.two_sided && a.cos_e == b.cos_e && a.normals.cos_theta == b.normals.cos_theta &&
+         same(a.normals.w, b.normals.w, 1e-6f) && same(a.box.lo, b.box.lo, 1e-6f * size) &&
+         same(a.box.hi, b.box.hi, 1e-6f * size) && std::abs(a.phi - b.phi) <= 1e-5f * std::max(a.phi, b.phi);
+}
+
 }  // namespace
 
 LightBvh::LightBvh(const std::vector<LightBounds>& lights) {
@@ -45,16 +56,16 @@ LightBvh::LightBvh(const std::vector<LightBounds>& lights) {
   build(ids, centroids, lights, 0, int(ids.size()), 0, 0);
 }
 
-int LightBvh::build(std::vector<int>& ids, std::vector<Vec3>& centroids, const std::vector<LightBounds>& lights,
-                    int begin, int end, int depth, uint64_t trail) {
+LightBounds LightBvh::build(std::vector<int>& ids, std::vector<Vec3>& centroids, const std::vector<LightBounds>& lights,
+                            int begin, int end, int depth, uint64_t trail) {
   const int index = int(nodes_.size());
   nodes_.push_back({});
   if (end - begin == 1) {
     const int id = ids[begin];
-    nodes_[index].bounds = lights[id];
+    nodes_[index].bounds = PackedLightBounds(lights[id]);
     nodes_[index].light = id;
     trail_[id] = trail, depth_[id] = uint8_t(depth);
-    return index;
+    return lights[id];
   }
   if (depth >= kMaxDepth) throw std::logic_error("light BVH deeper than its bit trail");
   LightBounds all;
@@ -97,14 +108,19 @@ int LightBvh::build(std::vector<int>& ids, std::vector<Vec3>& centroids, const s
     });
   }
   if (mid == begin || mid == end) mid = (begin + end) / 2;
-  build(ids, centroids, lights, begin, mid, depth + 1, trail);
-  const int second = build(ids, centroids, lights, mid, end, depth + 1, trail | (uint64_t(1) << depth));
-  nodes_[index].bounds = all;
-  nodes_[index].second = second;
-  return index;
+  const LightBounds a = build(ids, centroids, lights, begin, mid, depth + 1, trail);
+  nodes_[index].second = int(nodes_.size());
+  const LightBounds b = build(ids, centroids, lights, mid, end, depth + 1, trail | (uint64_t(1) << depth));
+  nodes_[index].bounds = PackedLightBounds(all);
+  nodes_[index].halves = nearly_equal(a, b);
+  return all;
 }
 
 bool LightBvh::first_child_probability(int i, const Vec3& p, const Vec3& n, float* p0) const {
+  if (nodes_[i].halves) {
+    *p0 = 0.5f;
+    return true;
+  }
   const float i0 = nodes_[i + 1].bounds.importance(p, n), i1 = nodes_[nodes_[i].second].bounds.importance(p, n);
   if (!(i0 + i1 > 0)) return false;
   *p0 = i0 / (i0 + i1);

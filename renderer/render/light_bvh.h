@@ -28,12 +28,15 @@ class LightBvh {
 
  private:
   struct Node {
-    LightBounds bounds;
-    int second = -1;  // interior: index of the second child (the first follows the node)
-    int light = -1;   // leaf: the light id
+    PackedLightBounds bounds;
+    int second = -1;     // interior: index of the second child (the first follows the node)
+    int light = -1;      // leaf: the light id
+    bool halves = false; // interior: the children's bounds agree (the two triangles of a quad), so
+                         // each gets 1/2 without evaluating them; any fixed split is unbiased
   };
-  int build(std::vector<int>& ids, std::vector<Vec3>& centroids, const std::vector<LightBounds>& lights,
-            int begin, int end, int depth, uint64_t trail);
+  // Builds the subtree of ids[begin, end) and returns its bounds.
+  LightBounds build(std::vector<int>& ids, std::vector<Vec3>& centroids, const std::vector<LightBounds>& lights,
+                    int begin, int end, int depth, uint64_t trail);
   // Probability of taking the first child of interior node `i` at p; false if neither child
   // has importance.
   bool first_child_probability(int i, const Vec3& p, const Vec3& n, float* p0) const;

@@ -131,8 +131,9 @@ ErrorPoint LightSampler::triangle_point_at(int shape, int prim, float time, floa
 
 bool LightSampler::select(const Vec3& ref, const Vec3& n, float u, std::size_t* light, float* pmf) const {
   // The environment against all other lights together, both as irradiance estimates; then
-  // the BVH with the pick number rescaled to what is left of [0, 1).
-  const float e = env_irradiance_, b = bvh_.importance(ref, n);
+  // the BVH with the pick number rescaled to what is left of [0, 1). Without an environment
+  // the root's importance is not needed (the BVH fails if all of its lights have none).
+  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;
   if (!(e + b > 0)) return false;
   const float pe = e / (e + b);
   if (u < pe) {
@@ -148,7 +149,7 @@ bool LightSampler::select(const Vec3& ref, const Vec3& n, float u, std::size_t* 
 }
 
 float LightSampler::select_pmf(const Vec3& ref, const Vec3& n, std::size_t light) const {
-  const float e = env_irradiance_, b = bvh_.importance(ref, n);
+  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;  // as in select()
   if (!(e + b > 0)) return 0;
   const float pe = e / (e + b);
   if (light == environment_id()) return pe;

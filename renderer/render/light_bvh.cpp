@@ -51,7 +51,6 @@ LightBvh::LightBvh(const std::vector<LightBounds>& lights) {
   std::vector<Vec3> centroids(lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i) ids[i] = int(i), centroids[i] = lights[i].box.center();
   trail_.assign(lights.size(), 0);
-  depth_.assign(lights.size(), 0);
   nodes_.reserve(2 * lights.size());
   build(ids, centroids, lights, 0, int(ids.size()), 0, 0);
 }
@@ -64,7 +63,7 @@ LightBounds LightBvh::build(std::vector<int>& ids, std::vector<Vec3>& centroids,
     const int id = ids[begin];
     nodes_[index].bounds = PackedLightBounds(lights[id]);
     nodes_[index].light = id;
-    trail_[id] = trail, depth_[id] = uint8_t(depth);
+    trail_[id] = trail;
     return lights[id];
   }
   if (depth >= kMaxDepth) throw std::logic_error("light BVH deeper than its bit trail");

@@ -24,7 +24,6 @@ class LightBvh {
   bool sample(const Vec3& p, const Vec3& n, float u, int* light, float* pmf) const;
   // The probability that sample() chooses `light` at p (given that it is called).
   float pmf(const Vec3& p, const Vec3& n, int light) const;
-  int depth(int light) const { return depth_[light]; }
 
  private:
   struct Node {
@@ -43,7 +42,6 @@ class LightBvh {
 
   std::vector<Node> nodes_;
   std::vector<uint64_t> trail_;  // per light: bit k set = the second child at depth k
-  std::vector<uint8_t> depth_;   // per light: its leaf's depth
 };
 
 }  // namespace pdrt

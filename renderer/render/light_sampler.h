@@ -52,7 +52,7 @@ class LightSampler {
 
  private:
   struct Entry {
-    int shape;  // -1 = environment
+    int shape;  // the emitting shape
     int prim;   // triangle index, -1 for spheres
   };
   LightBounds bounds_of(const Entry& e) const;

@@ -26,44 +26,90 @@ ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, 
 
 }  // namespace
 
+// Moving emitters: the box over the shutter of points that follow the shape's transform,
+// from the transform at kTimeSamples times, padded by the largest step a point takes between
+// two samples (a bound on how far it strays from the sampled positions in between). Their
+// normal cone is the whole sphere, so an error here changes only the estimate, never makes
+// a contributing light's importance zero.
+constexpr int kTimeSamples = 65;
+
 LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
   const SceneDesc& d = scene.desc();
-  std::vector<double> power;
   first_entry_.assign(d.shapes.size(), -1);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     const ShapeDesc& s = d.shapes[i];
     const Material& m = d.materials[s.material];
     if (m.type != MaterialType::Emitter || is_black(m.radiance)) continue;
-    double sides = m.two_sided ? 2.0 : 1.0, lum = std::max(luminance(m.radiance), 1e-6f);
-    Affine xf = scene.transform(int(i), 0.0f);
     first_entry_[i] = int64_t(entries_.size());
     if (s.kind == ShapeDesc::Kind::Sphere) {
-      float r = sphere_radius_at(scene, int(i), xf);
       entries_.push_back({int(i), -1});
-      power.push_back(lum * sides * 4 * kPi * r * r);
       continue;
     }
-    const auto& pos = scene.positions(int(i));
-    const auto& idx = scene.indices(int(i));
-    for (std::size_t t = 0; t < idx.size() / 3; ++t) {
-      Vec3 a = xf.point(pos[idx[3 * t]]), b = xf.point(pos[idx[3 * t + 1]]), c = xf.point(pos[idx[3 * t + 2]]);
-      entries_.push_back({int(i), int(t)});
-      power.push_back(lum * sides * 0.5 * length(cross(b - a, c - a)));
-    }
+    for (std::size_t t = 0; t < scene.indices(int(i)).size() / 3; ++t) entries_.push_back({int(i), int(t)});
   }
+  std::vector<LightBounds> bounds;
+  bounds.reserve(entries_.size());
+  for (const Entry& e : entries_) bounds.push_back(bounds_of(e));
+  bvh_ = LightBvh(bounds);
   env_ = d.environment.radiance;
-  if (!is_black(env_)) {
-    env_entry_ = int64_t(entries_.size());
-    entries_.push_back({-1, -1});
-    float r = scene.bounds_radius();
-    power.push_back(std::max(luminance(env_), 1e-6f) * kPi * r * r * 4 * kPi);
+  // The environment's estimated contribution in the BVH's units (irradiance): a constant
+  // radiance L over the hemisphere on either side of n delivers E = pi L. No scene-size
+  // term: the lights' importance falls with distance, the environment's does not.
+  if (!is_black(env_)) env_irradiance_ = kPi * std::max(luminance(env_), 1e-6f);
+}
+
+LightBounds LightSampler::bounds_of(const Entry& e) const {
+  const Material& m = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
+  const float lum = std::max(luminance(m.radiance), 1e-6f);
+  const bool moving = scene_.moving(e.shape);
+  LightBounds b;
+  b.cos_e = 0;  // diffuse emission: pi/2 past the normal
+  b.two_sided = m.two_sided;
+  if (e.prim < 0) {
+    // A sphere emits in every direction: full normal cone; phi uses its projected area.
+    const Vec3 c0 = scene_.sphere_center(e.shape);
+    float rmax = 0, step = 0;
+    Vec3 prev;
+    for (int k = 0; k < (moving ? kTimeSamples : 1); ++k) {
+      const Affine xf = scene_.transform(e.shape, moving ? float(k) / (kTimeSamples - 1) : 0.0f);
+      const Vec3 c = xf.point(c0);
+      const float r = sphere_radius_at(scene_, e.shape, xf);
+      b.box.extend(c - Vec3(r)), b.box.extend(c + Vec3(r));
+      if (k > 0) step = std::max(step, length(c - prev));
+      prev = c, rmax = std::max(rmax, r);
+    }
+    b.box.lo -= Vec3(step), b.box.hi += Vec3(step);
+    b.phi = lum * kPi * rmax * rmax;
+    b.normals = DirectionCone{};
+    return b;
   }
-  double total = 0;
-  for (double p : power) total += p;
-  cdf_.resize(power.size());
-  double run = 0;
-  for (std::size_t i = 0; i < power.size(); ++i) run += power[i], cdf_[i] = run / total;
-  if (!cdf_.empty()) cdf_.back() = 1.0;
+  const auto& pos = scene_.positions(e.shape);
+  const uint32_t* t = &scene_.indices(e.shape)[3 * std::size_t(e.prim)];
+  const Vec3 a = pos[t[0]], bb = pos[t[1]], c = pos[t[2]];
+  if (!moving) {
+    b.box.extend(a), b.box.extend(bb), b.box.extend(c);
+    const Vec3 n = cross(bb - a, c - a);
+    const float len = length(n);
+    b.phi = len > 0 ? lum * 0.5f * len : 0.0f;  // L x area: zero-area triangles are never chosen
+    b.normals = {len > 0 ? n / len : Vec3(0, 0, 1), 1.0f};
+    return b;
+  }
+  float step = 0, area = 0;
+  Vec3 prev[3];
+  for (int k = 0; k < kTimeSamples; ++k) {
+    const Affine xf = scene_.transform(e.shape, float(k) / (kTimeSamples - 1));
+    const Vec3 w[3] = {xf.point(a), xf.point(bb), xf.point(c)};
+    for (int j = 0; j < 3; ++j) {
+      b.box.extend(w[j]);
+      if (k > 0) step = std::max(step, length(w[j] - prev[j]));
+      prev[j] = w[j];
+    }
+    area = std::max(area, 0.5f * length(cross(w[1] - w[0], w[2] - w[0])));
+  }
+  b.box.lo -= Vec3(step), b.box.hi += Vec3(step);
+  b.phi = area > 0 ? lum * area : 0.0f;
+  b.normals = DirectionCone{};  // it may turn during the shutter
+  return b;
 }
 
 void LightSampler::triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const {
@@ -83,18 +129,41 @@ ErrorPoint LightSampler::triangle_point_at(int shape, int prim, float time, floa
   return scene_.moving(shape) ? transform_point(scene_.transform(shape, time), x) : x;
 }
 
-float LightSampler::select_pdf(std::size_t e) const {
-  return float(cdf_[e] - (e ? cdf_[e - 1] : 0.0));
+bool LightSampler::select(const Vec3& ref, const Vec3& n, float u, std::size_t* light, float* pmf) const {
+  // The environment against all other lights together, both as irradiance estimates; then
+  // the BVH with the pick number rescaled to what is left of [0, 1). Without an environment
+  // the root's importance is not needed (the BVH fails if all of its lights have none).
+  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;
+  if (!(e + b > 0)) return false;
+  const float pe = e / (e + b);
+  if (u < pe) {
+    *light = environment_id(), *pmf = pe;
+    return true;
+  }
+  u = std::min((u - pe) / (1 - pe), 0x1.fffffep-1f);
+  int id;
+  float pb;
+  if (!bvh_.sample(ref, n, u, &id, &pb)) return false;
+  *light = std::size_t(id), *pmf = (1 - pe) * pb;
+  return *pmf > 0;
 }
 
-bool LightSampler::sample(const Vec3& ref, float time, float u_pick, std::array<double, 2> u,
+float LightSampler::select_pmf(const Vec3& ref, const Vec3& n, std::size_t light) const {
+  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;  // as in select()
+  if (!(e + b > 0)) return 0;
+  const float pe = e / (e + b);
+  if (light == environment_id()) return pe;
+  if (!(b > 0)) return 0;
+  return (1 - pe) * bvh_.pmf(ref, n, int(light));
+}
+
+bool LightSampler::sample(const Vec3& ref, const Vec3& n, float time, float u_pick, std::array<double, 2> u,
                           LightSample* out) const {
-  if (cdf_.empty()) return false;
-  std::size_t e = std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u_pick)) - cdf_.begin());
-  e = std::min(e, cdf_.size() - 1);
-  const Entry& en = entries_[e];
+  std::size_t e;
+  float pick;
+  if (!select(ref, n, u_pick, &e, &pick)) return false;
   bool ok;
-  if (en.shape < 0) {
+  if (e == environment_id()) {
     // Uniform over the sphere of directions.
     float z = float(1 - 2 * u[0]), r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
     out->wi = {r * std::cos(phi), r * std::sin(phi), z};
@@ -103,13 +172,13 @@ bool LightSampler::sample(const Vec3& ref, float time, float u_pick, std::array<
     out->radiance = env_;
     out->pdf = 1.0f / (4 * kPi);
     ok = true;
-  } else if (en.prim < 0) {
-    ok = sample_sphere(en, ref, time, u, out);
+  } else if (entries_[e].prim < 0) {
+    ok = sample_sphere(entries_[e], ref, time, u, out);
   } else {
-    ok = sample_triangle(en, ref, time, u, out);
+    ok = sample_triangle(entries_[e], ref, time, u, out);
   }
   if (!ok) return false;
-  out->pdf *= select_pdf(e);
+  out->pdf *= pick;
   return out->pdf > 0;
 }
 
@@ -199,11 +268,12 @@ float LightSampler::sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const 
   return 1.0f / (2 * kPi * (sin2_max / (1 + cos_max)));
 }
 
-float LightSampler::pdf(const Vec3& ref, const SurfaceHit& hit, float time) const {
+float LightSampler::pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, float time) const {
   int64_t first = first_entry_[hit.shape];
   if (first < 0) return 0;
   const ShapeDesc& s = scene_.desc().shapes[hit.shape];
-  if (s.kind == ShapeDesc::Kind::Sphere) return select_pdf(first) * sphere_pdf(hit.shape, ref, hit.p, hit.ng, time);
+  if (s.kind == ShapeDesc::Kind::Sphere)
+    return select_pmf(ref, n, std::size_t(first)) * sphere_pdf(hit.shape, ref, hit.p, hit.ng, time);
   std::size_t e = std::size_t(first + hit.prim);
   Vec3 a, b, c;
   triangle_at(hit.shape, hit.prim, time, &a, &b, &c);
@@ -212,11 +282,11 @@ float LightSampler::pdf(const Vec3& ref, const SurfaceHit& hit, float time) cons
   float d2 = dot(d, d);
   float cos_l = std::abs(dot(hit.ng, d)) / std::sqrt(d2);
   if (area <= 0 || cos_l <= 0) return 0;
-  return select_pdf(e) * d2 / (cos_l * area);
+  return select_pmf(ref, n, e) * d2 / (cos_l * area);
 }
 
-float LightSampler::environment_pdf() const {
-  return env_entry_ < 0 ? 0.0f : select_pdf(std::size_t(env_entry_)) / (4 * kPi);
+float LightSampler::environment_pdf(const Vec3& ref, const Vec3& n) const {
+  return env_irradiance_ > 0 ? select_pmf(ref, n, environment_id()) / (4 * kPi) : 0.0f;
 }
 
 Vec3 LightSampler::emitted(const SurfaceHit& hit) const {

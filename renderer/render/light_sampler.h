@@ -1,10 +1,12 @@
 #pragma once
 // Next-event estimation targets (Cook §5.3 "light area" dimension): every emissive triangle,
-// every emissive sphere and the constant environment, chosen in proportion to their power.
+// every emissive sphere and the constant environment, chosen by their estimated contribution
+// at the shading point (a light BVH, light_bvh.h, with the environment on the same footing).
 // Triangles are sampled uniformly by area, spheres by the cone they subtend, the
 // environment uniformly over the sphere of directions. Moving emitters are sampled where
 // they are at the ray's time, using the same transform Embree intersects.
 #include "renderer/render/embree_scene.h"
+#include "renderer/render/light_bvh.h"
 
 #include <array>
 #include <vector>
@@ -24,15 +26,24 @@ struct LightSample {
 class LightSampler {
  public:
   LightSampler(const EmbreeScene& scene);
-  bool empty() const { return cdf_.empty(); }
+  bool empty() const { return light_count() == 0; }
 
-  // u_pick chooses the light; u samples a point on it.
-  bool sample(const Vec3& ref, float time, float u_pick, std::array<double, 2> u, LightSample* out) const;
+  // u_pick chooses the light for the shading point `ref` with unit shading normal `n`
+  // (either side); u samples a point on it.
+  bool sample(const Vec3& ref, const Vec3& n, float time, float u_pick, std::array<double, 2> u,
+              LightSample* out) const;
 
-  // Solid-angle pdf that sample() would have produced the emitter point `hit` seen from
-  // `ref` (for MIS after BSDF sampling hit an emitter).
-  float pdf(const Vec3& ref, const SurfaceHit& hit, float time) const;
-  float environment_pdf() const;
+  // Solid-angle pdf that sample() at (ref, n) would have produced the emitter point `hit`
+  // (for MIS after BSDF sampling hit an emitter), and the direction pdf of the environment.
+  float pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, float time) const;
+  float environment_pdf(const Vec3& ref, const Vec3& n) const;
+
+  // Light selection alone. Light ids: 0 .. light_count() - 1, one per emissive triangle or
+  // sphere in shape order, then the environment (if it emits).
+  std::size_t light_count() const { return entries_.size() + (env_irradiance_ > 0 ? 1 : 0); }
+  std::size_t environment_id() const { return entries_.size(); }
+  bool select(const Vec3& ref, const Vec3& n, float u, std::size_t* light, float* pmf) const;
+  float select_pmf(const Vec3& ref, const Vec3& n, std::size_t light) const;
 
   // Radiance leaving an emitter at `hit` toward the ray that found it (0 for non-emitters and
   // back faces of one-sided emitters).
@@ -41,10 +52,10 @@ class LightSampler {
 
  private:
   struct Entry {
-    int shape;  // -1 = environment
+    int shape;  // the emitting shape
     int prim;   // triangle index, -1 for spheres
   };
-  float select_pdf(std::size_t entry) const;
+  LightBounds bounds_of(const Entry& e) const;
   // World-space corners of a triangle of `shape` at the normalised shutter time.
   void triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const;
   // The point of that triangle at barycentrics (b1, b2), built where the geometry is stored
@@ -56,9 +67,9 @@ class LightSampler {
 
   const EmbreeScene& scene_;
   std::vector<Entry> entries_;
-  std::vector<double> cdf_;           // inclusive prefix sums of power, normalised to 1
+  LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1
-  int64_t env_entry_ = -1;
+  float env_irradiance_ = 0;          // pi x luminance of the environment, 0 if none
   Vec3 env_;
 };
 

@@ -32,7 +32,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
   float eta_scale = 1;   // product of eta^2 over transmissions: beta * eta_scale is free of the 1/eta^2 radiance scaling
   float prev_pdf = 0;    // solid-angle pdf of the BSDF sample that produced `ray`
   bool prev_delta = true;  // camera rays and delta lobes: emitters hit are counted fully
-  Vec3 prev_p;
+  Vec3 prev_p, prev_n;   // the previous vertex and its shading normal: light selection depends on them
   const float time = ray.time;
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
@@ -47,7 +47,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (!found) {
       const Vec3& env = lights_.environment();
       if (!is_black(env)) {
-        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf());
+        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf(prev_p, prev_n));
         res.radiance += beta * env * w;
       }
       break;
@@ -63,7 +63,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (mat.type == MaterialType::Emitter) {
       Vec3 le = lights_.emitted(hit);
       if (!is_black(le)) {
-        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.pdf(prev_p, hit, time));
+        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.pdf(prev_p, prev_n, hit, time));
         res.radiance += beta * le * w;
       }
       break;  // emitters do not scatter
@@ -82,7 +82,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (!bsdf.is_delta() && !lights_.empty()) {
       LightSample ls;
       float u_pick = float(ps.get_1d(Family::Time, salt_light_pick(depth)));
-      if (lights_.sample(hit.p, time, u_pick, ps.get_2d(Family::Light, depth), &ls) && !is_black(ls.radiance)) {
+      if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, depth), &ls) && !is_black(ls.radiance)) {
         Vec3 wi = frame.to_local(ls.wi);
         Vec3 f = bsdf.eval(wo, wi);
         // Light leaking through the geometric surface is rejected (shading normals).
@@ -112,7 +112,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (is_black(beta) || !is_finite(beta)) break;
     prev_pdf = bs.pdf;
     prev_delta = bs.delta;
-    prev_p = hit.p;
+    prev_p = hit.p, prev_n = ns;
 
     if (bs.transmission) eta_scale *= bs.eta * bs.eta;
 

@@ -15,19 +15,6 @@
 using namespace pdrt;
 using namespace pdrt::test;
 
-namespace {
-
-// Form factor from a point to the rectangle [0,x]x[0,y] at height h whose corner is
-// straight above the point (parallel planes), extended to signed extents.
-double corner_form_factor(double x, double y, double h) {
-  double X = std::abs(x) / h, Y = std::abs(y) / h;
-  double a = std::sqrt(1 + X * X), b = std::sqrt(1 + Y * Y);
-  double f = (X / a * std::atan(Y / a) + Y / b * std::atan(X / b)) / (2 * M_PI);
-  return (x < 0 ? -f : f) * (y < 0 ? -1 : 1);
-}
-
-}  // namespace
-
 // A diffuse sphere of albedo a in a uniform white environment shows exactly a (furnace).
 TEST(RenderAnalytic, FurnaceDiffuseSphereShowsItsAlbedo) {
   SceneDesc s = base_scene(48, 48, 64);

@@ -3,6 +3,8 @@
 #include "renderer/render/renderer.h"
 #include "renderer/scene/scene_desc.h"
 
+#include <cmath>
+
 namespace pdrt::test {
 
 inline int add_material(SceneDesc& s, Material m) {
@@ -55,6 +57,22 @@ inline ShapeDesc sphere(Vec3 center, float radius, int material) {
   s.radius = radius;
   s.material = material;
   return s;
+}
+
+// Form factor from a point to the rectangle [0,x]x[0,y] at height h whose corner is
+// straight above the point (parallel planes), extended to signed extents.
+inline double corner_form_factor(double x, double y, double h) {
+  double X = std::abs(x) / h, Y = std::abs(y) / h;
+  double a = std::sqrt(1 + X * X), b = std::sqrt(1 + Y * Y);
+  double f = (X / a * std::atan(Y / a) + Y / b * std::atan(X / b)) / (2 * M_PI);
+  return (x < 0 ? -f : f) * (y < 0 ? -1 : 1);
+}
+
+// Form factor from the point (px, 0, pz) with normal +y to the rectangle [x0,x1]x[z0,z1] at
+// height h facing down.
+inline double rect_form_factor(double px, double pz, double x0, double x1, double z0, double z1, double h) {
+  return corner_form_factor(x1 - px, z1 - pz, h) - corner_form_factor(x0 - px, z1 - pz, h) -
+         corner_form_factor(x1 - px, z0 - pz, h) + corner_form_factor(x0 - px, z0 - pz, h);
 }
 
 inline SceneDesc base_scene(int width, int height, int spp) {

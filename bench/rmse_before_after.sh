@@ -10,7 +10,7 @@ set -euo pipefail
 old=$1 new=$2 out=$3 scale=${4:-2}
 here=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$out"
-rms() { idiff -a "$1" "$2" 2>/dev/null | sed -n 's/.*RMS error = \([0-9.e+-]*\).*/\1/p' | head -1; }
+rms() { { idiff -a "$1" "$2" 2>/dev/null || true; } | sed -n 's/.*RMS error = \([0-9.e+-]*\).*/\1/p' | head -1; }
 secs() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['seconds'])" "$1"; }
 echo "| scene | spp | before RMSE | after RMSE | ratio | before s | after s | after RMSE at before's time | ratio |"
 echo "|---|---|---|---|---|---|---|---|---|"

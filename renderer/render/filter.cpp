@@ -66,6 +66,12 @@ Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius) {
 FilterSample Filter::sample(std::array<double, 2> u) const {
   double pdf = 0;
   FilterSample s;
+  if (type_ == FilterType::Box) {
+    // Uniform: the table's inversion is the identity map, so skip it.
+    s.x = float((2 * u[0] - 1) * radius_), s.y = float((2 * u[1] - 1) * radius_);
+    s.weight = 4 * radius_ * radius_;
+    return s;
+  }
   if (radial_.size() > 0) {
     // The concentric map keeps the pattern's stratification and makes rho^2 uniform; the
     // radial table then moves rho^2 to s = d^2. Area density = pdf(s) / pi.

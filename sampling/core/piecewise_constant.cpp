@@ -20,13 +20,20 @@ PiecewiseConstant1D::PiecewiseConstant1D(const std::vector<double>& f, double lo
     for (std::size_t i = 1; i <= n; ++i) cdf_[i] = double(i) / double(n);
   }
   cdf_[n] = 1.0;
+  guide_.resize(n);
+  std::size_t o = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double u = double(j) / double(n);
+    while (o + 1 < n && cdf_[o + 1] <= u) ++o;
+    guide_[j] = uint32_t(o);
+  }
 }
 
 double PiecewiseConstant1D::sample(double u, double* pdf, std::size_t* cell) const {
   const std::size_t n = f_.size();
-  // The last cell whose cdf start is <= u; zero-width cells are never chosen.
-  std::size_t o = std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
-  o = std::min(n - 1, o == 0 ? 0 : o - 1);
+  // The cell with cdf_[o] <= u < cdf_[o + 1]: zero-width cells are never chosen.
+  std::size_t o = guide_[std::min(n - 1, std::size_t(std::max(0.0, u) * double(n)))];
+  while (o + 1 < n && cdf_[o + 1] <= u) ++o;
   double width = cdf_[o + 1] - cdf_[o], du = u - cdf_[o];
   if (width > 0) du /= width;
   du = std::clamp(du, 0.0, 1.0);

@@ -4,6 +4,7 @@
 // monotone, so a stratified or Poisson-disk input pattern stays well distributed after it.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace pdrt {
@@ -22,6 +23,9 @@ class PiecewiseConstant1D {
 
  private:
   std::vector<double> f_, cdf_;  // cdf_ has size() + 1 entries, from 0 to 1
+  // guide_[j]: the first cell whose cdf end exceeds j / size(), so a lookup starts next to its
+  // cell and scans O(1) cells on average instead of a binary search.
+  std::vector<uint32_t> guide_;
   double lo_ = 0, hi_ = 1, integral_ = 0;
 };
 

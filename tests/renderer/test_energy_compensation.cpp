@@ -1,7 +1,6 @@
 // Multiple-scattering energy compensation (Kulla & Conty 2017; renderer/render/bsdf.h): white
 // rough GGX conductors and rough dielectrics keep all the energy in a white furnace, and the
 // switch (Material::energy_compensation) brings back single scattering's loss.
-#include "renderer/render/thin_lens_camera.h"
 #include "sampling/core/rng.h"
 #include "tests/support/render_fixtures.h"
 #include "tests/support/sphere_quadrature.h"
@@ -26,23 +25,13 @@ Material white_conductor(float roughness, bool compensate) {
 // Mean of the pixels inside 0.8 of the silhouette of a unit sphere, away from the origin, in a
 // white environment; the path depth allows the internal bounces of a dielectric.
 double furnace(const Material& m) {
-  const int W = 32;
   const Vec3 centre(40, -25, 300);
-  SceneDesc s = base_scene(W, W, 64);
+  SceneDesc s = furnace_sphere(32, 32, 64, centre, m);
   s.integrator.max_depth = 64;
-  s.camera.position = centre + Vec3(0, 0, 4), s.camera.look_at = centre, s.camera.vfov_deg = 30;
-  s.environment.radiance = Vec3(1.0f);
-  s.shapes.push_back(sphere(centre, 1, add_material(s, m)));
   Image im = render_quietly(s).image;
-  ThinLensCamera cam(s.camera, W, W);
-  const double rad = 0.8 * (cam.project(centre + Vec3(0.5f, 0, 1))[0] - W / 2.0);
   double sum = 0;
   int n = 0;
-  for (int y = 0; y < W; ++y)
-    for (int x = 0; x < W; ++x) {
-      const double dx = x + 0.5 - W / 2.0, dy = y + 0.5 - W / 2.0;
-      if (dx * dx + dy * dy <= rad * rad) sum += mean_rgb(im, x, y), ++n;
-    }
+  for (auto [x, y] : pixels_inside_silhouette(s, centre, 0.8)) sum += mean_rgb(im, x, y), ++n;
   EXPECT_GT(n, 100);
   return sum / n;
 }

@@ -1,7 +1,11 @@
 #pragma once
 // Small scenes built in code for the analytic renderer tests.
 #include "renderer/render/renderer.h"
+#include "renderer/render/thin_lens_camera.h"
 #include "renderer/scene/scene_desc.h"
+
+#include <utility>
+#include <vector>
 
 #include <cmath>
 
@@ -84,6 +88,31 @@ inline SceneDesc base_scene(int width, int height, int spp) {
   s.sampler.type = "poisson";
   s.sampler.seed = 7;
   return s;
+}
+
+// A white furnace: a unit sphere of material `m` at `centre`, seen head-on from 4 units
+// (vertical field of view 30 degrees) in a white environment.
+inline SceneDesc furnace_sphere(int width, int height, int spp, Vec3 centre, Material m) {
+  SceneDesc s = base_scene(width, height, spp);
+  s.camera.position = centre + Vec3(0, 0, 4), s.camera.look_at = centre, s.camera.vfov_deg = 30;
+  s.environment.radiance = Vec3(1.0f);
+  s.shapes.push_back(sphere(centre, 1, add_material(s, std::move(m))));
+  return s;
+}
+
+// The pixels of furnace_sphere()'s image whose centres lie within `fraction` of a radius the
+// silhouette contains.
+inline std::vector<std::pair<int, int>> pixels_inside_silhouette(const SceneDesc& s, Vec3 centre, double fraction) {
+  const int W = s.film.width, H = s.film.height;
+  ThinLensCamera cam(s.camera, W, H);
+  const double rad = fraction * (cam.project(centre + Vec3(0.5f, 0, 1))[0] - W / 2.0);
+  std::vector<std::pair<int, int>> px;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const double dx = x + 0.5 - W / 2.0, dy = y + 0.5 - H / 2.0;
+      if (dx * dx + dy * dy <= rad * rad) px.emplace_back(x, y);
+    }
+  return px;
 }
 
 // Mean of the three channels of pixel (x, y).

@@ -322,7 +322,8 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   fs::path scene = write_scene(d);
   for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
                         "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive-decision foo",
-                        "--adaptive --adaptive-target-spp 3"}) {
+                        "--adaptive --adaptive-target-spp 3", "--reconstruction weights",
+                        "--reconstruction rank --adaptive --adaptive-decision split"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
     EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;

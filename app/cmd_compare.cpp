@@ -21,11 +21,14 @@
 
 namespace pdrt::cli {
 
+// --seeds: one render per seed; more than this many is a typo rather than a study.
+inline constexpr IntRange kCompareSeedsRange{1, 1024};
+
 void add_compare_command(CLI::App& app) {
   struct Opts {
     std::string scene, out, samplers = "random,jitter,poisson,sobol", spp = "1,4,16,64,256", cache;
     std::optional<int> width, height;
-    int reference_spp = 4096, threads = 0;
+    int reference_spp = 4096, threads = 0, seeds = 4;
     double adaptive_threshold = 0;
     int adaptive_target_spp = 64;
     std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
@@ -50,8 +53,12 @@ void add_compare_command(CLI::App& app) {
   add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
                      "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
       ->default_str("64");
-  add_integer_option(cmd, "--reference-spp", o->reference_spp, kSppRange, "Samples per pixel of the reference")
+  add_integer_option(cmd, "--reference-spp", o->reference_spp, kSppRange,
+                     "Samples per pixel of the reference (two independent halves; their difference is its noise)")
       ->default_str("4096");
+  add_integer_option(cmd, "--seeds", o->seeds, kCompareSeedsRange,
+                     "Independent seeds per sampler and spp (mean RMSE, 95% interval, bias^2 and variance)")
+      ->default_str("4");
   cmd->add_option("--cache-dir", o->cache, "Reference cache directory (default ~/.cache/pdrt/references)");
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width (overrides film.width)");
   add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height (overrides film.height)");
@@ -77,6 +84,7 @@ void add_compare_command(CLI::App& app) {
     c.adaptive_decision = o->adaptive_decision;
     c.adaptive_target_spp = o->adaptive_target_spp;
     c.reference_spp = o->reference_spp;
+    c.seeds = o->seeds;
     c.threads = o->threads;
     c.quiet = o->quiet;
     c.out = o->out;
@@ -107,7 +115,7 @@ void add_compare_command(CLI::App& app) {
                       o->width || o->height ? "--width/--height" : scene.film.size_where);
     check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
                         "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
-                            " pixels x (reference + every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),
+                            " pixels x (reference + " + std::to_string(c.seeds) + " seeds x every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),
                         o->allow_long);
     require_image_io();
     std::filesystem::path results = run_compare(scene, c);

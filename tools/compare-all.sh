@@ -1,20 +1,21 @@
 #!/usr/bin/env bash
 # Renders the `pdrt compare` report of every scene in scenes/ with the same settings (no
 # per-scene tuning) into OUT/<scene>/index.html.
-# Usage: tools/compare-all.sh [OUT=out/compare] [SCALE=1] [SPP=1,4,16,64,256] [REF_SPP=4096]
+# Usage: tools/compare-all.sh [OUT=out/compare] [SCALE=1] [SPP=1,4,16,64,256] [REF_SPP=4096] [SEEDS=4]
 #   SCALE divides each scene's resolution (2 = half width and height) to save time.
 set -euo pipefail
-OUT=${1:-out/compare}; SCALE=${2:-1}; SPP=${3:-1,4,16,64,256}; REF=${4:-4096}
+OUT=${1:-out/compare}; SCALE=${2:-1}; SPP=${3:-1,4,16,64,256}; REF=${4:-4096}; SEEDS=${5:-4}
 B=${PDRT_BUILD:-build}
 mkdir -p "$OUT"
 for scene in scenes/*.json; do
   name=$(basename "$scene" .json)
   read -r w h < <(/usr/bin/env python3 -c "import json,sys; f=json.load(open('$scene'))['film']; print(f['width']//$SCALE, f['height']//$SCALE)")
-  echo "== $name (${w}x${h}, spp $SPP, reference $REF spp)"
+  echo "== $name (${w}x${h}, spp $SPP, $SEEDS seeds, reference $REF spp)"
   "$B/pdrt" compare "$scene" --out "$OUT/$name" --samplers random,jitter,poisson,sobol --spp "$SPP" \
-    --reference-spp "$REF" --width "$w" --height "$h" --adaptive
+    --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive
 done
-# One summary table over all scenes: RMSE per sampler at each spp, and the fitted slopes.
+# One summary table over all scenes: mean RMSE +- 95 % interval per sampler at each spp, the
+# best (a tie with every sampler whose interval overlaps the best's), and the fitted slopes.
 /usr/bin/env python3 - "$OUT" <<'PY'
 import json, os, sys
 out = sys.argv[1]
@@ -25,9 +26,12 @@ for name in sorted(os.listdir(out)):
         continue
     r = json.load(open(p))
     for n in r["spp"]:
-        e = {u["sampler"]: u["rmse"] for u in r["runs"] if u["spp"] == n}
-        best = min(e, key=e.get)
-        rows.append("| %s | %d | %s | %s |" % (name, n, " | ".join("%.4g" % e[s] for s in r["samplers"]), best))
+        e = {u["sampler"]: (u["rmse"], u.get("rmse_ci95", 0.0)) for u in r["runs"] if u["spp"] == n}
+        best = min(e, key=lambda s: e[s][0])
+        tied = [s for s in r["samplers"] if s != best and e[s][0] - e[s][1] <= e[best][0] + e[best][1]]
+        verdict = best if not tied else "tie: " + ", ".join([best] + tied)
+        rows.append("| %s | %d | %s | %s |" % (
+            name, n, " | ".join("%.4g ± %.2g" % e[s] for s in r["samplers"]), verdict))
     rows.append("| %s | slope | %s | |" % (name, " | ".join("%.2f" % r["slopes"][s] for s in r["samplers"])))
 with open(os.path.join(out, "summary.md"), "w") as f:
     f.write("| scene | spp | random | jitter | poisson | sobol | best |\n|---|---|---|---|---|---|---|\n")

@@ -6,7 +6,9 @@
 #include "renderer/compare/convergence.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/hash.h"
+#include "sampling/core/rng.h"
 #include "renderer/compare/image_metrics.h"
+#include "renderer/compare/seed_statistics.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
 #include "sampling/samplers/sampler.h"
@@ -50,13 +52,23 @@ std::vector<float> display_rgb(const Image& im) {
   return out;
 }
 
+// One seed's render of a (sampler, spp).
+struct SeedRun {
+  uint64_t seed = 0;
+  double seconds = 0, render_seconds = 0, cpu_seconds = 0, relmse = 0;
+  int64_t samples = 0;
+};
+
+// A (sampler, spp) over every seed; `rmse` is the mean over seeds of the reference-corrected RMSE.
 struct Run {
   std::string sampler;
   int spp = 0;
-  double seconds = 0, render_seconds = 0, rmse = 0, relmse = 0, spp_mean = 0;
-  int64_t samples = 0;
-  RadialSpectrum spectrum;
-  Image image;
+  double seconds = 0, render_seconds = 0, cpu_seconds = 0, rmse = 0, relmse = 0, spp_mean = 0;  // means over seeds
+  int64_t samples = 0;  // traced by one render (every seed traces the same count)
+  SeedStatistics stats;
+  std::vector<SeedRun> seeds;
+  RadialSpectrum spectrum;  // of the error image, averaged over the seeds
+  Image image;              // seed 0's
   std::string image_file, error_file;
 };
 
@@ -119,6 +131,7 @@ void validate_compare_options(const CompareOptions& o) {
   if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
     throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +
                      " must be one of the --spp sample counts");
+  if (o.seeds < 1) throw UsageError("--seeds must be >= 1, got " + std::to_string(o.seeds));
   if (o.reference_spp < 1) throw UsageError("--reference-spp must be >= 1, got " + std::to_string(o.reference_spp));
   if (o.reference_spp < 4 * o.spp.back())
     throw UsageError("--reference-spp must be at least 4x the largest --spp (" + std::to_string(o.spp.back()) +
@@ -127,7 +140,7 @@ void validate_compare_options(const CompareOptions& o) {
 
 double compare_sample_count(const CompareOptions& o, int width, int height) {
   double per_pixel = o.reference_spp;
-  for (int spp : o.spp) per_pixel += double(o.samplers.size()) * spp;
+  for (int spp : o.spp) per_pixel += double(o.seeds) * double(o.samplers.size()) * spp;
   if (o.adaptive && !o.spp.empty()) per_pixel += 13.0 * double(o.samplers.size()) * o.spp.back();
   return per_pixel * width * height;
 }
@@ -145,63 +158,111 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     if (!o.quiet) std::fprintf(stderr, "pdrt compare: %s\n", s.c_str());
   };
 
-  // The reference: another sampler and seed than any test image, cached by content.
+  // The reference: another sampler and seeds than any test image, cached by content, rendered
+  // as two independent halves whose difference measures its own variance.
   SceneDesc rs = base;
   rs.sampler.type = o.reference_sampler;
   rs.sampler.seed = base.sampler.seed ^ 0x5eedc0ffee123457ull;
   rs.sampler.spp = o.reference_spp;
   rs.sampler.adaptive.enabled = false;
+  const int half_spp[2] = {(o.reference_spp + 1) / 2, o.reference_spp / 2};
+  const uint64_t half_seed[2] = {rs.sampler.seed, mix64(rs.sampler.seed ^ 0x68616c6662ull)};  // "halfb"
   std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
                          std::to_string(rs.sampler.seed) + "|" + reconstruction_name(rs.film.filter.reconstruction) + "|" +
-                         PDRT_VERSION + "|samplers-v3";  // bump when sampler output changes
+                         PDRT_VERSION + "|samplers-v3|halves";  // bump when sampler output changes
   char key[32];
   std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
-  fs::path cache = (o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir) / (std::string("ref-") + key + ".exr");
-  Image ref;
-  bool cached = false;
+  const fs::path cache_root = o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir;
+  fs::path cache[2];
+  Image halves[2];
+  bool cached = true;
   double ref_seconds = 0;
-  if (fs::exists(cache)) {
-    ref = read_image_rgb(cache);
-    cached = ref.width == W && ref.height == H;
+  for (int h = 0; h < 2; ++h) {
+    cache[h] = cache_root / (std::string("ref-") + key + (h ? "-b" : "-a") + ".exr");
+    bool hit = false;
+    if (fs::exists(cache[h])) {
+      halves[h] = read_image_rgb(cache[h]);
+      hit = halves[h].width == W && halves[h].height == H;
+    }
+    if (hit) {
+      say("using the cached reference half " + cache[h].string());
+      continue;
+    }
+    cached = false;
+    SceneDesc hs = rs;
+    hs.sampler.spp = half_spp[h], hs.sampler.seed = half_seed[h];
+    say("rendering the reference half " + std::to_string(h + 1) + "/2 (" + hs.sampler.type + ", " +
+        std::to_string(hs.sampler.spp) + " spp) -> " + cache[h].string());
+    fs::create_directories(cache[h].parent_path(), ec);
+    RenderResult r = render_with(hs, o);
+    halves[h] = std::move(r.image);
+    ref_seconds += r.stats.seconds;
+    write_image(cache[h], halves[h], {{"pdrt:reference", "true"}, {"pdrt:key", key}});
   }
-  if (!cached) {
-    say("rendering the reference (" + rs.sampler.type + ", " + std::to_string(rs.sampler.spp) + " spp) -> " +
-        cache.string());
-    fs::create_directories(cache.parent_path(), ec);
-    RenderResult r = render_with(rs, o);
-    ref = r.image;
-    ref_seconds = r.stats.seconds;
-    write_image(cache, r.image, {{"pdrt:reference", "true"}, {"pdrt:key", key}});
-  } else {
-    say("using the cached reference " + cache.string());
+  Image ref = halves[0];
+  for (std::size_t i = 0; i < ref.rgb.size(); ++i)
+    ref.rgb[i] = float((double(halves[0].rgb[i]) * half_spp[0] + double(halves[1].rgb[i]) * half_spp[1]) /
+                       double(o.reference_spp));
+  const ReferenceNoise ref_noise = reference_noise(halves[0], half_spp[0], halves[1], half_spp[1]);
+  const double ref_var = ref_noise.variance;
+  {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "reference variance %.4g per pixel channel (RMSE %.5f), subtracted from every MSE",
+                  ref_var, std::sqrt(ref_var));
+    say(buf);
   }
+  // RMSE against the reference with its variance taken out (E[(x - r)^2] = E[(x - I)^2] + Var r).
+  auto corrected_rmse = [&](const Image& im) {
+    const double e = rmse(im, ref);
+    return std::sqrt(std::max(0.0, e * e - ref_var));
+  };
   write_display_png(o.out / "images" / "reference.png", W, H, display_rgb(ref));
 
   std::vector<Run> runs;
   int threads_used = 0;
   for (const auto& name : o.samplers)
     for (int n : o.spp) {
-      SceneDesc s = base;
-      s.sampler.type = name;
-      s.sampler.spp = n;
-      s.sampler.adaptive.enabled = false;
-      RenderResult r = render_with(s, o);
-      threads_used = r.stats.threads;
       Run run;
       run.sampler = name, run.spp = n;
-      run.seconds = r.stats.seconds;
-      run.render_seconds = r.stats.seconds - r.stats.build_seconds;
-      run.samples = r.stats.samples, run.spp_mean = r.stats.spp_mean;
-      run.rmse = rmse(r.image, ref), run.relmse = relative_mse(r.image, ref);
-      run.spectrum = error_spectrum(r.image, ref);
-      run.image = std::move(r.image);
+      std::vector<Image> images;
+      for (int k = 0; k < o.seeds; ++k) {
+        SceneDesc s = base;
+        s.sampler.type = name;
+        s.sampler.spp = n;
+        s.sampler.seed = compare_seed(base.sampler.seed, k);
+        s.sampler.adaptive.enabled = false;
+        RenderResult r = render_with(s, o);
+        threads_used = r.stats.threads;
+        SeedRun sr;
+        sr.seed = s.sampler.seed;
+        sr.seconds = r.stats.seconds;
+        sr.render_seconds = r.stats.seconds - r.stats.build_seconds;
+        sr.cpu_seconds = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
+        sr.samples = r.stats.samples;
+        sr.relmse = relative_mse(r.image, ref);
+        RadialSpectrum sp = error_spectrum(r.image, ref);
+        if (k == 0) run.spectrum = sp, run.samples = r.stats.samples;
+        else
+          for (std::size_t b = 0; b < sp.power.size(); ++b) run.spectrum.power[b] += sp.power[b];
+        const double w = 1.0 / o.seeds;
+        run.seconds += w * sr.seconds, run.render_seconds += w * sr.render_seconds;
+        run.cpu_seconds += w * sr.cpu_seconds, run.relmse += w * sr.relmse, run.spp_mean += w * r.stats.spp_mean;
+        run.seeds.push_back(sr);
+        images.push_back(std::move(r.image));
+      }
+      for (double& p : run.spectrum.power) p /= o.seeds;
+      run.stats = seed_statistics(images, ref, ref_noise);
+      run.rmse = run.stats.rmse_mean;
+      run.image = std::move(images[0]);
       run.image_file = "images/" + name + "-" + std::to_string(n) + ".png";
       run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
       write_display_png(o.out / run.image_file, W, H, display_rgb(run.image));
-      char buf[160];
-      std::snprintf(buf, sizeof buf, "%-8s %5d spp  rmse %.5f  relMSE %.5f  %.2f s", name.c_str(), n, run.rmse,
-                    run.relmse, run.seconds);
+      char buf[240];
+      std::snprintf(buf, sizeof buf,
+                    "%-8s %5d spp  rmse %.5f +- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g  %lld samples  %.3f s CPU",
+                    name.c_str(), n, run.rmse, run.stats.rmse_ci95, o.seeds, run.stats.bias2, run.stats.variance,
+                    (long long)run.samples, run.cpu_seconds);
       say(buf);
       runs.push_back(std::move(run));
     }
@@ -261,11 +322,36 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   j["scene"] = o.scene_label;
   j["width"] = W, j["height"] = H;
   j["seed"] = base.sampler.seed;
+  {
+    json seeds = json::array();
+    for (int k = 0; k < o.seeds; ++k) seeds.push_back(compare_seed(base.sampler.seed, k));
+    j["seeds"] = seeds;
+  }
+  j["seed_rule"] = "seed 0 is the scene's sampler.seed; seed k >= 1 is hash_combine(seed, 0x636f6d7061726500 + k)";
+  j["statistics"] = {
+      {"rmse", "mean over seeds of sqrt(max(0, MSE_k - reference variance))"},
+      {"rmse_ci95",
+       "half width of the 95% confidence interval of that mean: t(0.975, K-1) sqrt(s^2 / K + (reference.correction_se / "
+       "(2 rmse))^2), s the spread over seeds"},
+      {"variance", "per-pixel variance across seeds (K-1 denominator), averaged over pixels and channels"},
+      {"bias2", "mean((seed-average - reference)^2) - variance / K - reference variance"},
+      {"mse", "bias2 + variance = mean over seeds of MSE_k - reference variance"},
+      {"cpu_seconds", "process CPU time (user + sys, all threads) of the render, without the scene build"}};
   j["samplers"] = o.samplers;
   j["spp"] = o.spp;
   j["threads"] = threads_used;
-  j["reference"] = {{"sampler", rs.sampler.type}, {"spp", rs.sampler.spp},     {"seed", rs.sampler.seed},
-                    {"cached", cached},           {"file", cache.string()},    {"seconds", ref_seconds},
+  j["reference"] = {{"sampler", rs.sampler.type},
+                    {"spp", rs.sampler.spp},
+                    {"seed", rs.sampler.seed},
+                    {"halves", {{{"spp", half_spp[0]}, {"seed", half_seed[0]}, {"file", cache[0].string()}},
+                                {{"spp", half_spp[1]}, {"seed", half_seed[1]}, {"file", cache[1].string()}}}},
+                    {"variance", ref_var},
+                    {"variance_rule", "mean over pixels and channels of (a - b)^2 na nb / (na + nb)^2, halves a, b"},
+                    {"rmse", std::sqrt(ref_var)},
+                    {"correction_se", ref_noise.correction_se},
+                    {"cached", cached},
+                    {"file", cache[0].string()},
+                    {"seconds", ref_seconds},
                     {"image", "images/reference.png"}};
   j["heat_colormap"] = kHeatStops;
   j["error_maps"] = {{"quantity", "absolute luminance error per pixel, |Y(image) - Y(reference)| (linear)"},
@@ -274,17 +360,39 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   j["crop_window"] = {{"x", win[0]}, {"y", win[1]}, {"size", win[2]}, {"zoom", zoom}};
   j["crops"] = crops;
   json jr = json::array();
-  for (const Run& r : runs)
+  for (const Run& r : runs) {
+    json per_seed = json::array();
+    for (std::size_t k = 0; k < r.seeds.size(); ++k) {
+      const SeedRun& sr = r.seeds[k];
+      per_seed.push_back({{"index", k},
+                          {"seed", sr.seed},
+                          {"samples", sr.samples},
+                          {"seconds", sr.seconds},
+                          {"render_seconds", sr.render_seconds},
+                          {"cpu_seconds", sr.cpu_seconds},
+                          {"mse", r.stats.mse[k]},
+                          {"rmse", r.stats.rmse[k]},
+                          {"relmse", sr.relmse}});
+    }
     jr.push_back({{"sampler", r.sampler},
                   {"spp", r.spp},
                   {"seconds", r.seconds},
                   {"render_seconds", r.render_seconds},
+                  {"cpu_seconds", r.cpu_seconds},
                   {"samples", r.samples},
                   {"rmse", r.rmse},
+                  {"rmse_ci95", r.stats.rmse_ci95},
+                  {"rmse_low", r.rmse - r.stats.rmse_ci95},
+                  {"rmse_high", r.rmse + r.stats.rmse_ci95},
+                  {"mse", r.stats.mse_mean},
+                  {"bias2", r.stats.bias2},
+                  {"variance", r.stats.variance},
                   {"relmse", r.relmse},
+                  {"per_seed", per_seed},
                   {"image", r.image_file},
                   {"error_map", r.error_file},
                   {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}});
+  }
   j["runs"] = jr;
 
   // Convergence slopes (RMSE ~ spp^slope) and the equal-time view.
@@ -294,7 +402,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   for (const auto& name : o.samplers) {
     std::vector<double> x, y, t;
     for (const Run& r : runs)
-      if (r.sampler == name) x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.render_seconds);
+      if (r.sampler == name) x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.cpu_seconds);
     slopes[name] = loglog_slope(x, y);
     t_lo = std::max(t_lo, t.front()), t_hi = std::min(t_hi, t.back());
     by_time[name] = {t, y};
@@ -304,6 +412,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   if (t_hi > t_lo && t_lo > 0)
     for (int i = 0; i < 8; ++i) grid.push_back(t_lo * std::pow(t_hi / t_lo, i / 7.0));
   eq_time["seconds"] = grid;
+  eq_time["clock"] = "CPU seconds of the render (user + sys), without the scene build";
   for (const auto& [name, ty] : by_time) {
     std::vector<double> v;
     for (double g : grid) v.push_back(loglog_interp(ty.first, ty.second, g));
@@ -343,7 +452,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         const double threshold = std::ldexp(base_threshold, k);
         ad.threshold = float(threshold);
         RenderResult r = render_with(s, o);
-        const double e = rmse(r.image, ref), uniform = loglog_interp(x, y, r.stats.spp_mean);
+        const double e = corrected_rmse(r.image), uniform = loglog_interp(x, y, r.stats.spp_mean);
         cost.push_back(double(r.stats.samples)), err.push_back(e);
         sweep.push_back({{"sampler", name},
                          {"threshold", threshold},
@@ -411,11 +520,20 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     });
   }
 
+  // One row per seed, with the (sampler, spp) statistics repeated, so a figure can be
+  // regenerated from the CSV alone.
   write_file_atomically(o.out / "results.csv", [&](std::ostream& os) {
-    os << "sampler,spp,seconds,render_seconds,samples,rmse,relmse\n";
+    os.precision(9);
+    os << "sampler,spp,seed_index,seed,samples,seconds,render_seconds,cpu_seconds,mse,rmse,relmse,"
+          "rmse_mean,rmse_ci95,bias2,variance,reference_variance\n";
     for (const Run& r : runs)
-      os << r.sampler << "," << r.spp << "," << r.seconds << "," << r.render_seconds << "," << r.samples << ","
-         << r.rmse << "," << r.relmse << "\n";
+      for (std::size_t k = 0; k < r.seeds.size(); ++k) {
+        const SeedRun& sr = r.seeds[k];
+        os << r.sampler << "," << r.spp << "," << k << "," << sr.seed << "," << sr.samples << "," << sr.seconds << ","
+           << sr.render_seconds << "," << sr.cpu_seconds << "," << r.stats.mse[k] << "," << r.stats.rmse[k] << ","
+           << sr.relmse << "," << r.rmse << "," << r.stats.rmse_ci95 << "," << r.stats.bias2 << ","
+           << r.stats.variance << "," << ref_var << "\n";
+      }
   });
   fs::path results = o.out / "results.json";
   write_file_atomically(results, [&](std::ostream& os) { os << j.dump(1) << "\n"; });

@@ -19,7 +19,8 @@ struct CompareOptions {
   std::string adaptive_variance;    // non-empty overrides the variance estimator
   std::string adaptive_decision;    // non-empty overrides the decision (shared | split)
   int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
-  int reference_spp = 4096;
+  int seeds = 4;                    // independent renders per (sampler, spp): compare_seed(scene seed, 0..seeds-1)
+  int reference_spp = 4096;         // rendered as two independent halves, whose difference measures its noise
   std::string reference_sampler = "sobol";
   int threads = 0;
   bool quiet = false;
@@ -33,7 +34,7 @@ struct CompareOptions {
 void validate_compare_options(const CompareOptions& o);
 
 // The most camera samples the comparison may take: the reference, every sampler at every
-// --spp and, with --adaptive, at most 13 sweep runs per sampler of at most the largest --spp.
+// --spp with every seed and, with --adaptive, at most 13 sweep runs per sampler of at most the largest --spp.
 double compare_sample_count(const CompareOptions& o, int width, int height);
 
 // Renders and writes everything except the plots; returns the path of results.json.

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots and the HTML report of `pdrt compare`: reads DIR/results.json and writes
-rmse_vs_spp.png (log-log, fitted slopes), rmse_vs_time.png (equal-time view),
+rmse_vs_spp.png (log-log, fitted slopes, 95 % interval bars over the seeds), rmse_vs_time.png
+(equal-time view on CPU seconds),
 error_spectra.png (radially averaged power of the error images), errors/heat-N.png (the
 error heat maps at N spp with their colour bar), with --adaptive adaptive_vs_spp.png (the
 threshold sweep against uniform sampling) and images/adaptive-samples.png (sample counts),
@@ -28,13 +29,13 @@ def main(out):
     runs = r["runs"]
     samplers = r["samplers"]
 
+    k = len(r.get("seeds", [r["seed"]]))
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for s in samplers:
-        pts = sorted((u["spp"], u["rmse"]) for u in runs if u["sampler"] == s)
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=COLORS.get(s),
-                  label="%s (slope %.2f)" % (s, r["slopes"][s]))
+        pts = sorted((u["spp"], u["rmse"], u.get("rmse_ci95", 0)) for u in runs if u["sampler"] == s)
+        errorbar(ax, [p[0] for p in pts], pts, COLORS.get(s), "%s (slope %.2f)" % (s, r["slopes"][s]))
     ax.set_xlabel("samples per pixel")
-    ax.set_ylabel("RMSE vs reference")
+    ax.set_ylabel("RMSE vs reference (mean of %d seeds, 95%% interval)" % k)
     ax.set_title("%s: convergence" % os.path.basename(r["scene"]))
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
@@ -45,10 +46,11 @@ def main(out):
 
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for s in samplers:
-        pts = sorted((u["render_seconds"], u["rmse"]) for u in runs if u["sampler"] == s)
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", color=COLORS.get(s), label=s)
-    ax.set_xlabel("render time (s, excluding BVH build)")
-    ax.set_ylabel("RMSE vs reference")
+        pts = sorted((u.get("cpu_seconds", u["render_seconds"]), u["rmse"], u.get("rmse_ci95", 0))
+                     for u in runs if u["sampler"] == s)
+        errorbar(ax, [p[0] for p in pts], pts, COLORS.get(s), s)
+    ax.set_xlabel("CPU seconds of the render (user + sys, mean over seeds, without the build)")
+    ax.set_ylabel("RMSE vs reference (95% interval)")
     ax.set_title("equal-time view")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
@@ -63,6 +65,15 @@ def main(out):
     if r.get("adaptive_sweep"):
         plot_adaptive(out, r)
     write_html(out, r)
+
+
+def errorbar(ax, xs, pts, color, label):
+    """Log-log mean RMSE with its 95 % interval; a lower end at or below 0 is drawn to the bottom."""
+    ys = [p[1] for p in pts]
+    lo = [min(p[2], 0.999 * p[1]) for p in pts]
+    ax.errorbar(xs, ys, yerr=[lo, [p[2] for p in pts]], fmt="o-", color=color, label=label, capsize=3)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
 
 
 def plot_spectra(out, r):
@@ -83,7 +94,8 @@ def plot_spectra(out, r):
                         continue
                     lo, hi = min(lo, min(p for _, p in pts)), max(hi, max(p for _, p in pts))
                     ax.semilogy([f for f, _ in pts], [p for _, p in pts], color=COLORS.get(s), label=s, lw=1)
-        ax.set_title("luminance error spectrum, %d spp" % n, fontsize=10)
+        ax.set_title("luminance error spectrum, %d spp, mean of %d seeds" % (n, len(r.get("seeds", [0]))),
+                     fontsize=10)
         ax.set_xlabel("frequency (cycles per pixel)")
         ax.set_ylabel("power of the error (radial mean of |FFT|^2 / pixels)")
         ax.set_xlim(0, 0.5)
@@ -186,11 +198,15 @@ def write_html(out, r):
              "figcaption{font-size:small}</style></head><body>")
     p.append("<h1>pdrt compare: %s</h1>" % e(r["scene"]))
     ref = r["reference"]
-    p.append("<p>%dx%d pixels, seed %s. Reference: %s at %d spp (seed %s%s).</p>" % (
-        r["width"], r["height"], r["seed"], e(ref["sampler"]), ref["spp"], ref["seed"],
-        ", cached" if ref["cached"] else ""))
+    seeds = r.get("seeds", [r["seed"]])
+    p.append("<p>%dx%d pixels, %d seeds per sampler and spp (%s; %s). Reference: %s at %d spp (seed %s%s), "
+             "rendered as two independent halves; its variance, %.3g per pixel channel (RMSE %.3g), is "
+             "subtracted from every MSE.</p>" % (
+                 r["width"], r["height"], len(seeds), ", ".join(str(x) for x in seeds), e(r.get("seed_rule", "")),
+                 e(ref["sampler"]), ref["spp"], ref["seed"], ", cached" if ref["cached"] else "",
+                 ref.get("variance", 0.0), ref.get("rmse", 0.0)))
     p.append("<h2>Convergence</h2><img src='rmse_vs_spp.png'> <img src='rmse_vs_time.png'>")
-    p.append("<h3>RMSE at equal samples</h3><table><tr><th>spp</th>%s</tr>" %
+    p.append("<h3>RMSE at equal samples (mean over seeds &plusmn; 95%% interval)</h3><table><tr><th>spp</th>%s</tr>" %
              "".join("<th>%s</th>" % e(s) for s in samplers))
     for n in spps:
         row = []
@@ -198,19 +214,33 @@ def write_html(out, r):
         for s in samplers:
             u = [u for u in runs if u["spp"] == n and u["sampler"] == s][0]
             b = "<b>%s</b>" if u["rmse"] == best else "%s"
-            row.append("<td>" + b % fmt(u["rmse"]) + "</td>")
-        p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(row)))
+            row.append("<td>" + b % ("%s &plusmn; %s" % (fmt(u["rmse"]), fmt(u.get("rmse_ci95")))) + "</td>")
+        traced = sorted(set(u["samples"] for u in runs if u["spp"] == n))
+        p.append("<tr><td>%d (%s samples traced)</td>%s</tr>" % (n, " / ".join(str(t) for t in traced), "".join(row)))
     p.append("<tr><td>slope</td>%s</tr></table>" % "".join("<td>%.2f</td>" % r["slopes"][s] for s in samplers))
-    p.append("<p><small>%s.</small></p>" % e(SLOPE_NOTE))
+    p.append("<p><small>%s. Bold: the lowest mean; where intervals overlap, call it a tie.</small></p>" % e(SLOPE_NOTE))
+    p.append("<h3>Every run</h3><table><tr><th>sampler</th><th>spp</th><th>samples traced (per seed)</th>"
+             "<th>mean RMSE</th><th>95% interval</th><th>bias&sup2;</th><th>variance</th><th>MSE</th>"
+             "<th>CPU s (mean)</th><th>wall s (mean)</th></tr>")
+    for u in runs:
+        p.append("<tr><td>%s</td><td>%d</td><td>%d</td><td>%s</td><td>[%s, %s]</td><td>%.3g</td><td>%.3g</td>"
+                 "<td>%.3g</td><td>%.3f</td><td>%.3f</td></tr>" % (
+                     e(u["sampler"]), u["spp"], u["samples"], fmt(u["rmse"]), fmt(u.get("rmse_low")),
+                     fmt(u.get("rmse_high")), u.get("bias2", 0.0), u.get("variance", 0.0), u.get("mse", 0.0),
+                     u.get("cpu_seconds", 0.0), u["render_seconds"]))
+    p.append("</table><p><small>MSE = bias&sup2; + variance, both with the reference's variance taken out: "
+             "bias&sup2; is the seed-average image against the reference (less variance / seeds), variance the "
+             "per-pixel spread across seeds; a slightly negative bias&sup2; is 0 within noise. Every seed's numbers "
+             "are in results.json (per_seed) and results.csv.</small></p>")
     et = r["equal_time"]
     if et["seconds"]:
-        p.append("<h3>RMSE at equal render time (log-log interpolation)</h3><table><tr><th>seconds</th>%s</tr>" %
+        p.append("<h3>RMSE at equal CPU time (log-log interpolation)</h3><table><tr><th>CPU seconds</th>%s</tr>" %
                  "".join("<th>%s</th>" % e(s) for s in samplers))
         for i, t in enumerate(et["seconds"]):
             p.append("<tr><td>%.3f</td>%s</tr>" % (t, "".join("<td>%s</td>" % fmt(et["rmse"][s][i]) for s in samplers)))
         p.append("</table>")
     p.append("<h2>Error spectra</h2><figure><img src='error_spectra.png'><figcaption>Radially averaged power "
-             "spectrum of each image's luminance error against the reference (DC removed), at the lowest, middle "
+             "spectrum of each image's luminance error against the reference (DC removed), averaged over the seeds, at the lowest, middle "
              "and highest spp; white noise is flat, blue noise has less power at low frequencies.</figcaption>"
              "</figure>")
     p.append("<h2>Crops (same region; last column: reference)</h2>")

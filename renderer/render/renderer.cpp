@@ -7,6 +7,7 @@
 #include "renderer/render/filter.h"
 #include "renderer/render/light_sampler.h"
 #include "renderer/render/path_integrator.h"
+#include "renderer/render/process_cpu_time.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
@@ -143,6 +144,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
   auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = process_cpu_seconds();
 
   EmbreeDevice device(opt.threads > 0 ? "threads=" + std::to_string(opt.threads) : "");
   EmbreeScene scene(desc, device);
@@ -165,6 +167,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   PixelRenderer pr{camera, scene, integrator, filter, mode};
 
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double build_cpu_seconds = process_cpu_seconds() - cpu0;
   const int W = desc.film.width, H = desc.film.height;
   const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
   tbb::enumerable_thread_specific<int64_t> rays(0);
@@ -263,6 +266,8 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.image = film.image(desc.film.exposure);
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.build_seconds = build_seconds;
+  res.stats.cpu_seconds = process_cpu_seconds() - cpu0;
+  res.stats.build_cpu_seconds = build_cpu_seconds;
   for (int64_t r : rays) res.stats.rays += r;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {

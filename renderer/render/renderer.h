@@ -22,6 +22,8 @@ struct RenderOptions {
 struct RenderStats {
   double seconds = 0;          // total: scene build + rendering
   double build_seconds = 0;    // Embree BVH build, lights, camera
+  double cpu_seconds = 0;      // process CPU time (user + sys, all threads) over the whole render
+  double build_cpu_seconds = 0;  // of that, the build's
   int64_t rays = 0;        // extension + shadow rays
   int64_t samples = 0;     // camera samples traced
   int64_t nonfinite_samples = 0;  // of those, dropped for a NaN or infinite value

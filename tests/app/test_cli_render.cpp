@@ -266,6 +266,41 @@ TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
 }
 
+// Every (sampler, spp) over K seeds: per-seed entries (distinct seeds, seed 0 the scene's), the
+// mean RMSE with an interval around it, bias^2 + variance = MSE, the reference's variance, and
+// one CSV row per seed.
+TEST(CliCompare, SeedsWritePerSeedEntriesAndIntervals) {
+  fs::path d = scratch_dir("compare_seeds");
+  fs::path scene = write_scene(d, R"("width": 12, "height": 8)");
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers random,jitter --spp 2,4 --seeds 2 --reference-spp 64 --cache-dir " +
+                    (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  ASSERT_EQ(j["seeds"].size(), 2u);
+  EXPECT_NE(j["seeds"][0], j["seeds"][1]);
+  EXPECT_GT(j["reference"]["variance"].get<double>(), 0);
+  ASSERT_EQ(j["runs"].size(), 4u);
+  for (const auto& run : j["runs"]) {
+    ASSERT_EQ(run["per_seed"].size(), 2u) << run.dump();
+    EXPECT_EQ(run["per_seed"][0]["seed"], j["seeds"][0]);
+    EXPECT_EQ(run["per_seed"][1]["seed"], j["seeds"][1]);
+    EXPECT_EQ(run["samples"].get<int64_t>(), 12 * 8 * run["spp"].get<int64_t>()) << "traced samples";
+    EXPECT_NE(run["per_seed"][0]["rmse"], run["per_seed"][1]["rmse"]) << "independent seeds";
+    const double m = run["rmse"], ci = run["rmse_ci95"];
+    EXPECT_GT(ci, 0);
+    EXPECT_DOUBLE_EQ(run["rmse_low"].get<double>(), m - ci);
+    EXPECT_DOUBLE_EQ(run["rmse_high"].get<double>(), m + ci);
+    EXPECT_NEAR(run["bias2"].get<double>() + run["variance"].get<double>(), run["mse"].get<double>(), 1e-9);
+    EXPECT_GT(run["variance"].get<double>(), 0);
+    EXPECT_GE(run["cpu_seconds"].get<double>(), 0);
+  }
+  std::stringstream csv;
+  csv << std::ifstream(d / "report" / "results.csv").rdbuf();
+  EXPECT_EQ(pdrt::test::line_count(csv.str()), 1 + 4 * 2) << "a header and one row per seed";
+  EXPECT_NE(csv.str().find("seed_index,seed,"), std::string::npos);
+}
+
 TEST(CliCompare, ResultsReportTheThreadsUsed) {
   fs::path d = scratch_dir("compare_threads");
   fs::path scene = write_scene(d);
@@ -322,7 +357,8 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   fs::path scene = write_scene(d);
   for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
                         "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive-decision foo",
-                        "--adaptive --adaptive-target-spp 3", "--reconstruction weights",
+                        "--adaptive --adaptive-target-spp 3", "--reconstruction weights", "--seeds 0", "--seeds -1",
+                        "--seeds two", "--seeds 1.5",
                         "--reconstruction rank --adaptive --adaptive-decision split"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;

@@ -22,7 +22,7 @@ int main() {
   std::vector<Entry> samplers;
   for (const char* name : {"random", "jitter", "sobol"}) samplers.push_back({name, make_sampler(name, 1)});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
-  samplers.push_back({"poisson+shift", make_poisson_sampler(1, default_tables(), {.toroidal_shift = true})});
+  samplers.push_back({"poisson-noshift", make_poisson_sampler(1, default_tables(), {.toroidal_shift = false})});
   const int64_t table_len = default_tables().family[int(Family::Lens)]->params.points;
   std::printf("Lens family, %d pixels per point; RMSE (slope of log RMSE vs log N over 16..1024)\n", trials);
   std::printf("poisson beyond N = %lld continues in another table and is no longer one prefix.\n\n",

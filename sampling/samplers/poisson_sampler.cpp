@@ -1,13 +1,17 @@
-// `poisson` sampler: a hash of (pixel or tile, family, bounce, seed) picks a table and one of
-// the 8 symmetries of the square (flips and axis swap), which keep both the Poisson-disk
-// radius and the pixel grid; optionally a toroidal shift. Sample i is the i-th point of the
-// chosen prefix, so raising a pixel's sample count only appends samples (McCool §5.1).
+// `poisson` sampler (docs/sampling.md, "Decorrelation"). Non-pixel families: a pixel's
+// streams of one family take distinct tables (a per-pixel permutation of the tables indexed
+// by the bounce salt), each with its own symmetry of the square and its own toroidal
+// (Cranley–Patterson) shift. Pixel family: each P x P tile instance takes a table, a symmetry
+// and a shift of the tile pattern on its torus; a pixel's samples are the shifted pattern's
+// points inside it, in rank order. Sample i is the i-th point of the stream's prefix, so
+// raising a pixel's sample count only appends samples (McCool §5.1).
 #include "sampling/samplers/poisson_sampler.h"
 
 #include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -17,17 +21,10 @@ namespace pdrt {
 namespace {
 
 constexpr double kFixed = 0x1.0p-32;
+constexpr uint64_t kShiftSalt = 0x73686966742d6370ull;  // the shift is independent of table and symmetry
 
-// The 8 symmetries of [0, size)^2: bit 0 swaps the axes, bits 1 and 2 flip x and y (after
-// the swap).
-Vec2 apply_symmetry(Vec2 p, unsigned sym, double size) {
-  if (sym & 1) std::swap(p[0], p[1]);
-  if (sym & 2) p[0] = size - p[0];
-  if (sym & 4) p[1] = size - p[1];
-  return p;
-}
-
-// Integer pixel version: inverse of the symmetry on a P x P grid.
+// Integer pixel version of the 8 symmetries of the square (bit 0 swaps the axes, bits 1 and
+// 2 flip x and y after the swap): inverse of the symmetry on a P x P grid.
 void inverse_symmetry_pixel(unsigned sym, int P, int& a, int& b) {
   if (sym & 2) a = P - 1 - a;
   if (sym & 4) b = P - 1 - b;
@@ -37,7 +34,25 @@ void inverse_symmetry_pixel(unsigned sym, int P, int& a, int& b) {
 // Table index from the top hash bits by multiply-shift (no division in the lookup path).
 uint32_t pick(uint64_t h, uint32_t n) { return uint32_t(((h >> 32) * uint64_t(n)) >> 32); }
 
+// A keyed permutation of [0, n): rounds of xor, odd multiply and xor-shift, each a bijection
+// modulo 2^bits, then cycle walking into [0, n) (Black & Rogaway 2002).
+uint32_t permute(uint32_t i, uint32_t n, uint64_t key) {
+  if (n <= 1) return 0;
+  const int bits = 32 - __builtin_clz(n - 1);
+  const uint32_t mask = bits >= 32 ? ~0u : (1u << bits) - 1;
+  do {
+    for (int r = 0; r < 3; ++r) {
+      const uint64_t k = mix64(key + uint64_t(r) * 0x9e3779b97f4a7c15ull);
+      i = (i ^ uint32_t(k)) & mask;
+      i = (i * (uint32_t(k >> 32) | 1u)) & mask;
+      i ^= i >> ((bits + 1) / 2);
+    }
+  } while (i >= n);
+  return i;
+}
+
 int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+int mod(int a, int b) { return a - floor_div(a, b) * b; }
 
 class PoissonSampler final : public Sampler {
  public:
@@ -45,116 +60,160 @@ class PoissonSampler final : public Sampler {
   std::string name() const override { return "poisson"; }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
-    if (f == Family::Pixel) return pixel_sample(px, py, index, bounce);
-    const SampleTable& t = *tables_.family[int(f)];
-    uint64_t h = stream(px, py, f, bounce);
-    const uint32_t m = t.params.points;
-    // Past the table's length, continue in another table (no longer one Poisson-disk prefix).
-    if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
-    const uint32_t* c = &t.coords[pick(h, t.table_count())][std::size_t(index) * 2];
-    Vec2 p = apply_symmetry({c[0] * kFixed, c[1] * kFixed}, unsigned(h) & 7u, 1.0);
-    if (opt_.toroidal_shift) {
-      uint64_t s = mix64(h);
-      p[0] += double(s >> 40) * 0x1.0p-24;
-      p[1] += double((s >> 16) & 0xffffff) * 0x1.0p-24;
-      p[0] -= std::floor(p[0]);
-      p[1] -= std::floor(p[1]);
+    if (f == Family::Pixel) {
+      thread_local PreparedStream p;
+      p.want = uint32_t(std::min<int64_t>(index + 1, INT32_MAX));
+      pixel_stream(px, py, bounce, &p);
+      return {p.value(index, 0), p.value(index, 1)};
     }
-    return {clamp_to_unit(p[0]), clamp_to_unit(p[1])};
+    PreparedStream p;
+    const uint32_t m = tables_.family[int(f)]->params.points;
+    map_stream(px, py, f, bounce, uint64_t(index) / m, &p);
+    index %= m;
+    return {p.value(index, 0), p.value(index, 1)};
   }
 
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (f != Family::Time) return get_2d(px, py, index, f, bounce)[0];
-    const SampleTable& t = *tables_.family[int(f)];
-    uint64_t h = stream(px, py, f, bounce);
-    const uint32_t m = t.params.points;
-    if (uint64_t(index) >= m) h = hash_combine(h, uint64_t(index) / m), index %= m;
-    double x = t.coords[pick(h, t.table_count())][std::size_t(index)] * kFixed;
-    if (h & 1) x = 1.0 - x;  // the 1-D symmetry
-    if (opt_.toroidal_shift) x += double(mix64(h) >> 40) * 0x1.0p-24, x -= std::floor(x);
-    return clamp_to_unit(x);
+    PreparedStream p;
+    const uint32_t m = tables_.family[int(f)]->params.points;
+    map_stream(px, py, f, bounce, uint64_t(index) / m, &p);
+    return p.value(int64_t(uint64_t(index) % m), 0);
   }
 
-  // get_2d/get_1d/pixel_sample with the per-stream part done once. Their steps (offset,
-  // flip, subtract the pixel) are exact in double for 32-bit fixed point and tiles below
-  // 2^20 pixels, so one multiply-add by +-2^-32 gives the same bits.
+  // get_2d/get_1d read values through the same PreparedStream, so the fast path is exact.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
-    if (opt_.toroidal_shift && f != Family::Pixel) {
-      out->coords = nullptr;
-      return;
-    }
-    const SampleTable& t = *tables_.family[int(f)];
-    out->shift = t.dim == 2 ? 1 : 0;
-    unsigned sym;
-    double base[2] = {0, 0}, origin[2] = {0, 0}, size = 1.0;
-    if (f == Family::Pixel) {
-      const int P = int(t.params.tile);
-      int a, b, oa, ob;
-      uint32_t k, cell;
-      locate(px, py, bounce, t, P, a, b, k, cell, sym);
-      oa = a, ob = b;
-      inverse_symmetry_pixel(sym, P, oa, ob);
-      out->coords = &t.coords[k][std::size_t(t.cell_start[k][cell]) * 2];
-      out->count = t.cell_count[k][cell];
-      base[0] = oa, base[1] = ob, origin[0] = a, origin[1] = b, size = double(P);
-    } else {
-      uint64_t h = stream(px, py, f, bounce);
-      out->coords = t.coords[pick(h, t.table_count())].data();
-      out->count = t.params.points;
-      sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
-    }
-    const bool swap = sym & 1;
-    if (swap) std::swap(base[0], base[1]);
-    for (int k = 0; k < 2; ++k) {
-      const bool flip = sym & (2u << k);
-      out->src[k] = uint8_t(swap ? 1 - k : k);
-      out->off[k] = (flip ? size - base[k] : base[k]) - origin[k];
-      out->mul[k] = flip ? -kFixed : kFixed;
-    }
+    if (f == Family::Pixel) return pixel_stream(px, py, bounce, out);
+    map_stream(px, py, f, bounce, 0, out);
   }
 
   int64_t samples_available(int px, int py) const override {
-    const SampleTable& t = *tables_.family[int(Family::Pixel)];
-    int P = int(t.params.tile), a, b;
-    uint32_t k, cell;
-    unsigned sym;
-    locate(px, py, 0, t, P, a, b, k, cell, sym);
-    int64_t n = t.cell_count[k][cell];
+    thread_local PreparedStream p;
+    p.want = UINT32_MAX;
+    pixel_prefix(px, py, 0, 0, UINT32_MAX, &p.own);
+    int64_t n = int64_t(p.own.size() / 2);
     for (int f = 1; f < kFamilyCount; ++f) n = std::min<int64_t>(n, tables_.family[f]->params.points);
     return n;
   }
 
  private:
-  // The pixel family: one table pattern covers a P x P tile of pixels; the tile instance
-  // chooses table and symmetry, so neighbouring pixels of a tile share one Poisson-disk
-  // pattern and do not clump at their borders.
-  void locate(int px, int py, int bounce, const SampleTable& t, int P, int& a, int& b, uint32_t& k, uint32_t& cell,
-              unsigned& sym) const {
-    int tx = floor_div(px, P), ty = floor_div(py, P);
-    uint64_t h = stream(tx, ty, Family::Pixel, bounce);
-    k = pick(h, t.table_count());
-    sym = unsigned(h) & 7u;
-    a = px - tx * P, b = py - ty * P;
-    int oa = a, ob = b;
-    inverse_symmetry_pixel(sym, P, oa, ob);
-    cell = uint32_t(ob * P + oa);
+  // Non-pixel stream `bounce` of pixel (px, py), values [round * M, (round + 1) * M). Round 0
+  // of salts below the table count T: table perm(bounce) of the pixel's permutation, so the
+  // streams of one path never share a table. Deeper salts reuse the permutation under
+  // another key, and later rounds pick by hash: such streams differ only by symmetry and shift.
+  void map_stream(int px, int py, Family f, int bounce, uint64_t round, PreparedStream* out) const {
+    const SampleTable& t = *tables_.family[int(f)];
+    const uint32_t T = t.table_count(), b = uint32_t(bounce);
+    uint64_t h = stream(px, py, f, bounce);
+    uint32_t table;
+    if (round == 0) {
+      const uint64_t key = stream(px, py, f, -1);  // the pixel's allocation, shared by its salts
+      table = permute(b % T, T, hash_combine(key, b / T));
+    } else {
+      h = hash_combine(h, round);
+      table = pick(h, T);
+    }
+    const unsigned sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
+    const uint64_t s = opt_.toroidal_shift ? mix64(h ^ kShiftSalt) : 0;
+    out->coords = t.coords[table].data();
+    out->count = t.params.points;
+    out->shift = t.dim == 2 ? 1 : 0;
+    out->grows = false;
+    const bool swap = sym & 1;
+    for (int k = 0; k < 2; ++k) {
+      const bool flip = sym & (2u << k);
+      out->src[k] = uint8_t(swap ? 1 - k : k);
+      out->add[k] = uint32_t(s >> (32 * out->src[k]));  // the shift belongs to the table's axis
+      out->off[k] = flip ? 1.0 : 0.0;
+      out->mul[k] = flip ? -kFixed : kFixed;
+    }
   }
 
-  Vec2 pixel_sample(int px, int py, int64_t index, int bounce) const {
+  // The pixel family: round r of a pixel is the points of its tile's pattern r (table,
+  // symmetry and toroidal shift by hash of the tile and r) inside the pixel, in rank order;
+  // rounds follow each other, so no sample repeats. Values are stored with the symmetry
+  // applied (a flip is the negation modulo 2^32, the same point on the pixel's torus).
+  void pixel_stream(int px, int py, int bounce, PreparedStream* out) const {
+    out->own.clear();
+    for (uint64_t round = 0; out->own.size() / 2 < out->want && round < (1u << 20); ++round) {
+      if (round == 1) warn_past_prefix(px, py, out->own.size() / 2);
+      pixel_prefix(px, py, bounce, round, out->want - uint32_t(out->own.size() / 2), &out->own);
+    }
+    out->coords = out->own.data();
+    out->count = uint32_t(out->own.size() / 2);
+    out->shift = 1;
+    out->grows = true;
+    for (int k = 0; k < 2; ++k) out->src[k] = uint8_t(k), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
+  }
+
+  // Appends up to `want` points of round `round` of pixel (px, py). The shifted pattern's
+  // pixel is up to four cells of the stored one: a stored offset c of axis k lands in the
+  // pixel when c + F_k wraps (the cell before) or not (the cell itself), at offset
+  // uint32(c + F_k). The cells' rank orders merge by radius (non-increasing in rank), ties
+  // by cell, so every prefix lies in a global prefix of the pattern: Poisson-disk at its radius.
+  void pixel_prefix(int px, int py, int bounce, uint64_t round, uint32_t want, std::vector<uint32_t>* out) const {
     const SampleTable& t = *tables_.family[int(Family::Pixel)];
     const int P = int(t.params.tile);
-    int a, b;
-    uint32_t k, cell;
-    unsigned sym;
-    locate(px, py, bounce, t, P, a, b, k, cell, sym);
-    uint32_t count = t.cell_count[k][cell];
-    uint64_t i = uint64_t(index);
-    if (i >= count) i %= count;  // past the prefix: repeat (samples_available says where)
-    const uint32_t* c = &t.coords[k][std::size_t(t.cell_start[k][cell] + i) * 2];
-    int oa = a, ob = b;
+    const int tx = floor_div(px, P), ty = floor_div(py, P);
+    uint64_t h = stream(tx, ty, Family::Pixel, bounce);
+    if (round) h = hash_combine(h, round);
+    const uint32_t k = pick(h, t.table_count());
+    const unsigned sym = unsigned(h) & 7u;
+    uint32_t F[2] = {0, 0};
+    int I[2] = {0, 0};
+    if (opt_.toroidal_shift) {
+      const uint64_t s = mix64(h ^ kShiftSalt), s2 = mix64(s);
+      F[0] = uint32_t(s), F[1] = uint32_t(s >> 32);
+      I[0] = int(pick(s2, uint32_t(P))), I[1] = int(pick(s2 << 32, uint32_t(P)));
+    }
+    int oa = px - tx * P, ob = py - ty * P;
     inverse_symmetry_pixel(sym, P, oa, ob);
-    Vec2 q = apply_symmetry({oa + c[0] * kFixed, ob + c[1] * kFixed}, sym, double(P));
-    return {clamp_to_unit(q[0] - a), clamp_to_unit(q[1] - b)};
+    struct Piece {
+      uint32_t at, end;
+      bool wrap[2];
+    } pieces[4];
+    const uint32_t* c = t.coords[k].data();
+    const float* r = t.radius[k].data();
+    for (int j = 0; j < 4; ++j) {
+      const bool wx = j & 1, wy = j & 2;
+      const int cx = mod(oa - I[0] - int(wx), P), cy = mod(ob - I[1] - int(wy), P);
+      const uint32_t cell = uint32_t(cy * P + cx);
+      pieces[j].at = t.cell_start[k][cell];
+      pieces[j].end = pieces[j].at + t.cell_count[k][cell];
+      if ((wx && F[0] == 0) || (wy && F[1] == 0)) pieces[j].at = pieces[j].end;  // no point wraps
+      pieces[j].wrap[0] = wx, pieces[j].wrap[1] = wy;
+    }
+    auto lands = [&](const Piece& p) {
+      for (int a = 0; a < 2; ++a)
+        if ((uint32_t(c[2 * p.at + a] + F[a]) < F[a]) != p.wrap[a]) return false;
+      return true;
+    };
+    for (Piece& p : pieces)
+      while (p.at < p.end && !lands(p)) ++p.at;
+    for (uint32_t n = 0; n < want; ++n) {
+      int best = -1;
+      for (int j = 0; j < 4; ++j)
+        if (pieces[j].at < pieces[j].end && (best < 0 || r[pieces[j].at] > r[pieces[best].at])) best = j;
+      if (best < 0) break;
+      Piece& p = pieces[best];
+      uint32_t v[2] = {c[2 * p.at] + F[0], c[2 * p.at + 1] + F[1]};
+      if (sym & 1) std::swap(v[0], v[1]);
+      if (sym & 2) v[0] = 0u - v[0];
+      if (sym & 4) v[1] = 0u - v[1];
+      out->push_back(v[0]);
+      out->push_back(v[1]);
+      ++p.at;
+      while (p.at < p.end && !lands(p)) ++p.at;
+    }
+  }
+
+  static void warn_past_prefix(int px, int py, std::size_t n) {
+    static std::atomic<bool> warned{false};
+    if (!warned.exchange(true))
+      std::fprintf(stderr,
+                   "pdrt: poisson: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
+                   "in another table and shift (docs/sampling.md)\n",
+                   px, py, n);
   }
 
   TableSet tables_;
@@ -194,8 +253,8 @@ const TableSet& default_tables() {
     }
 #endif
     // The cache key names the file format and the generation rule (g2: draws that miss the
-    // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them), so an older pdrt's cache is not reused.
-    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g4-seed1");
+    // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them; g5: 64 time tables), so an older pdrt's cache is not reused.
+    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g5-seed1");
     if (!complete(dir)) {
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);

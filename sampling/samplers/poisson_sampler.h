@@ -23,7 +23,7 @@ TableSet load_tables(const std::filesystem::path& dir);
 const TableSet& default_tables();
 
 struct PoissonOptions {
-  bool toroidal_shift = false;  // add a per-pixel Cranley–Patterson shift to the non-pixel families
+  bool toroidal_shift = true;  // a per-stream Cranley–Patterson shift, every family (off: tests of the bare tables)
 };
 
 std::unique_ptr<Sampler> make_poisson_sampler(uint64_t seed, const TableSet& tables, PoissonOptions options = {});

@@ -315,7 +315,10 @@ std::vector<TableParams> default_table_params() {
   for (Family f : {Family::Lens, Family::Time, Family::Light, Family::Gloss}) {
     TableParams p;
     p.family = f;
-    p.tables = 16;
+    // Enough tables that the streams of one path at max_depth 16 take distinct ones (the
+    // sampler allocates them without replacement): time carries the shutter and three
+    // decisions per vertex (49 salts), light and gloss one per vertex (16).
+    p.tables = f == Family::Time ? 64 : 16;
     // Time: twice the samples a pixel uses, so 1024 spp reads a prefix, which is more even
     // than a whole balanced table (its last points must saturate the gaps for the rho bar).
     p.points = f == Family::Time ? 2048 : 1024;

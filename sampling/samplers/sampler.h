@@ -2,6 +2,7 @@
 // The replayable per-pixel sampler (pbrt-v4 style): every value is a pure function of
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,18 +41,25 @@ uint64_t shuffle_index(uint64_t index, uint64_t stream);
 
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
-// Axis k of value i: off[k] + mul[k] * coords[(i << shift) + src[k]], clamped to [0, 1).
-// Fields are left uninitialised on purpose: PixelSampleState keeps 160 of them per thread and
-// fills one only when its stream is first used.
+// Axis k of value i: off[k] + mul[k] * uint32(coords[(i << shift) + src[k]] + add[k]) (the
+// unsigned add is a toroidal shift in 32-bit fixed point), clamped to [0, 1).
+// The numeric fields are left uninitialised on purpose: PixelSampleState keeps 320 of them
+// per thread and fills one only when its stream is first used. `own` holds the coordinates
+// when the sampler has to assemble them per pixel (coords then points into it).
 struct PreparedStream {
   const uint32_t* coords;  // null: nothing prepared, ask the sampler
   uint32_t count;          // indices below count are stored
   uint8_t shift;           // log2 of the values per point
   uint8_t src[2];
+  uint32_t add[2];
   double off[2], mul[2];
+  uint32_t want;  // input: values the caller needs now; a sampler may prepare fewer
+  bool grows;     // preparing again with a larger `want` gives more values
+  std::vector<uint32_t> own;
 
   double value(int64_t index, int k) const {
-    return clamp_to_unit(off[k] + mul[k] * double(coords[(std::size_t(index) << shift) + src[k]]));
+    const uint32_t c = coords[(std::size_t(index) << shift) + src[k]] + add[k];
+    return clamp_to_unit(off[k] + mul[k] * double(c));
   }
 };
 
@@ -108,15 +116,21 @@ class PixelSampleState {
   }
 
  private:
-  static constexpr int kSlots = 32;  // bounce salts cached per family (deeper ones ask the sampler)
+  static constexpr int kSlots = 64;  // bounce salts cached per family: max_depth 16 uses 49 (deeper ones ask the sampler)
   const PreparedStream* prepared(Family f, int bounce) const {
     if (unsigned(bounce) >= unsigned(kSlots)) return nullptr;
     const int k = int(f) * kSlots + bounce;
+    PreparedStream& p = slot_[k];
     if (epoch_of_[k] != epoch_) {
       epoch_of_[k] = epoch_;
-      s_->prepare(px_, py_, f, bounce, &slot_[k]);
+      p.want = 16;
+      s_->prepare(px_, py_, f, bounce, &p);
+    } else if (p.coords && p.grows && uint64_t(index_) >= p.count) {
+      // Doubling keeps the total preparation work linear in the samples used.
+      p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(2 * int64_t(p.want), index_ + 1), INT32_MAX));
+      s_->prepare(px_, py_, f, bounce, &p);
     }
-    return slot_[k].coords ? &slot_[k] : nullptr;
+    return p.coords ? &p : nullptr;
   }
   const Sampler* s_;
   int px_ = INT32_MIN, py_ = INT32_MIN;

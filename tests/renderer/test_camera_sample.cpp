@@ -133,11 +133,11 @@ TEST(CameraSample, RankKeepsTheSppAskedForOnAverageAt1_2_4Spp) {
   // Candidates c = n / mean_keep, kept with probability x each: over 4096 pixels the mean
   // number kept is n within 4 standard errors (today's rule, (i + 1) / n <= x, kept none at
   // 1 spp), for filters with (Mitchell) and without negative lobes. This needs sample i's
-  // offset to be uniform over pixels; poisson's is not yet (issue 15: its Pixel values take
-  // few offsets, near the centre), and it keeps 0.93 / 1.83 / 3.87 at 1 / 2 / 4 spp.
+  // offset to be uniform over pixels (poisson's is since its toroidal shift, issue 15;
+  // before, it took few offsets near the centre and kept 0.93 / 1.83 / 3.87).
   for (auto [type, radius] : {std::pair{FilterType::Gaussian, 1.5f}, std::pair{FilterType::Mitchell, 2.0f}}) {
     Filter filter(filter_desc(type, radius));
-    for (const char* name : {"random", "jitter", "sobol"}) {
+    for (const char* name : {"random", "jitter", "poisson", "sobol"}) {
       auto sampler = make_sampler(name, 9);
       PixelSampleState ps(*sampler);
       for (int n : {1, 2, 4}) {

@@ -2,6 +2,8 @@
 // each reconstruction (importance, splat, rank).
 #include "renderer/render/camera_sample.h"
 
+#include "tests/support/filter_quadrature.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,26 +12,14 @@
 
 namespace pdrt {
 namespace {
+using test::filter_integral;
+using test::filter_quadrature;
 
 FilterDesc filter_desc(FilterType type, float radius) {
   FilterDesc d;
   d.type = type;
   d.radius = radius;
   return d;
-}
-
-// Integral of g(x, y) * f(x, y) over the filter's square, midpoint rule on 800^2 cells.
-template <class G>
-double filter_integral(const Filter& f, G&& g) {
-  const int n = 800;
-  const double r = f.radius(), h = 2 * r / n;
-  double s = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      double x = -r + (i + 0.5) * h, y = -r + (j + 0.5) * h;
-      s += g(x, y) * f.eval(float(x), float(y));
-    }
-  return s * h * h;
 }
 
 TEST(CameraSample, DrawsEachDimensionFromItsOwnFamily) {
@@ -95,14 +85,7 @@ TEST(CameraSample, ImportanceWastesNoWeightOnPositiveFilters) {
     }
     double useful = (s / n) * (s / n) / (s2 / n);
     double fi = filter_integral(filter, [](double, double) { return 1.0; });
-    double fa = 0;
-    {
-      const int m = 800;
-      const double r = filter.radius(), h = 2 * r / m;
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j) fa += std::abs(filter.eval(float(-r + (i + 0.5) * h), float(-r + (j + 0.5) * h)));
-      fa *= h * h;
-    }
+    double fa = filter_quadrature(filter, [](double, double, double v) { return std::abs(v); });
     double bound = (fi / fa) * (fi / fa);
     std::printf("filter %d: useful fraction %.4f (bound %.4f)\n", int(type), useful, bound);
     if (type == FilterType::Gaussian) {

@@ -2,6 +2,7 @@
 // the user asks for is traced, no pixel is left black, the expectation is the filtered image,
 // and splatting is bit-identical at any thread count.
 #include "renderer/render/filter.h"
+#include "tests/support/filter_quadrature.h"
 #include "tests/support/render_fixtures.h"
 
 #include <gtest/gtest.h>
@@ -81,17 +82,9 @@ SceneDesc edge_scene(int spp, Reconstruction mode, const char* sampler, uint64_t
 }
 
 double gaussian_mass_left_of(double edge) {
-  FilterDesc d;
-  Filter f(d);
-  const int n = 1200;
-  const double r = f.radius(), h = 2 * r / n;
-  double left = 0, all = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      double x = -r + (i + 0.5) * h, v = f.eval(float(x), float(-r + (j + 0.5) * h));
-      all += v, left += x < edge ? v : 0;
-    }
-  return left / all;
+  Filter f{FilterDesc{}};
+  return filter_quadrature(f, [&](double x, double, double v) { return x < edge ? v : 0.0; }, 1200) /
+         filter_quadrature(f, [](double, double, double v) { return v; }, 1200);
 }
 
 // Mean and standard error of column `x` over rows and seeds.

@@ -21,19 +21,28 @@ float alpha_at(float roughness) { return std::max(kMinGgxAlpha, roughness * roug
 
 Vec3 wo_at(float mu) { return {std::sqrt(std::max(0.0f, 1.0f - mu * mu)), 0.0f, mu}; }
 
-// White conductor: every reflected direction above the horizon carries G2 / G1.
-double conductor_albedo(float mu, float alpha, int n) {
-  MicrofacetGgx ggx(alpha);
-  Vec3 wo = wo_at(mu);
+// Mean over the midpoint rule's n x n points of the sampler's unit square of h(m, wo . m), for
+// the visible normals m that face wo (the others weigh 0).
+template <class H>
+double visible_normal_mean(const MicrofacetGgx& ggx, Vec3 wo, int n, H&& h) {
   double sum = 0;
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       Vec3 m = ggx.sample_visible(wo, (a + 0.5f) / n, (b + 0.5f) / n);
-      if (dot(wo, m) <= 0) continue;
-      Vec3 wi = normalize(reflect(wo, m));
-      if (wi.z > 0) sum += ggx.g2(wo, wi) / ggx.g1(wo);
+      float c = dot(wo, m);
+      if (c > 0) sum += h(m, c);
     }
   return sum / (double(n) * n);
+}
+
+// White conductor: every reflected direction above the horizon carries G2 / G1.
+double conductor_albedo(float mu, float alpha, int n) {
+  MicrofacetGgx ggx(alpha);
+  Vec3 wo = wo_at(mu);
+  return visible_normal_mean(ggx, wo, n, [&](Vec3 m, float) {
+    Vec3 wi = normalize(reflect(wo, m));
+    return wi.z > 0 ? double(ggx.g2(wo, wi) / ggx.g1(wo)) : 0.0;
+  });
 }
 
 // White rough dielectric, wo on the upper side, eta = transmitted over incident: both the
@@ -41,18 +50,13 @@ double conductor_albedo(float mu, float alpha, int n) {
 double dielectric_albedo(float mu, float alpha, float eta, int n) {
   MicrofacetGgx ggx(alpha);
   Vec3 wo = wo_at(mu);
-  double sum = 0;
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      Vec3 m = ggx.sample_visible(wo, (a + 0.5f) / n, (b + 0.5f) / n);
-      float c = dot(wo, m);
-      if (c <= 0) continue;
-      double f = fresnel_dielectric(c, eta);
-      Vec3 wr = normalize(reflect(wo, m)), wt;
-      if (wr.z > 0) sum += f * (ggx.g2(wo, wr) / ggx.g1(wo));
-      if (f < 1 && refract(wo, m, eta, &wt) && (wt = normalize(wt)).z < 0) sum += (1 - f) * (ggx.g2(wo, wt) / ggx.g1(wo));
-    }
-  return sum / (double(n) * n);
+  return visible_normal_mean(ggx, wo, n, [&](Vec3 m, float c) {
+    double f = fresnel_dielectric(c, eta), e = 0;
+    Vec3 wr = normalize(reflect(wo, m)), wt;
+    if (wr.z > 0) e += f * (ggx.g2(wo, wr) / ggx.g1(wo));
+    if (f < 1 && refract(wo, m, eta, &wt) && (wt = normalize(wt)).z < 0) e += (1 - f) * (ggx.g2(wo, wt) / ggx.g1(wo));
+    return e;
+  });
 }
 
 // 2 int_0^1 E(mu) mu dmu of the linear interpolant through (node_i, e_i), exactly; the first

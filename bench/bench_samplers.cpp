@@ -3,6 +3,7 @@
 // default table generation time (<= 10 s on one core).
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/samplers/sample_table.h"
+#include "sampling/core/rng.h"
 
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
@@ -70,6 +71,40 @@ void BM_Sampler(benchmark::State& state, const char* name) {
 BENCHMARK_CAPTURE(BM_Sampler, random, "random");
 BENCHMARK_CAPTURE(BM_Sampler, jitter, "jitter");
 BENCHMARK_CAPTURE(BM_Sampler, sobol, "sobol");
+
+// A path tracer's access pattern (issue 15 defect 4): per pixel 64 samples; each takes the
+// camera's pixel, time and lens values, then per vertex d < 8 the light pick, light, lobe,
+// gloss and roulette values, reaching vertex d with probability 0.8^d (a hash decides, the
+// same for every sampler). Items are values, so ns per value compare across samplers.
+void BM_PathPattern(benchmark::State& state, const char* name) {
+  auto s = pdrt::make_sampler(name, 1);
+  pdrt::PixelSampleState ps(*s);
+  int64_t pixel = 0, values = 0;
+  double acc = 0;
+  for (auto _ : state) {
+    const int px = int(pixel & 255), py = int(pixel >> 8) & 255;
+    ++pixel;
+    ps.set_pixel_pass(0, 64);
+    for (int64_t i = 0; i < 64; ++i) {
+      ps.start_pixel_sample(px, py, i);
+      acc += ps.get_2d(pdrt::Family::Pixel)[0] + ps.get_1d(pdrt::Family::Time, 0) + ps.get_2d(pdrt::Family::Lens)[0];
+      values += 3;
+      const uint64_t h = pdrt::mix64(uint64_t(pixel) * 64 + uint64_t(i));
+      for (int d = 0; d < 8 && (d == 0 || ((h >> (8 * d)) & 255) < 205); ++d) {  // 205/256 = 0.8
+        acc += ps.get_1d(pdrt::Family::Time, 1 + 3 * d) + ps.get_2d(pdrt::Family::Light, d)[0] +
+               ps.get_1d(pdrt::Family::Time, 2 + 3 * d) + ps.get_2d(pdrt::Family::Gloss, d)[1] +
+               ps.get_1d(pdrt::Family::Time, 3 + 3 * d);
+        values += 5;
+      }
+    }
+  }
+  benchmark::DoNotOptimize(acc);
+  state.SetItemsProcessed(values);
+}
+BENCHMARK_CAPTURE(BM_PathPattern, random, "random");
+BENCHMARK_CAPTURE(BM_PathPattern, jitter, "jitter");
+BENCHMARK_CAPTURE(BM_PathPattern, poisson, "poisson");
+BENCHMARK_CAPTURE(BM_PathPattern, sobol, "sobol");
 
 void BM_DefaultTablesOneCore(benchmark::State& state) {
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);

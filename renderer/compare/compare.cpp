@@ -170,7 +170,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
                          std::to_string(rs.sampler.seed) + "|" + reconstruction_name(rs.film.filter.reconstruction) + "|" +
-                         PDRT_VERSION + "|samplers-v3|halves";  // bump when sampler output changes
+                         PDRT_VERSION + "|samplers-v4|halves";  // bump when sampler output changes
   char key[32];
   std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
   const fs::path cache_root = o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir;

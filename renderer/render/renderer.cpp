@@ -77,6 +77,9 @@ struct PixelRenderer {
       rule.rank_candidates_before = begin > 0 ? rank_candidates(filter, begin) : 0.0;
       first = 0, last = int64_t(std::ceil(rule.rank_candidates));
     }
+    const int64_t from = decide ? first / 2 : first, to = decide ? (last + 1) / 2 : last;  // each stream's indices
+    ps.set_pixel_pass(from, to);
+    if (pd) pd->set_pixel_pass(from, to);
     int64_t rays = 0;
     for (int64_t g = first; g < last; g += 4) {
       Ray ray[4];
@@ -213,6 +216,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   };
 
   int rounds = 0;
+  SamplerProfiler profiler;  // the passes only: the build and the image are not sampling work
   if (!ad.enabled) {
     pass("render", [&](int, int) { return int64_t(desc.sampler.spp); });
   } else if (pass("render (adaptive, round 0)", [&](int, int) { return int64_t(ad.min_spp); })) {
@@ -260,9 +264,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
         break;
     }
   }
+  RenderResult res;
+  res.stats.sampler_profile = profiler.result();
   device.check();
 
-  RenderResult res;
   res.image = film.image(desc.film.exposure);
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.build_seconds = build_seconds;

@@ -32,6 +32,7 @@ struct RenderStats {
   int adaptive_rounds = 0; // refinement rounds after the first pass
   std::size_t triangles = 0;
   int threads = 0;         // worker threads the render ran on (options' 0 resolved)
+  SamplerProfile sampler_profile;  // CPU ticks of the passes, and those spent computing sample values
 };
 
 struct RenderResult {

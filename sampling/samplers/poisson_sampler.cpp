@@ -87,6 +87,8 @@ class PoissonSampler final : public Sampler {
     map_stream(px, py, f, bounce, 0, out);
   }
 
+  bool prepare_computes(Family f) const override { return f == Family::Pixel; }  // the rest point into tables
+
   int64_t samples_available(int px, int py) const override {
     thread_local PreparedStream p;
     p.want = UINT32_MAX;

@@ -1,10 +1,12 @@
 // Sampler registry and the shared stream hash.
 #include "sampling/samplers/sampler.h"
 
+#include "sampling/core/bit_reverse.h"
 #include "sampling/core/errors.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/rng.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace pdrt {
@@ -55,16 +57,51 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
   return mix64(seed_hash ^ k);
 }
 
-uint64_t shuffle_index(uint64_t index, uint64_t stream) {
+namespace {
+
+// Index 2^top + low, 1 <= top < 32: the `top` bits of `low` reversed (most significant at bit
+// 0), where an add and products by even constants let a bit depend only on the bits below
+// it, i.e. on the index bits above its own; then reversed back.
+// The rounds are Vegdahl's improved Laine–Karras hash (as in pbrt-v4's FastOwenScrambler):
+// the multiply by an odd seed-dependent factor makes the flips of neighbouring bits independent.
+inline uint32_t shuffle32(uint32_t low, int top, uint32_t seed) {
+  uint32_t x = reverse_bits32(low << (32 - top));
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return (uint32_t(1) << top) | (reverse_bits32(x) >> (32 - top));
+}
+
+__attribute__((target_clones("avx2", "default"))) void shuffle_block(uint32_t from, uint32_t to, int top, uint32_t seed,
+                                                                     uint32_t* out) {
+  for (uint32_t low = from; low < to; ++low) out[low] = shuffle32(low, top, seed);
+}
+
+}  // namespace
+
+uint64_t IndexShuffle::operator()(uint64_t index) const {
   if (index < 2) return index;
   const int top = 63 - __builtin_clzll(index);  // the leading bit never flips
-  const uint64_t key = mix64(stream ^ 0x5f);      // decorrelated from the stream's other uses
-  uint64_t out = index;
-  for (int c = 0; c < top; ++c) {
-    uint64_t above = index >> (c + 1);  // non-zero: contains the leading bit
-    out ^= (mix64(key ^ (above * 0x9e3779b97f4a7c15ull) ^ uint64_t(c)) & 1u) << c;
+  if (top != top_) top_ = top, seed_ = mix64(key_ + uint64_t(top));
+  if (top < 32) return shuffle32(uint32_t(index) & ((uint32_t(1) << top) - 1), top, uint32_t(seed_));
+  uint64_t x = reverse_bits64(index << (64 - top));  // the same rounds in 64 bits
+  x ^= x * 0x3d20adea6c50b47cull;
+  x += seed_;
+  x *= (seed_ >> 32) | 1u;
+  x ^= x * 0x05526c56b82f1e52ull;
+  x ^= x * 0x53a22864c7afe638ull;
+  return (uint64_t(1) << top) | (reverse_bits64(x) >> (64 - top));
+}
+
+void IndexShuffle::fill(uint32_t n, uint32_t* out) const {
+  for (uint32_t i = 0; i < std::min<uint32_t>(n, 2); ++i) out[i] = i;
+  for (int top = 1; top < 32 && (uint32_t(1) << top) < n; ++top) {
+    const uint32_t base = uint32_t(1) << top, end = std::min<uint64_t>(uint64_t(base) * 2, n) - base;
+    // shuffle_block writes out[low] for the block's `low`s, i.e. out + base.
+    shuffle_block(0, end, top, uint32_t(mix64(key_ + uint64_t(top))), out + base);
   }
-  return out;
 }
 
 }  // namespace pdrt

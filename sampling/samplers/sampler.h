@@ -2,12 +2,15 @@
 // The replayable per-pixel sampler (pbrt-v4 style): every value is a pure function of
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
+#include "sampling/samplers/sampler_profile.h"
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace pdrt {
@@ -37,7 +40,23 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 // the integral along that map instead of over the product domain (a per-pixel bias that
 // more samples never remove). Power-of-two prefixes keep their point sets, so their
 // stratification and prefix extension are unchanged.
-uint64_t shuffle_index(uint64_t index, uint64_t stream);
+// O(1) per index: the bits below the leading one are a nested (Owen) scramble of themselves,
+// computed as in Laine & Karras 2011 / Burley 2020 on their reversal (an add and products by
+// even constants let a bit depend only on the bits below it), keyed by the stream and the
+// leading bit's position.
+class IndexShuffle {
+ public:
+  explicit IndexShuffle(uint64_t stream) : key_(stream ^ 0x9c8d7e6f5a4b3c2dull) {}
+  uint64_t operator()(uint64_t index) const;
+  // out[i] = (*this)(i) for i < n, a power of two at a time in a loop that vectorises.
+  void fill(uint32_t n, uint32_t* out) const;
+
+ private:
+  uint64_t key_;
+  mutable int top_ = -1;  // the last leading-bit position and its scramble seed: a loop over
+  mutable uint64_t seed_ = 0;  // indices hashes once per power of two
+};
+inline uint64_t shuffle_index(uint64_t index, uint64_t stream) { return IndexShuffle(stream)(index); }
 
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
@@ -63,6 +82,23 @@ struct PreparedStream {
   }
 };
 
+// A PreparedStream holding n computed values per axis (dim 1 or 2) in 32-bit fixed point:
+// value(i, k) = v_k(i) / 2^32, where value(i, v) writes v_0 (and v_1) of index i.
+// With `value` null, own already holds the n * dim values.
+template <class ValueFn>
+void fill_prepared(PreparedStream* out, uint32_t n, int dim, ValueFn&& value) {
+  if constexpr (!std::is_same_v<std::decay_t<ValueFn>, std::nullptr_t>) {
+    out->own.resize(std::size_t(n) * dim);
+    for (uint32_t i = 0; i < n; ++i) value(i, out->own.data() + std::size_t(i) * dim);
+  }
+  out->coords = out->own.data();
+  out->count = n;
+  out->shift = dim == 2 ? 1 : 0;
+  out->grows = true;
+  for (int k = 0; k < 2; ++k)
+    out->src[k] = uint8_t(dim == 2 ? k : 0), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = 0x1.0p-32;
+}
+
 class Sampler {
  public:
   virtual ~Sampler() = default;
@@ -70,14 +106,18 @@ class Sampler {
   uint64_t seed() const { return seed_; }
 
   // Value of sample `index` of pixel (px, py) in `family` at path vertex `bounce`.
-  // Pixel-family values are offsets within the pixel, in [0,1)^2.
+  // Pixel-family values are offsets within the pixel, in [0,1)^2. get_1d of a 2-D family is
+  // get_2d's first axis.
   virtual double get_1d(int px, int py, int64_t index, Family family, int bounce) const = 0;
   virtual Vec2 get_2d(int px, int py, int64_t index, Family family, int bounce) const = 0;
 
   // Fills `out` so that out->value(i, k) equals get_2d(px, py, i, family, bounce)[k] (or
-  // get_1d for k = 0) bit for bit for every i < out->count; sets out->coords = nullptr
-  // when the sampler has no such form (the default).
+  // get_1d for k = 0) bit for bit for every i < out->count, at least the first out->want of
+  // them when `grows` is set; sets out->coords = nullptr when the sampler has no such form
+  // (the default). Every built-in sampler has one: a value then costs a table read.
   virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
+  // Whether prepare() computes every value it stores (true) or points into stored tables.
+  virtual bool prepare_computes(Family) const { return true; }
 
   // How many samples pixel (px, py) can take before values stop being well distributed
   // (prefix extension is exact below this); unlimited samplers return INT64_MAX.
@@ -104,12 +144,20 @@ class PixelSampleState {
     if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
     index_ = index;
   }
+  // The current pass takes indices [begin, end) of the pixel's streams: a stream that most of
+  // its samples use is prepared for `end` values at once (without a pass: 16, doubling).
+  void set_pixel_pass(int64_t begin, int64_t end) {
+    begin_ = std::max<int64_t>(0, begin);
+    budget_ = uint32_t(std::clamp<int64_t>(end, 1, kMaxBudget));
+  }
   double get_1d(Family f, int bounce = 0) const {
+    SamplerScope scope;
     const PreparedStream* p = prepared(f, bounce);
     if (p && uint64_t(index_) < p->count) return p->value(index_, 0);
     return s_->get_1d(px_, py_, index_, f, bounce);
   }
   Vec2 get_2d(Family f, int bounce = 0) const {
+    SamplerScope scope;
     const PreparedStream* p = prepared(f, bounce);
     if (p && uint64_t(index_) < p->count) return {p->value(index_, 0), p->value(index_, 1)};
     return s_->get_2d(px_, py_, index_, f, bounce);
@@ -121,22 +169,33 @@ class PixelSampleState {
     if (unsigned(bounce) >= unsigned(kSlots)) return nullptr;
     const int k = int(f) * kSlots + bounce;
     PreparedStream& p = slot_[k];
-    if (epoch_of_[k] != epoch_) {
-      epoch_of_[k] = epoch_;
-      p.want = 16;
+    if (epoch_of_[k] != epoch_) epoch_of_[k] = epoch_, uses_[k] = 0, p.coords = nullptr;
+    if (uses_[k] == kDeclined) return nullptr;
+    ++uses_[k];
+    if (!p.coords) {
+      // A sampler that computes the values it prepares gains only on a stream that at least
+      // half of the pass's samples so far have used (the camera's and the first bounces'); the
+      // deep bounces that few paths reach are asked value by value.
+      if (s_->prepare_computes(f) && 2 * int64_t(uses_[k]) < index_ - begin_ + 1) return nullptr;
+      p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(budget_, index_ + 1), INT32_MAX));
       s_->prepare(px_, py_, f, bounce, &p);
-    } else if (p.coords && p.grows && uint64_t(index_) >= p.count) {
+      if (!p.coords) uses_[k] = kDeclined;
+    } else if (p.grows && uint64_t(index_) >= p.count) {
       // Doubling keeps the total preparation work linear in the samples used.
       p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(2 * int64_t(p.want), index_ + 1), INT32_MAX));
       s_->prepare(px_, py_, f, bounce, &p);
     }
     return p.coords ? &p : nullptr;
   }
+  static constexpr uint32_t kDeclined = UINT32_MAX;  // the sampler has no prepared form
+  static constexpr int64_t kMaxBudget = int64_t(1) << 16;  // larger passes grow by doubling
   const Sampler* s_;
   int px_ = INT32_MIN, py_ = INT32_MIN;
+  uint32_t budget_ = 16;
+  int64_t begin_ = 0;
   int64_t index_ = 0;
   uint32_t epoch_ = 1;  // differs from the slots' initial 0 even before the first pixel
-  mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{};
+  mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{}, uses_{};
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 

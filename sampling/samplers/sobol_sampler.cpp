@@ -4,42 +4,45 @@
 // scramble seeded per (pixel, family, bounce), like pbrt-v4's padded Sobol sampler. Owen
 // scrambling keeps the net property, so every power-of-two prefix is stratified in all
 // elementary intervals, and prefixes extend.
+#include "sampling/core/bit_reverse.h"
 #include "sampling/core/rng.h"
 #include "sampling/samplers/sampler.h"
 
 namespace pdrt {
 namespace {
 
-uint32_t sobol_dim0(uint32_t i) {  // van der Corput: the bits of i mirrored
-  i = (i << 16) | (i >> 16);
-  i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
-  i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
-  i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
-  return ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
-}
-
-uint32_t sobol_dim1(uint32_t i) {
-  uint32_t v = 1u << 31, x = 0;
-  for (; i; i >>= 1, v ^= v >> 1)
+// The second Sobol dimension (x+1 polynomial: v_j = v_{j-1} ^ (v_{j-1} >> 1)), computed bit
+// reversed (v_0 = 1, v_j = v_{j-1} ^ (v_{j-1} << 1)), the form the scramble works on.
+uint32_t sobol_dim1_reversed(uint32_t i) {
+  uint32_t v = 1, x = 0;
+  for (; i; i >>= 1, v ^= v << 1)
     if (i & 1) x ^= v;
   return x;
 }
 
-uint32_t reverse_bits(uint32_t i) { return sobol_dim0(i); }
+// Hash-based Owen scramble (Burley 2020, after Laine & Karras 2011, with Vegdahl's improved
+// rounds as in pbrt-v4's FastOwenScrambler) of a value given bit reversed: adding a seed and
+// multiplying (by even constants, or by an odd factor) only lets a bit depend on the bits
+// below it, i.e. on the bits above it in the original order, which is exactly the structure
+// of a nested (Owen) scramble. A few multiplies instead of one hash per bit. The first dimension (van der
+// Corput) is the index reversed, so its reversed form is the index itself.
+uint32_t owen_scramble_reversed(uint32_t x, uint64_t seed) {
+  const uint32_t s = uint32_t(seed ^ (seed >> 32));
+  x ^= x * 0x3d20adeau;
+  x += s;
+  x *= (s >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return reverse_bits32(x);
+}
 
-// Hash-based Owen scramble (Burley 2020, after Laine & Karras 2011): in bit-reversed order,
-// adding a seed and xoring with products by even constants only lets a bit depend on the
-// bits below it, i.e. on the bits above it in the original order, which is exactly the
-// structure of a nested (Owen) scramble; four rounds make the flips look independent.
-// Two multiplies per round instead of one hash per bit.
-uint32_t owen_scramble(uint32_t x, uint64_t seed) {
-  x = reverse_bits(x);
-  x += uint32_t(seed ^ (seed >> 32));
-  x ^= x * 0x6c50b47cu;
-  x ^= x * 0xb82f1e52u;
-  x ^= x * 0xc7afe638u;
-  x ^= x * 0x8d22f6e6u;
-  return reverse_bits(x);
+uint32_t sobol_0(uint32_t j, uint64_t s) { return owen_scramble_reversed(j, s); }
+uint32_t sobol_1(uint32_t j, uint64_t s1) { return owen_scramble_reversed(sobol_dim1_reversed(j), s1); }
+
+// The prepared streams' values in loops that vectorise (AVX2 where the processor has it).
+__attribute__((target_clones("avx2", "default"))) void scramble(uint32_t n, const uint32_t* x, uint64_t s,
+                                                                uint32_t* out) {
+  for (uint32_t i = 0; i < n; ++i) out[i] = owen_scramble_reversed(x[i], s);
 }
 
 class SobolSampler final : public Sampler {
@@ -47,15 +50,37 @@ class SobolSampler final : public Sampler {
   explicit SobolSampler(uint64_t seed) : Sampler(seed) {}
   std::string name() const override { return "sobol"; }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
-    uint64_t s = stream(px, py, f, bounce);
-    index = int64_t(shuffle_index(uint64_t(index), s));
-    return unit_from_u32(owen_scramble(sobol_dim0(uint32_t(index)), s));
+    const uint64_t s = stream(px, py, f, bounce);
+    return unit_from_u32(sobol_0(uint32_t(IndexShuffle(s)(uint64_t(index))), s));
   }
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
-    uint64_t s = stream(px, py, f, bounce);
-    index = int64_t(shuffle_index(uint64_t(index), s));
-    return {unit_from_u32(owen_scramble(sobol_dim0(uint32_t(index)), s)),
-            unit_from_u32(owen_scramble(sobol_dim1(uint32_t(index)), mix64(s)))};
+    const uint64_t s = stream(px, py, f, bounce);
+    const uint32_t j = uint32_t(IndexShuffle(s)(uint64_t(index)));
+    return {unit_from_u32(sobol_0(j, s)), unit_from_u32(sobol_1(j, mix64(s)))};
+  }
+  void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
+    const uint64_t s = stream(px, py, f, bounce);
+    const uint32_t n = out->want;
+    thread_local std::vector<uint32_t> perm;
+    perm.resize(n);
+    IndexShuffle(s).fill(n, perm.data());
+    out->own.resize(std::size_t(n) * family_dim(f));
+    if (family_dim(f) == 1) {
+      scramble(n, perm.data(), s, out->own.data());
+    } else {
+      // The second dimension in index order, each from an earlier one: d1(j) = d1(j - lowbit) ^ v_lowbit.
+      thread_local std::vector<uint32_t> d1, axis;
+      const uint32_t all = n <= 1 ? 1 : uint32_t(1) << (32 - __builtin_clz(n - 1));
+      d1.resize(all);
+      d1[0] = 0;
+      for (uint32_t j = 1; j < all; ++j) d1[j] = d1[j & (j - 1)] ^ sobol_dim1_reversed(j & (0u - j));
+      axis.resize(2 * std::size_t(n));
+      scramble(n, perm.data(), s, axis.data());
+      for (uint32_t i = 0; i < n; ++i) perm[i] = d1[perm[i]];
+      scramble(n, perm.data(), mix64(s), axis.data() + n);
+      for (uint32_t i = 0; i < n; ++i) out->own[2 * i] = axis[i], out->own[2 * i + 1] = axis[n + i];
+    }
+    fill_prepared(out, n, family_dim(f), nullptr);
   }
   int64_t samples_available(int, int) const override { return int64_t(1) << 32; }
 };

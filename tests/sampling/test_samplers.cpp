@@ -1,5 +1,6 @@
 // The replayable sampler interface: determinism, stratification, decorrelation.
 #include "sampling/samplers/sampler.h"
+#include "sampling/core/rng.h"
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,31 @@ TEST_P(EverySampler, PixelSampleStateMatchesTheSamplerBitForBit) {
   EXPECT_EQ(compared, 6 * 11 * 5 * 6);
 }
 
+// The renderer's passes (set_pixel_pass): dense streams are prepared for the whole pass,
+// sparse ones (a deep bounce that few samples reach) are asked value by value, adaptive
+// rounds resume at a later begin; every value must still equal the pure function's.
+TEST_P(EverySampler, PixelSampleStateInPassesMatchesTheSamplerBitForBit) {
+  PixelSampleState ps(*s);
+  int64_t compared = 0;
+  const int64_t passes[][2] = {{0, 1}, {0, 4}, {0, 64}, {64, 128}, {16, 300}};
+  for (int px = -2; px < 3; ++px)
+    for (const auto& pass : passes) {
+      ps.set_pixel_pass(pass[0], pass[1]);
+      for (int64_t i = pass[0]; i < pass[1]; ++i) {
+        ps.start_pixel_sample(px, 7, i);
+        ASSERT_EQ(s->get_2d(px, 7, i, Family::Pixel, 0), ps.get_2d(Family::Pixel)) << i;
+        ASSERT_EQ(s->get_1d(px, 7, i, Family::Time, 0), ps.get_1d(Family::Time, 0)) << i;
+        ++compared;
+        if (i % 5 == 0) {  // a sparse stream: one sample in five
+          ASSERT_EQ(s->get_2d(px, 7, i, Family::Gloss, 9), ps.get_2d(Family::Gloss, 9)) << i;
+          ASSERT_EQ(s->get_1d(px, 7, i, Family::Time, 28), ps.get_1d(Family::Time, 28)) << i;
+          ++compared;
+        }
+      }
+    }
+  EXPECT_GT(compared, 2000);
+}
+
 TEST_P(EverySampler, BouncesAndSeedsDrawDifferentValues) {
   auto other_seed = make_sampler(GetParam(), 43);
   int same_bounce = 0, same_seed = 0;
@@ -102,6 +128,42 @@ TEST_P(EverySampler, FamiliesAreDecorrelatedAcrossPixels) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samplers, EverySampler, ::testing::ValuesIn(sampler_names()));
+
+// The index shuffle permutes [2^t, 2^(t+1)) within itself (so every power-of-two prefix keeps
+// its point set), its bulk form equals the per-index one, and it depends on the stream.
+TEST(IndexShuffle, PermutesEveryPowerOfTwoBlockAndFillMatches) {
+  for (uint64_t stream : {1ull, 0x123456789abcdefull}) {
+    const IndexShuffle shuffle(stream);
+    const uint32_t n = 5000;
+    std::vector<uint32_t> bulk(n);
+    shuffle.fill(n, bulk.data());
+    std::vector<bool> seen(8192, false);
+    for (uint32_t i = 0; i < 8192; ++i) {
+      const uint64_t j = shuffle(i);
+      if (i < n) ASSERT_EQ(j, bulk[i]) << i;
+      if (i < 2) ASSERT_EQ(j, i);
+      else ASSERT_EQ(j >> (63 - __builtin_clzll(i)), 1u) << i;  // stays in its block
+      ASSERT_FALSE(seen[j]) << i;
+      seen[j] = true;
+    }
+  }
+  int same = 0;
+  for (uint64_t i = 2; i < 1024; ++i) same += IndexShuffle(1)(i) == IndexShuffle(2)(i);
+  EXPECT_LT(same, 100);  // about 1022 * (mean 1 / block size) by chance, i.e. about 10
+}
+
+// The flips are a nested scramble with independent bits: over many streams, sample i's
+// shuffled index is uniform over its block (chi-square, 16 cells, 99.9 % critical 37.7).
+TEST(IndexShuffle, ShuffledIndexIsUniformOverStreams) {
+  for (uint64_t i : {16u, 21u, 31u}) {
+    std::vector<int> count(16, 0);
+    const int streams = 16000;
+    for (int s = 0; s < streams; ++s) ++count[IndexShuffle(mix64(uint64_t(s)))(i) - 16];
+    double chi2 = 0;
+    for (int c : count) chi2 += (c - 1000.0) * (c - 1000.0) / 1000.0;
+    EXPECT_LT(chi2, 37.7) << i;
+  }
+}
 
 // Counts of the first n 2-D samples of one pixel in a gx x gy grid of strata.
 std::vector<int> strata(const Sampler& s, int n, int gx, int gy) {

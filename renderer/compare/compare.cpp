@@ -9,6 +9,7 @@
 #include "sampling/core/rng.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/compare/seed_statistics.h"
+#include "sampling/analysis/stream_analysis.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
 #include "sampling/samplers/sampler.h"
@@ -32,6 +33,32 @@ namespace {
 // The reference cache's key hash started from 1469598103934665603, the FNV basis short of its
 // last digit; kept, so references cached by earlier versions are still found.
 constexpr uint64_t kReferenceKeyBasis = 1469598103934665603ull;
+
+// Pixels whose used samples are analysed per (sampler, spp, family): 1024 point sets make
+// an averaged periodogram smooth to a few percent.
+constexpr int kUsedSamplePixels = 1024;
+
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json profile_json(const SamplerProfile& p) {
+  return {{"share", finite_or_null(p.share())},
+          {"standard_error", finite_or_null(p.standard_error())},
+          {"ticks", p.ticks},
+          {"sampler_ticks", p.sampler_ticks}};
+}
+
+json used_json(const StreamAnalysis& a) {
+  return {{"family", family_name(a.family)},
+          {"bounce", 0},
+          {"points", a.spp},
+          {"pixels", a.pixels},
+          {"periodic", a.periodic},
+          {"rho_mean", finite_or_null(a.rho_mean)},
+          {"rho_p05", finite_or_null(a.rho_p05)},
+          {"rho_min", finite_or_null(a.rho_min)},
+          {"resolution", a.resolution},
+          {"spectrum", {{"frequency", a.spectrum.frequency}, {"power", a.spectrum.power}}}};
+}
 
 // A perceptually ordered dark-to-bright colour ramp for heat maps, in display RGB at t = 0,
 // 1/4, ..., 1 (results.json carries it so the report's colour bars match the PNGs).
@@ -57,6 +84,7 @@ struct SeedRun {
   uint64_t seed = 0;
   double seconds = 0, render_seconds = 0, cpu_seconds = 0, relmse = 0;
   int64_t samples = 0;
+  SamplerProfile profile;  // the sampler's share of the passes' CPU ticks
 };
 
 // A (sampler, spp) over every seed; `rmse` is the mean over seeds of the reference-corrected RMSE.
@@ -68,6 +96,8 @@ struct Run {
   SeedStatistics stats;
   std::vector<SeedRun> seeds;
   RadialSpectrum spectrum;  // of the error image, averaged over the seeds
+  SamplerProfile profile;   // summed over the seeds
+  std::vector<StreamAnalysis> used;  // seed 0's samples, per family
   Image image;              // seed 0's
   std::string image_file, error_file;
 };
@@ -241,6 +271,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         sr.cpu_seconds = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
         sr.samples = r.stats.samples;
         sr.relmse = relative_mse(r.image, ref);
+        sr.profile = r.stats.sampler_profile;
+        run.profile.ticks += sr.profile.ticks, run.profile.sampler_ticks += sr.profile.sampler_ticks;
         RadialSpectrum sp = error_spectrum(r.image, ref);
         if (k == 0) run.spectrum = sp, run.samples = r.stats.samples;
         else
@@ -252,6 +284,13 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         images.push_back(std::move(r.image));
       }
       for (double& p : run.spectrum.power) p /= o.seeds;
+      {
+        SceneDesc s0 = base;
+        s0.sampler.type = name, s0.sampler.seed = compare_seed(base.sampler.seed, 0);
+        const auto sampler = make_scene_sampler(s0.sampler);
+        for (int f = 0; f < kFamilyCount; ++f)
+          run.used.push_back(analyze_stream(*sampler, Family(f), W, H, n, kUsedSamplePixels));
+      }
       run.stats = seed_statistics(images, ref, ref_noise);
       run.rmse = run.stats.rmse_mean;
       run.image = std::move(images[0]);
@@ -260,9 +299,10 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       write_display_png(o.out / run.image_file, W, H, display_rgb(run.image));
       char buf[240];
       std::snprintf(buf, sizeof buf,
-                    "%-8s %5d spp  rmse %.5f +- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g  %lld samples  %.3f s CPU",
+                    "%-8s %5d spp  rmse %.5f +- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g  %lld samples  %.3f s CPU"
+                    " (sampler %.1f%%)",
                     name.c_str(), n, run.rmse, run.stats.rmse_ci95, o.seeds, run.stats.bias2, run.stats.variance,
-                    (long long)run.samples, run.cpu_seconds);
+                    (long long)run.samples, run.cpu_seconds, 100 * run.profile.share());
       say(buf);
       runs.push_back(std::move(run));
     }
@@ -336,7 +376,15 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       {"variance", "per-pixel variance across seeds (K-1 denominator), averaged over pixels and channels"},
       {"bias2", "mean((seed-average - reference)^2) - variance / K - reference variance"},
       {"mse", "bias2 + variance = mean over seeds of MSE_k - reference variance"},
-      {"cpu_seconds", "process CPU time (user + sys, all threads) of the render, without the scene build"}};
+      {"cpu_seconds", "process CPU time (user + sys, all threads) of the render, without the scene build"},
+      {"sampler_share",
+       "share of the render passes' CPU time spent computing sample values: SIGPROF ticks (ITIMER_PROF) that "
+       "land inside the sampler over all ticks, summed over the seeds; standard_error sqrt(s (1 - s) / ticks)"},
+      {"used_samples",
+       "per family, each pixel's samples [0, spp) of its bounce-0 stream (seed 0, up to 1024 pixels spread "
+       "over the image): relative radius rho of every pixel's prefix (min distance over the densest packing's; "
+       "on the torus except the pixel family) and their periodogram averaged over the pixels (power 1 = white "
+       "noise, frequency in cycles per unit)"}};
   j["samplers"] = o.samplers;
   j["spp"] = o.spp;
   j["threads"] = threads_used;
@@ -361,6 +409,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   j["crops"] = crops;
   json jr = json::array();
   for (const Run& r : runs) {
+    json used = json::array();
+    for (const StreamAnalysis& a : r.used) used.push_back(used_json(a));
     json per_seed = json::array();
     for (std::size_t k = 0; k < r.seeds.size(); ++k) {
       const SeedRun& sr = r.seeds[k];
@@ -372,7 +422,8 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                           {"cpu_seconds", sr.cpu_seconds},
                           {"mse", r.stats.mse[k]},
                           {"rmse", r.stats.rmse[k]},
-                          {"relmse", sr.relmse}});
+                          {"relmse", sr.relmse},
+                          {"sampler_share", profile_json(sr.profile)}});
     }
     jr.push_back({{"sampler", r.sampler},
                   {"spp", r.spp},
@@ -388,6 +439,9 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                   {"bias2", r.stats.bias2},
                   {"variance", r.stats.variance},
                   {"relmse", r.relmse},
+                  {"sampler_share", profile_json(r.profile)},
+                  {"sampler_cpu_seconds", finite_or_null(r.profile.share() * r.cpu_seconds)},
+                  {"used_samples", used},
                   {"per_seed", per_seed},
                   {"image", r.image_file},
                   {"error_map", r.error_file},
@@ -398,16 +452,26 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   // Convergence slopes (RMSE ~ spp^slope) and the equal-time view.
   json slopes, eq_time;
   double t_lo = 0, t_hi = 1e300;
-  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> by_time;
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> by_time, by_time_net;
+  json cost = json::object();
   for (const auto& name : o.samplers) {
-    std::vector<double> x, y, t;
+    std::vector<double> x, y, t, t_net;
+    SamplerProfile total;
     for (const Run& r : runs)
-      if (r.sampler == name) x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.cpu_seconds);
+      if (r.sampler == name) {
+        x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.cpu_seconds);
+        // Without the sampler's share: the cost of the paths the pattern drives.
+        t_net.push_back(r.cpu_seconds * (1 - (std::isfinite(r.profile.share()) ? r.profile.share() : 0.0)));
+        total.ticks += r.profile.ticks, total.sampler_ticks += r.profile.sampler_ticks;
+      }
     slopes[name] = loglog_slope(x, y);
     t_lo = std::max(t_lo, t.front()), t_hi = std::min(t_hi, t.back());
     by_time[name] = {t, y};
+    by_time_net[name] = {t_net, y};
+    cost[name] = profile_json(total);
   }
   j["slopes"] = slopes;
+  j["sampler_share"] = cost;
   std::vector<double> grid;
   if (t_hi > t_lo && t_lo > 0)
     for (int i = 0; i < 8; ++i) grid.push_back(t_lo * std::pow(t_hi / t_lo, i / 7.0));
@@ -417,7 +481,11 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     std::vector<double> v;
     for (double g : grid) v.push_back(loglog_interp(ty.first, ty.second, g));
     eq_time["rmse"][name] = v;
+    std::vector<double> w;
+    for (double g : grid) w.push_back(loglog_interp(by_time_net[name].first, ty.second, g));
+    eq_time["rmse_without_sampler"][name] = w;
   }
+  eq_time["without_sampler"] = "CPU seconds less the sampler's share (sampler_share): what the paths cost";
   j["equal_time"] = eq_time;
 
   // Adaptive refinement: a threshold sweep per sampler, each run compared with uniform
@@ -525,14 +593,14 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   write_file_atomically(o.out / "results.csv", [&](std::ostream& os) {
     os.precision(9);
     os << "sampler,spp,seed_index,seed,samples,seconds,render_seconds,cpu_seconds,mse,rmse,relmse,"
-          "rmse_mean,rmse_ci95,bias2,variance,reference_variance\n";
+          "rmse_mean,rmse_ci95,bias2,variance,reference_variance,profile_ticks,sampler_ticks\n";
     for (const Run& r : runs)
       for (std::size_t k = 0; k < r.seeds.size(); ++k) {
         const SeedRun& sr = r.seeds[k];
         os << r.sampler << "," << r.spp << "," << k << "," << sr.seed << "," << sr.samples << "," << sr.seconds << ","
            << sr.render_seconds << "," << sr.cpu_seconds << "," << r.stats.mse[k] << "," << r.stats.rmse[k] << ","
            << sr.relmse << "," << r.rmse << "," << r.stats.rmse_ci95 << "," << r.stats.bias2 << ","
-           << r.stats.variance << "," << ref_var << "\n";
+           << r.stats.variance << "," << ref_var << "," << sr.profile.ticks << "," << sr.profile.sampler_ticks << "\n";
       }
   });
   fs::path results = o.out / "results.json";

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Plots and the HTML report of `pdrt compare`: reads DIR/results.json and writes
 rmse_vs_spp.png (log-log, fitted slopes, 95 % interval bars over the seeds), rmse_vs_time.png
-(equal-time view on CPU seconds),
-error_spectra.png (radially averaged power of the error images), errors/heat-N.png (the
+(equal-time view on CPU seconds, and on CPU seconds less the sampler's share),
+error_spectra.png (radially averaged power of the error images), used_spectra.png (the
+periodogram of the samples the renders used, per family), errors/heat-N.png (the
 error heat maps at N spp with their colour bar), with --adaptive adaptive_vs_spp.png (the
 threshold sweep against uniform sampling) and images/adaptive-samples.png (sample counts),
 and index.html."""
@@ -44,27 +45,38 @@ def main(out):
     fig.savefig(os.path.join(out, "rmse_vs_spp.png"), dpi=110)
     plt.close(fig)
 
-    fig, ax = plt.subplots(figsize=(6, 4.5))
-    for s in samplers:
-        pts = sorted((u.get("cpu_seconds", u["render_seconds"]), u["rmse"], u.get("rmse_ci95", 0))
-                     for u in runs if u["sampler"] == s)
-        errorbar(ax, [p[0] for p in pts], pts, COLORS.get(s), s)
-    ax.set_xlabel("CPU seconds of the render (user + sys, mean over seeds, without the build)")
-    ax.set_ylabel("RMSE vs reference (95% interval)")
-    ax.set_title("equal-time view")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
+    for ax, net in zip(axes, (False, True)):
+        for s in samplers:
+            pts = sorted((cpu_seconds(u, net), u["rmse"], u.get("rmse_ci95", 0)) for u in runs if u["sampler"] == s)
+            share = (r.get("sampler_share", {}).get(s) or {}).get("share")
+            label = s if share is None else "%s (sampler %.1f%% of CPU)" % (s, 100 * share)
+            errorbar(ax, [p[0] for p in pts], pts, COLORS.get(s), label)
+        ax.set_xlabel("CPU seconds of the render%s (user + sys, mean over seeds)" %
+                      (" less the sampler's share" if net else ""))
+        ax.set_title("equal time: paths only (sampler time removed)" if net else "equal time: whole render")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize="small")
+    axes[0].set_ylabel("RMSE vs reference (95% interval)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "rmse_vs_time.png"), dpi=110)
     plt.close(fig)
 
     plot_spectra(out, r)
+    plot_used_spectra(out, r)
     plot_heat_maps(out, r)
     if r.get("adaptive"):
         plot_sample_maps(out, r)
     if r.get("adaptive_sweep"):
         plot_adaptive(out, r)
     write_html(out, r)
+
+
+def cpu_seconds(u, net):
+    """A run's mean CPU seconds; with net, less the sampler's measured share."""
+    t = u.get("cpu_seconds", u["render_seconds"])
+    share = (u.get("sampler_share") or {}).get("share")
+    return t * (1 - share) if net and share is not None else t
 
 
 def errorbar(ax, xs, pts, color, label):
@@ -78,13 +90,17 @@ def errorbar(ax, xs, pts, color, label):
 
 def plot_spectra(out, r):
     """Radially averaged power spectrum of the luminance error (image - reference) at the
-    lowest, middle and highest spp. The DC term (the mean error) is left out, and so are
-    empty rings (power 0), which a log axis cannot show; the y limits come from the data."""
+    lowest, middle and highest spp, averaged over the seeds. Top row: the power itself, one
+    scale for all panels (the y limits come from the data). Bottom row: each curve divided by
+    its own mean, so its shape reads directly: flat is white noise, rising with frequency is
+    blue noise (error pushed out of the low frequencies the eye sees). The DC term (the mean
+    error) and empty rings (power 0, which a log axis cannot show) are left out."""
     runs, samplers, spps = r["runs"], r["samplers"], r["spp"]
     show = sorted(set([spps[0], spps[len(spps) // 2], spps[-1]]))
-    fig, axes = plt.subplots(1, len(show), figsize=(5 * len(show), 4), squeeze=False)
+    fig, axes = plt.subplots(2, len(show), figsize=(5 * len(show), 7.5), squeeze=False)
     lo, hi = math.inf, 0.0
-    for ax, n in zip(axes[0], show):
+    for col, n in enumerate(show):
+        ax, axn = axes[0][col], axes[1][col]
         for s in samplers:
             for u in runs:
                 if u["sampler"] == s and u["spp"] == n:
@@ -94,19 +110,65 @@ def plot_spectra(out, r):
                         continue
                     lo, hi = min(lo, min(p for _, p in pts)), max(hi, max(p for _, p in pts))
                     ax.semilogy([f for f, _ in pts], [p for _, p in pts], color=COLORS.get(s), label=s, lw=1)
-        ax.set_title("luminance error spectrum, %d spp, mean of %d seeds" % (n, len(r.get("seeds", [0]))),
-                     fontsize=10)
-        ax.set_xlabel("frequency (cycles per pixel)")
-        ax.set_ylabel("power of the error (radial mean of |FFT|^2 / pixels)")
-        ax.set_xlim(0, 0.5)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize="small")
+                    mean = sum(p for _, p in pts) / len(pts)
+                    axn.semilogy([f for f, _ in pts], [p / mean for _, p in pts], color=COLORS.get(s), label=s, lw=1)
+        ax.set_title("error spectrum, %d spp, mean of %d seeds" % (n, len(r.get("seeds", [0]))), fontsize=10)
+        axn.set_title("the same, each curve / its mean (flat = white)", fontsize=10)
+        ax.set_ylabel("error power (radial mean |FFT|^2 / pixels)")
+        axn.set_ylabel("error power / its mean over frequency")
+        axn.axhline(1.0, color="black", lw=0.6, ls=":")
+        for a in (ax, axn):
+            a.set_xlabel("frequency (cycles per pixel; 0.5 = Nyquist)")
+            a.set_xlim(0, 0.5)
+            a.grid(True, which="both", alpha=0.3)
+            a.legend(fontsize="small")
     if hi > 0:
         for ax in axes[0]:
             ax.set_ylim(lo / 1.5, hi * 1.5)  # one scale, so the panels compare
     fig.suptitle("radially averaged power spectrum of (image - reference) luminance, DC removed", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "error_spectra.png"), dpi=110)
+    plt.close(fig)
+
+
+FAMILIES = ["pixel", "lens", "time", "light", "gloss"]
+
+
+def plot_used_spectra(out, r):
+    """The periodogram of the samples each render used, per family (each pixel's bounce-0
+    prefix, averaged over pixels), at the middle and highest spp: power 1 is white noise;
+    Poisson-disk and stratified patterns have little power below their mean-spacing frequency."""
+    runs, samplers, spps = r["runs"], r["samplers"], [n for n in r["spp"] if n >= 2]
+    if not spps or not any(u.get("used_samples") for u in runs):
+        return
+    show = sorted(set([spps[len(spps) // 2], spps[-1]]))
+    fig, axes = plt.subplots(len(show), len(FAMILIES), figsize=(4 * len(FAMILIES), 3.4 * len(show)), squeeze=False)
+    for row, n in enumerate(show):
+        for col, fam in enumerate(FAMILIES):
+            ax = axes[row][col]
+            for s in samplers:
+                for u in runs:
+                    if u["sampler"] != s or u["spp"] != n:
+                        continue
+                    for a in u.get("used_samples", []):
+                        if a["family"] != fam:
+                            continue
+                        pts = [(f, p) for f, p in zip(a["spectrum"]["frequency"], a["spectrum"]["power"])
+                               if p is not None and p > 0]
+                        rho = a.get("rho_mean")
+                        label = s if rho is None else "%s (mean rho %.2f)" % (s, rho)
+                        ax.semilogy([f for f, _ in pts], [p for _, p in pts], color=COLORS.get(s), lw=1, label=label)
+            ax.axhline(1.0, color="black", lw=0.6, ls=":")
+            ax.set_title("%s family, %d spp" % (fam, n), fontsize=10)
+            ax.set_xlabel("frequency (cycles per %s)" % ("pixel" if fam == "pixel" else "unit"))
+            if col == 0:
+                ax.set_ylabel("power (1 = white noise)")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize="x-small")
+    fig.suptitle("periodogram of the samples the renders used (each pixel's bounce-0 prefix, mean over pixels)",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "used_spectra.png"), dpi=100)
     plt.close(fig)
 
 
@@ -232,6 +294,22 @@ def write_html(out, r):
              "bias&sup2; is the seed-average image against the reference (less variance / seeds), variance the "
              "per-pixel spread across seeds; a slightly negative bias&sup2; is 0 within noise. Every seed's numbers "
              "are in results.json (per_seed) and results.csv.</small></p>")
+    if r.get("sampler_share"):
+        p.append("<h3>The sampler's share of render time</h3><table><tr><th>sampler</th><th>share of CPU</th>"
+                 "<th>standard error</th><th>profiler ticks</th>%s</tr>" % "".join("<th>%d spp</th>" % n for n in spps))
+        for s in samplers:
+            c = r["sampler_share"][s]
+            cells = []
+            for n in spps:
+                u = [u for u in runs if u["spp"] == n and u["sampler"] == s][0]
+                sh = (u.get("sampler_share") or {}).get("share")
+                cells.append("<td>%s</td>" % ("n/a" if sh is None else "%.1f%%" % (100 * sh)))
+            p.append("<tr><td>%s</td><td>%s</td><td>%s</td><td>%d</td>%s</tr>" % (
+                e(s), "n/a" if c["share"] is None else "%.1f%%" % (100 * c["share"]),
+                "n/a" if c["standard_error"] is None else "%.1f%%" % (100 * c["standard_error"]), c["ticks"],
+                "".join(cells)))
+        p.append("</table><p><small>%s. The right panel of the equal-time plot takes it out of the CPU "
+                 "seconds.</small></p>" % e(r["statistics"].get("sampler_share", "")))
     et = r["equal_time"]
     if et["seconds"]:
         p.append("<h3>RMSE at equal CPU time (log-log interpolation)</h3><table><tr><th>CPU seconds</th>%s</tr>" %
@@ -243,6 +321,21 @@ def write_html(out, r):
              "spectrum of each image's luminance error against the reference (DC removed), averaged over the seeds, at the lowest, middle "
              "and highest spp; white noise is flat, blue noise has less power at low frequencies.</figcaption>"
              "</figure>")
+    if any(u.get("used_samples") for u in runs):
+        p.append("<h2>The samples the renders used</h2><figure><img src='used_spectra.png'><figcaption>%s"
+                 "</figcaption></figure>" % e(r["statistics"].get("used_samples", "")))
+        p.append("<table><tr><th>sampler</th><th>spp</th>%s</tr>" % "".join(
+            "<th>%s: mean &rho; (5%%, min)</th>" % f for f in FAMILIES))
+        for u in runs:
+            if u["spp"] < 2:
+                continue
+            cells = []
+            for f in FAMILIES:
+                a = [a for a in u.get("used_samples", []) if a["family"] == f]
+                cells.append("<td>n/a</td>" if not a or a[0]["rho_mean"] is None else "<td>%.3f (%.3f, %.3f)</td>" % (
+                    a[0]["rho_mean"], a[0]["rho_p05"], a[0]["rho_min"]))
+            p.append("<tr><td>%s</td><td>%d</td>%s</tr>" % (e(u["sampler"]), u["spp"], "".join(cells)))
+        p.append("</table>")
     p.append("<h2>Crops (same region; last column: reference)</h2>")
     for c in r["crops"]:
         p.append("<figure><img src='%s'><figcaption>%d spp: %s | reference</figcaption></figure><br>" % (

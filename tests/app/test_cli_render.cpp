@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 using namespace pdrt;
@@ -301,6 +302,40 @@ TEST(CliCompare, SeedsWritePerSeedEntriesAndIntervals) {
   EXPECT_NE(csv.str().find("seed_index,seed,"), std::string::npos);
 }
 
+// Issue 15: every run reports the sampler's share of its CPU time (profiler ticks) and the
+// samples it used, per family: rho of each pixel's prefix and their periodogram.
+TEST(CliCompare, ResultsReportTheSamplerShareAndTheSamplesUsed) {
+  fs::path d = scratch_dir("compare_usage");
+  fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers random,poisson --spp 1,16 --seeds 1 --reference-spp 64 --cache-dir " +
+                    (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  for (const char* s : {"random", "poisson"}) EXPECT_TRUE(j["sampler_share"].contains(s)) << s;
+  std::map<std::string, double> lens_rho;
+  for (const auto& run : j["runs"]) {
+    const auto& share = run["sampler_share"];
+    ASSERT_GE(share["ticks"].get<int64_t>(), share["sampler_ticks"].get<int64_t>()) << run.dump();
+    if (!share["share"].is_null()) {
+      EXPECT_GE(share["share"].get<double>(), 0.0);
+      EXPECT_LE(share["share"].get<double>(), 1.0);
+    }
+    ASSERT_EQ(run["used_samples"].size(), 5u);
+    for (const auto& u : run["used_samples"]) {
+      EXPECT_EQ(u["pixels"], 24 * 16);
+      EXPECT_EQ(u["points"], run["spp"]);
+      EXPECT_FALSE(u["spectrum"]["power"].empty());
+      EXPECT_EQ(u["rho_mean"].is_null(), run["spp"] == 1) << u.dump();
+      if (u["family"] == "lens" && run["spp"] == 16) lens_rho[run["sampler"]] = u["rho_mean"];
+    }
+  }
+  EXPECT_GT(lens_rho["poisson"], 2 * lens_rho["random"]);
+  std::stringstream csv;
+  csv << std::ifstream(d / "report" / "results.csv").rdbuf();
+  EXPECT_NE(csv.str().find("profile_ticks,sampler_ticks"), std::string::npos);
+}
+
 TEST(CliCompare, ResultsReportTheThreadsUsed) {
   fs::path d = scratch_dir("compare_threads");
   fs::path scene = write_scene(d);
@@ -330,6 +365,9 @@ TEST(CliCompare, ReportHasHeatMapFiguresAndExplainsTheSlope) {
   html << std::ifstream(d / "report" / "index.html").rdbuf();
   EXPECT_NE(html.str().find("-0.5 is plain Monte Carlo"), std::string::npos);
   EXPECT_NE(html.str().find("share one colour scale"), std::string::npos);
+  EXPECT_NE(html.str().find("The sampler's share of render time"), std::string::npos);
+  EXPECT_NE(html.str().find("The samples the renders used"), std::string::npos);
+  EXPECT_TRUE(fs::exists(d / "report" / "used_spectra.png"));
 }
 
 TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {

@@ -60,7 +60,7 @@ class PoissonSampler final : public Sampler {
   std::string name() const override { return "poisson"; }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
-    if (f == Family::Pixel) {
+    if (f == Family::Pixel && tiled()) {
       thread_local PreparedStream p;
       p.want = uint32_t(std::min<int64_t>(index + 1, INT32_MAX));
       pixel_stream(px, py, bounce, &p);
@@ -68,6 +68,7 @@ class PoissonSampler final : public Sampler {
     }
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
+    if (f == Family::Pixel && uint64_t(index) >= m) warn_past_prefix(px, py, m);
     map_stream(px, py, f, bounce, uint64_t(index) / m, &p);
     index %= m;
     return {p.value(index, 0), p.value(index, 1)};
@@ -83,18 +84,22 @@ class PoissonSampler final : public Sampler {
 
   // get_2d/get_1d read values through the same PreparedStream, so the fast path is exact.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
-    if (f == Family::Pixel) return pixel_stream(px, py, bounce, out);
+    if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
     map_stream(px, py, f, bounce, 0, out);
   }
 
-  bool prepare_computes(Family f) const override { return f == Family::Pixel; }  // the rest point into tables
+  // Tiled pixel tables merge cells per pixel; every other stream points into a table.
+  bool prepare_computes(Family f) const override { return f == Family::Pixel && tiled(); }
 
   int64_t samples_available(int px, int py) const override {
-    thread_local PreparedStream p;
-    p.want = UINT32_MAX;
-    pixel_prefix(px, py, 0, 0, UINT32_MAX, &p.own);
-    int64_t n = int64_t(p.own.size() / 2);
-    for (int f = 1; f < kFamilyCount; ++f) n = std::min<int64_t>(n, tables_.family[f]->params.points);
+    int64_t n = INT64_MAX;
+    if (tiled()) {
+      thread_local PreparedStream p;
+      p.want = UINT32_MAX;
+      pixel_prefix(px, py, 0, 0, UINT32_MAX, &p.own);
+      n = int64_t(p.own.size() / 2);
+    }
+    for (int f = 0; f < kFamilyCount; ++f) n = std::min<int64_t>(n, tables_.family[f]->params.points);
     return n;
   }
 
@@ -218,6 +223,10 @@ class PoissonSampler final : public Sampler {
                    px, py, n);
   }
 
+  // Pixel tables of a P x P tile (P > 1) keep the Poisson-disk property across pixel borders;
+  // the default P = 1 gives each pixel its own pattern on its torus like the other families.
+  bool tiled() const { return tables_.family[int(Family::Pixel)]->params.tile > 1; }
+
   TableSet tables_;
   PoissonOptions opt_;
 };
@@ -255,8 +264,9 @@ const TableSet& default_tables() {
     }
 #endif
     // The cache key names the file format and the generation rule (g2: draws that miss the
-    // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them; g5: 64 time tables), so an older pdrt's cache is not reused.
-    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g5-seed1");
+    // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them; g5: 64 time tables;
+    // g6: untiled pixel tables), so an older pdrt's cache is not reused.
+    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g6-seed1");
     if (!complete(dir)) {
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);

@@ -306,18 +306,15 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
 std::vector<TableParams> default_table_params() {
   // See docs/sampling.md for the reasoning behind these sizes.
   std::vector<TableParams> v;
-  TableParams pixel;
-  pixel.family = Family::Pixel;
-  pixel.tables = 4;
-  pixel.points = 1024;
-  pixel.tile = 4;
-  v.push_back(pixel);
-  for (Family f : {Family::Lens, Family::Time, Family::Light, Family::Gloss}) {
+  for (Family f : {Family::Pixel, Family::Lens, Family::Time, Family::Light, Family::Gloss}) {
     TableParams p;
     p.family = f;
     // Enough tables that the streams of one path at max_depth 16 take distinct ones (the
     // sampler allocates them without replacement): time carries the shutter and three
-    // decisions per vertex (49 salts), light and gloss one per vertex (16).
+    // decisions per vertex (49 salts), light and gloss one per vertex (16). The pixel family
+    // is untiled (tile 1): each pixel's pattern is a shifted table of its own, so every
+    // sample index is uniform in the pixel over seeds (a window of a tiled pattern pulls its
+    // first points toward the window's centre).
     p.tables = f == Family::Time ? 64 : 16;
     // Time: twice the samples a pixel uses, so 1024 spp reads a prefix, which is more even
     // than a whole balanced table (its last points must saturate the gaps for the rho bar).

@@ -122,12 +122,24 @@ SceneDesc dof_scene(float point_depth) {
 
 }  // namespace
 
-// A point at the focus distance stays sharp (under a pixel of spread).
+// A point at the focus distance stays sharp: its image (a disk of radius 0.36 px centred on
+// the corner of pixels 31 and 32 in x and y) reaches only those two columns under the box
+// filter, so no light falls elsewhere, and the horizontal spread is at most that of two
+// columns (sqrt(w31 w32) <= 0.5; it is 0.5 when the halves are equal, as symmetry makes them).
 TEST(RenderAnalytic, PointAtFocusDistanceStaysSharp) {
   Image im = render_quietly(dof_scene(5)).image;
   double cx, sd = spread_x(im, &cx);
   EXPECT_NEAR(cx, 32, 0.1);
-  EXPECT_LT(sd, 0.5);  // a single box-filtered pixel has sd ~ 0.29
+  EXPECT_LE(sd, 0.5 + 1e-6);
+  double inside = 0, total = 0;
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x) {
+      const double v = mean_rgb(im, x, y);
+      total += v;
+      if ((x == 31 || x == 32) && (y == 31 || y == 32)) inside += v;
+    }
+  EXPECT_GT(total, 0);
+  EXPECT_EQ(inside, total) << "light outside the four pixels around the point";
 }
 
 // Off focus the point spreads over the thin-lens circle of confusion: diameter on the plane

@@ -51,8 +51,12 @@ TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
   EXPECT_EQ(spec.get_string_attribute("pdrt:seed"), "5");
   EXPECT_EQ(spec.get_string_attribute("pdrt:partial"), "false");
   nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
-  for (const char* k : {"seconds", "rays", "mrays_per_second", "samples", "spp_mean"}) EXPECT_TRUE(j.contains(k)) << k;
+  for (const char* k : {"seconds", "rays", "mrays_per_second", "samples", "spp_mean", "cpu_seconds", "sampler_share"})
+    EXPECT_TRUE(j.contains(k)) << k;
   EXPECT_GT(j["rays"].get<int64_t>(), 0);
+  const auto& share = j["sampler_share"];
+  EXPECT_GE(share["ticks"].get<int64_t>(), share["sampler_ticks"].get<int64_t>());
+  EXPECT_EQ(share["share"].is_null(), share["ticks"].get<int64_t>() == 0) << share.dump();
 }
 
 // The spp asked for is what is traced and what every report says: the summary line, the

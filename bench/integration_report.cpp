@@ -3,14 +3,45 @@
 // streams, and the log-log slope of RMSE vs N.
 // Not a timed test: run ./build/bench/integration_report and read the tables it prints.
 #include "sampling/analysis/integration_error.h"
+#include "sampling/generators/stratified_best_candidate_1d.h"
 #include "sampling/samplers/poisson_sampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
 
 using namespace pdrt;
+
+namespace {
+
+// The default tables with the time family replaced by stratified-bc sets of the same size
+// (issue 16's stratified 1-D variant; in memory only, the table format does not name it yet).
+TableSet with_stratified_time_tables() {
+  TableSet set = default_tables();
+  const SampleTable& balanced = *set.family[int(Family::Time)];
+  auto t = std::make_shared<SampleTable>();
+  t->params = balanced.params;
+  t->dim = 1;
+  for (uint32_t k = 0; k < balanced.table_count(); ++k) {
+    StratifiedBestCandidate1D p;
+    p.count = balanced.params.points, p.seed = 1000 + k;
+    const PointSet ps = stratified_best_candidate_1d(p);
+    std::vector<uint32_t> c;
+    std::vector<float> r;
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      c.push_back(uint32_t(std::min(std::floor(ps.coords[i] * 4294967296.0), 4294967295.0)));
+      r.push_back(float(ps.radius[i]));
+    }
+    t->coords.push_back(std::move(c));
+    t->radius.push_back(std::move(r));
+  }
+  set.family[int(Family::Time)] = t;
+  return set;
+}
+
+}  // namespace
 
 int main() {
   const int trials = 256;
@@ -23,6 +54,7 @@ int main() {
   for (const char* name : {"random", "jitter", "sobol"}) samplers.push_back({name, make_sampler(name, 1)});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
   samplers.push_back({"poisson-noshift", make_poisson_sampler(1, default_tables(), {.toroidal_shift = false})});
+  samplers.push_back({"poisson, stratified-bc time", make_poisson_sampler(1, with_stratified_time_tables())});
   const int64_t table_len = default_tables().family[int(Family::Lens)]->params.points;
   std::printf("Lens family, %d pixels per point; RMSE (slope of log RMSE vs log N over 16..1024)\n", trials);
   std::printf("poisson beyond N = %lld continues in another table and is no longer one prefix.\n\n",

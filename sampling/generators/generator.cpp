@@ -22,6 +22,7 @@ const std::vector<MethodInfo>& methods() {
       {"lloyd", "Lloyd relaxation on the torus from a Poisson-disk start (McCool §6)", kMaxDim, true, false, false},
       {"best-candidate", "Mitchell 1991 best-candidate, hierarchical", kMaxDim, true, false, true},
       {"balanced", "1-D balanced relaxation, hierarchical with even density (the time tables)", 1, true, false, true},
+      {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false, true},
   };
   return list;
 }
@@ -124,6 +125,7 @@ PointSet generate(const GeneratorParams& p) {
   else if (m == "gamito") out = generate_gamito(p);
   else if (m == "lloyd") out = generate_lloyd(p);
   else if (m == "balanced") out = generate_balanced(p);
+  else if (m == "stratified-bc") out = generate_stratified_bc(p);
   else out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;

@@ -58,6 +58,13 @@ SamplerProfiler::SamplerProfiler() {
   set_timer(1000);
 }
 
+SamplerProfile SamplerProfiler::peek() const {
+  if (!active_) return result_;
+  SamplerProfile p;
+  p.ticks = g_ticks.load(), p.sampler_ticks = g_sampler_ticks.load();
+  return p;
+}
+
 SamplerProfile SamplerProfiler::result() {
   if (active_) {
     set_timer(0);

@@ -43,7 +43,8 @@ class SamplerProfiler {
   SamplerProfiler(const SamplerProfiler&) = delete;
   SamplerProfiler& operator=(const SamplerProfiler&) = delete;
   bool active() const { return active_; }
-  SamplerProfile result();  // stops the timer
+  SamplerProfile peek() const;  // the counts so far, still profiling
+  SamplerProfile result();      // stops the timer
 
  private:
   bool active_ = false;

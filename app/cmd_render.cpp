@@ -207,14 +207,7 @@ void add_render_command(CLI::App& app) {
                          {"variance", ad.variance},   {"decision", ad.decision},
                          {"rounds", r.stats.adaptive_rounds}};
       j["cpu_seconds"] = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
-      {
-        const SamplerProfile& sp = r.stats.sampler_profile;
-        auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-        j["sampler_share"] = {{"share", number(sp.share())},
-                              {"standard_error", number(sp.standard_error())},
-                              {"ticks", sp.ticks},
-                              {"sampler_ticks", sp.sampler_ticks}};
-      }
+      j["sampler_share"] = profile_json(r.stats.sampler_profile);
       j["triangles"] = r.stats.triangles;
       j["threads"] = r.stats.threads;
       j["partial"] = r.stats.partial;

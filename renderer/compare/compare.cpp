@@ -40,13 +40,6 @@ constexpr int kUsedSamplePixels = 1024;
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-json profile_json(const SamplerProfile& p) {
-  return {{"share", finite_or_null(p.share())},
-          {"standard_error", finite_or_null(p.standard_error())},
-          {"ticks", p.ticks},
-          {"sampler_ticks", p.sampler_ticks}};
-}
-
 json used_json(const StreamAnalysis& a) {
   return {{"family", family_name(a.family)},
           {"bounce", 0},

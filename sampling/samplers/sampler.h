@@ -41,9 +41,9 @@ uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family fami
 // more samples never remove). Power-of-two prefixes keep their point sets, so their
 // stratification and prefix extension are unchanged.
 // O(1) per index: the bits below the leading one are a nested (Owen) scramble of themselves,
-// computed as in Laine & Karras 2011 / Burley 2020 on their reversal (an add and products by
-// even constants let a bit depend only on the bits below it), keyed by the stream and the
-// leading bit's position.
+// computed as in Laine & Karras 2011 / Burley 2020 on their reversal (an add, products by
+// even constants and one by an odd factor let a bit depend only on the bits below it;
+// Vegdahl's rounds), keyed by the stream and the leading bit's position.
 class IndexShuffle {
  public:
   explicit IndexShuffle(uint64_t stream) : key_(stream ^ 0x9c8d7e6f5a4b3c2dull) {}

@@ -40,6 +40,14 @@ double SamplerProfile::standard_error() const {
   return ticks > 0 ? std::sqrt(s * (1 - s) / double(ticks)) : std::numeric_limits<double>::quiet_NaN();
 }
 
+nlohmann::json profile_json(const SamplerProfile& p) {
+  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"share", number(p.share())},
+          {"standard_error", number(p.standard_error())},
+          {"ticks", p.ticks},
+          {"sampler_ticks", p.sampler_ticks}};
+}
+
 SamplerProfiler::SamplerProfiler() {
   bool expected = false;
   if (!g_live.compare_exchange_strong(expected, true)) return;

@@ -4,6 +4,8 @@
 // user + sys of all threads) and lands on the thread that used it; the tick counts as the
 // sampler's when that thread is inside a PixelSampleState call (SamplerScope). The share is
 // unbiased, its standard error sqrt(s (1 - s) / ticks); the cost is two stores per call.
+#include <nlohmann/json.hpp>
+
 #include <atomic>
 #include <csignal>
 #include <cstdint>
@@ -33,6 +35,10 @@ struct SamplerProfile {
   double share() const;       // sampler_ticks / ticks; NaN without ticks
   double standard_error() const;
 };
+
+// {share, standard_error (null without ticks), ticks, sampler_ticks}, as render --stats and
+// compare's results.json write it.
+nlohmann::json profile_json(const SamplerProfile& p);
 
 // Profiles from construction to result(). One at a time per process: a profiler made while
 // another is live is inactive and reports no ticks.

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 
 namespace pdrt {
 namespace {
@@ -48,6 +49,29 @@ TEST(SampleTable, PixelFamilyGivesEveryPixelTheWantedSamples) {
   for (const auto& counts : t.cell_count)
     for (uint32_t c : counts) EXPECT_GE(c, 32u);
   EXPECT_GE(t.per_pixel_min, 32u);
+}
+
+// Tiled pixel tables (tile > 1, the default before issue 15) are still read: each pixel takes
+// the points of its tile's shifted pattern that fall in it, in rank order, the prepared path
+// equals the pure function, and samples past a pixel's prefix continue without repeating.
+TEST(SampleTable, TiledPixelTablesStillDriveThePoissonSampler) {
+  TableSet set = default_tables();
+  set.family[int(Family::Pixel)] = std::make_shared<const SampleTable>(small_table(Family::Pixel));
+  auto s = make_poisson_sampler(3, set);
+  PixelSampleState ps(*s);
+  for (int px : {0, 1, 5, -3})
+    for (int py : {0, 2}) {
+      const int64_t n = s->samples_available(px, py);
+      EXPECT_GE(n, 32) << px << "," << py;
+      std::set<Vec2> seen;
+      for (int64_t i = 0; i < n + 16; ++i) {
+        ps.start_pixel_sample(px, py, i);
+        const Vec2 v = s->get_2d(px, py, i, Family::Pixel, 0);
+        ASSERT_EQ(v, ps.get_2d(Family::Pixel)) << i;
+        ASSERT_TRUE(v[0] >= 0 && v[0] < 1 && v[1] >= 0 && v[1] < 1);
+        EXPECT_TRUE(seen.insert(v).second) << "repeated sample " << i;
+      }
+    }
 }
 
 // Writes a valid table, lets `damage` edit the bytes, and expects read_table to refuse the

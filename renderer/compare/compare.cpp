@@ -265,7 +265,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         sr.samples = r.stats.samples;
         sr.relmse = relative_mse(r.image, ref);
         sr.profile = r.stats.sampler_profile;
-        run.profile.ticks += sr.profile.ticks, run.profile.sampler_ticks += sr.profile.sampler_ticks;
+        run.profile += sr.profile;
         RadialSpectrum sp = error_spectrum(r.image, ref);
         if (k == 0) run.spectrum = sp, run.samples = r.stats.samples;
         else
@@ -278,9 +278,9 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       }
       for (double& p : run.spectrum.power) p /= o.seeds;
       {
-        SceneDesc s0 = base;
-        s0.sampler.type = name, s0.sampler.seed = compare_seed(base.sampler.seed, 0);
-        const auto sampler = make_scene_sampler(s0.sampler);
+        SamplerDesc d = base.sampler;
+        d.type = name, d.seed = compare_seed(base.sampler.seed, 0);
+        const auto sampler = make_scene_sampler(d);
         for (int f = 0; f < kFamilyCount; ++f)
           run.used.push_back(analyze_stream(*sampler, Family(f), W, H, n, kUsedSamplePixels));
       }
@@ -455,7 +455,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
         x.push_back(r.spp), y.push_back(r.rmse), t.push_back(r.cpu_seconds);
         // Without the sampler's share: the cost of the paths the pattern drives.
         t_net.push_back(r.cpu_seconds * (1 - (std::isfinite(r.profile.share()) ? r.profile.share() : 0.0)));
-        total.ticks += r.profile.ticks, total.sampler_ticks += r.profile.sampler_ticks;
+        total += r.profile;
       }
     slopes[name] = loglog_slope(x, y);
     t_lo = std::max(t_lo, t.front()), t_hi = std::min(t_hi, t.back());

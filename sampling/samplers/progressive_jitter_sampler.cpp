@@ -14,6 +14,8 @@
 #include "sampling/core/rng.h"
 #include "sampling/samplers/sampler.h"
 
+#include <bit>
+
 namespace pdrt {
 namespace {
 
@@ -119,7 +121,7 @@ class ProgressiveJitterSampler final : public Sampler {
     const uint64_t s = stream(px, py, f, bounce);
     const Keys key(s);
     const uint32_t n = out->want;
-    const uint32_t all = n <= 1 ? 1 : uint32_t(1) << (32 - __builtin_clz(n - 1));
+    const uint32_t all = std::bit_ceil(n);  // the points' index range (0 and 1 give 1)
     thread_local std::vector<uint32_t> x, y, perm;
     perm.resize(n);
     IndexShuffle(s).fill(n, perm.data());

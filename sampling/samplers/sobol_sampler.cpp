@@ -8,6 +8,8 @@
 #include "sampling/core/rng.h"
 #include "sampling/samplers/sampler.h"
 
+#include <bit>
+
 namespace pdrt {
 namespace {
 
@@ -24,8 +26,8 @@ uint32_t sobol_dim1_reversed(uint32_t i) {
 // rounds as in pbrt-v4's FastOwenScrambler) of a value given bit reversed: adding a seed and
 // multiplying (by even constants, or by an odd factor) only lets a bit depend on the bits
 // below it, i.e. on the bits above it in the original order, which is exactly the structure
-// of a nested (Owen) scramble. A few multiplies instead of one hash per bit. The first dimension (van der
-// Corput) is the index reversed, so its reversed form is the index itself.
+// of a nested (Owen) scramble. A few multiplies instead of one hash per bit. The first
+// dimension (van der Corput) is the index reversed, so its reversed form is the index itself.
 uint32_t owen_scramble_reversed(uint32_t x, uint64_t seed) {
   const uint32_t s = uint32_t(seed ^ (seed >> 32));
   x ^= x * 0x3d20adeau;
@@ -70,7 +72,7 @@ class SobolSampler final : public Sampler {
     } else {
       // The second dimension in index order, each from an earlier one: d1(j) = d1(j - lowbit) ^ v_lowbit.
       thread_local std::vector<uint32_t> d1, axis;
-      const uint32_t all = n <= 1 ? 1 : uint32_t(1) << (32 - __builtin_clz(n - 1));
+      const uint32_t all = std::bit_ceil(n);  // the points' index range (0 and 1 give 1)
       d1.resize(all);
       d1[0] = 0;
       for (uint32_t j = 1; j < all; ++j) d1[j] = d1[j & (j - 1)] ^ sobol_dim1_reversed(j & (0u - j));

@@ -23,6 +23,7 @@ const std::vector<MethodInfo>& methods() {
       {"best-candidate", "Mitchell 1991 best-candidate, hierarchical", kMaxDim, true, false, true},
       {"balanced", "1-D balanced relaxation, hierarchical with even density (the time tables)", 1, true, false, true},
       {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false, true},
+      {"stratified-pd", "2-D (0,2)-first hierarchical Poisson-disk on the torus: strata kept while rho >= 0.65 allows", 2, true, false, true},
   };
   return list;
 }
@@ -126,6 +127,7 @@ PointSet generate(const GeneratorParams& p) {
   else if (m == "lloyd") out = generate_lloyd(p);
   else if (m == "balanced") out = generate_balanced(p);
   else if (m == "stratified-bc") out = generate_stratified_bc(p);
+  else if (m == "stratified-pd") out = generate_stratified_pd(p);
   else out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;

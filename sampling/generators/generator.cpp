@@ -78,6 +78,8 @@ void validate(const GeneratorParams& p) {
   if (p.dim < 1 || p.dim > m->max_dim)
     throw UsageError("--dim must be between 1 and " + std::to_string(m->max_dim) + " for method '" + p.method +
                      "', got " + std::to_string(p.dim));
+  if (p.method == "stratified-pd" && p.dim != 2)
+    throw UsageError("--dim must be 2 for method 'stratified-pd' (a 2-D construction), got " + std::to_string(p.dim));
   if (p.count && p.radius) throw UsageError("--count and --radius are mutually exclusive; give one");
   if (!p.count && !p.radius) throw UsageError("one of --count or --radius is required");
   if (p.count && !m->accepts_count) throw UsageError("--count is not accepted by method '" + p.method + "'; use --radius");

@@ -77,21 +77,23 @@ class TorusGrid {
 // Occupancy of the elementary intervals of one level L: shape a (a bits of x, L - a of y).
 struct Level {
   int L = -1, sx = 0, sy = 0;  // the reference (most square) shape (sx, sy), sx = ceil(L/2)
-  std::vector<std::vector<uint8_t>> occ;
+  std::vector<uint8_t> occ_;  // shape a's interval i at occ_[(a << L) + i]
+  uint8_t& occ(int a, uint32_t i) { return occ_[(std::size_t(a) << L) + i]; }
+  uint8_t occ(int a, uint32_t i) const { return occ_[(std::size_t(a) << L) + i]; }
   std::vector<uint32_t> open;  // free intervals of the reference shape
 
   static uint32_t index(uint32_t X, uint32_t Y, int a, int L) { return (top(X, a) << (L - a)) | top(Y, L - a); }
 
   void reset(int level, const std::vector<uint32_t>& fixed_xy) {
     L = level, sx = (L + 1) / 2, sy = L - sx;
-    occ.assign(L + 1, std::vector<uint8_t>(std::size_t(1) << L, 0));
+    occ_.assign(std::size_t(L + 1) << L, 0);
     for (std::size_t k = 0; k < fixed_xy.size(); k += 2) mark(fixed_xy[k], fixed_xy[k + 1]);
     open.clear();
     for (uint32_t i = 0; i < (1u << L); ++i)
-      if (!occ[sx][i]) open.push_back(i);
+      if (!occ(sx, i)) open.push_back(i);
   }
   void mark(uint32_t X, uint32_t Y) {
-    for (int a = 0; a <= L; ++a) occ[a][index(X, Y, a, L)] = 1;
+    for (int a = 0; a <= L; ++a) occ(a, index(X, Y, a, L)) = 1;
   }
   void take(uint32_t X, uint32_t Y) {
     mark(X, Y);
@@ -104,7 +106,7 @@ struct Level {
   // the most square shape costs more than sharing all the more elongated ones.
   int violations(uint32_t X, uint32_t Y) const {
     int v = 0;
-    for (int a = 0; a <= L; ++a) v += occ[a][index(X, Y, a, L)] << (2 * std::min(a, L - a));
+    for (int a = 0; a <= L; ++a) v += occ(a, index(X, Y, a, L)) << (2 * std::min(a, L - a));
     return v;
   }
 
@@ -116,12 +118,14 @@ struct Level {
   bool complete(uint32_t ref, int d, bool prefer_empty, Rng& rng, uint32_t& X, uint32_t& Y) const {
     uint32_t xb = ref >> sy, yb = ref & ((1u << sy) - 1u);  // sx and sy top bits
     const uint32_t yref = yb, xref = xb;
+    uint64_t coins = rng.next_u64();  // one bit per free choice (at most 2 x 32)
     for (int a = sx + 1; a <= L; ++a) {  // shape (a, L - a): y's top L - a bits are known
       const uint32_t yt = yref >> (sy - (L - a));
-      int pick = int(rng.next_u64() & 1);
+      int pick = int(coins & 1);
+      coins >>= 1;
       const bool kept = a <= L - d;
       if (kept || prefer_empty) {
-        const bool t0 = occ[a][((xb << 1) << (L - a)) | yt], t1 = occ[a][(((xb << 1) | 1) << (L - a)) | yt];
+        const bool t0 = occ(a, ((xb << 1) << (L - a)) | yt), t1 = occ(a, (((xb << 1) | 1) << (L - a)) | yt);
         if (t0 && t1 && kept) return false;
         if (t0 != t1) pick = t0 ? 1 : 0;
       }
@@ -129,10 +133,11 @@ struct Level {
     }
     for (int b = sy + 1; b <= L; ++b) {  // shape (L - b, b): x's top L - b bits are known
       const uint32_t xt = xref >> (sx - (L - b));
-      int pick = int(rng.next_u64() & 1);
+      int pick = int(coins & 1);
+      coins >>= 1;
       const bool kept = L - b >= d;
       if (kept || prefer_empty) {
-        const bool t0 = occ[L - b][(xt << b) | (yb << 1)], t1 = occ[L - b][(xt << b) | (yb << 1) | 1];
+        const bool t0 = occ(L - b, (xt << b) | (yb << 1)), t1 = occ(L - b, (xt << b) | (yb << 1) | 1);
         if (t0 && t1 && kept) return false;
         if (t0 != t1) pick = t0 ? 1 : 0;
       }

@@ -59,6 +59,8 @@ struct LevelGrid {
   int per = 1;                  // points per cell
   double scale = 0.0;           // rho per unit of distance at 2^-32: sqrt(sqrt3 2^L / 2) 2^-32
   double scale2 = 0.0;          // squared distance -> term table position
+  double weight = 1.0;          // of this level's pairs in the energy
+  double reach = 0.0;           // distance (2^-32 units) at which a pair's rho reaches the cap
   std::vector<uint32_t> cells;  // cell (a, b) holds cells[(a 2^g + b) per + s]
 
   uint32_t side() const { return 1u << g; }
@@ -117,7 +119,7 @@ class Optimiser {
   }
 
   // Annealing over the flips of nodes at depths 1..depth-1 (depth 0 is a half-period shift).
-  void anneal(int sweeps, double beta, double t0, Rng& rng) {
+  void anneal(int sweeps, double beta, double t0, double level_weight, Rng& rng) {
     beta_ = beta;
     const double floor = std::exp(-beta * kCap);
     table_.resize(kTable + 1);
@@ -125,6 +127,8 @@ class Optimiser {
     for (int L = 1; L <= m_; ++L) {
       LevelGrid& lv = levels_[std::size_t(L)];
       lv.scale2 = lv.scale * lv.scale / (kCap * kCap) * kTable;
+      lv.weight = std::exp2(level_weight * double(m_ - L));
+      lv.reach = kCap / lv.scale;
     }
     stamp_.assign(n_, 0);
     std::vector<std::array<uint32_t, 2>> nodes;  // (coordinate, depth << 16 | prefix) with points
@@ -182,7 +186,8 @@ class Optimiser {
     const double x = levels_[std::size_t(L)].scale2 * d2;
     if (x >= double(kTable)) return 0.0;
     const int i = int(x);
-    return table_[std::size_t(i)] + (x - double(i)) * (table_[std::size_t(i) + 1] - table_[std::size_t(i)]);
+    return levels_[std::size_t(L)].weight *
+           (table_[std::size_t(i)] + (x - double(i)) * (table_[std::size_t(i) + 1] - table_[std::size_t(i)]));
   }
 
   // Each point i >= 1 against the other points of its level's prefix 2^L (L = level of i):
@@ -229,9 +234,15 @@ class Optimiser {
     const uint32_t x = pos_[0][m], y = pos_[1][m];
     const uint32_t nx = c == 0 ? x ^ bit : x, ny = c == 1 ? y ^ bit : y;  // m after the flip
     const bool lower = ((pos_[c][m] & bit) != 0) == (pass == 2);          // started in the lower half
+    // Distance (along c) to the nearest of the node's edges and midline: a level whose reach
+    // is shorter sees only points of m's own half, which move with it.
+    const uint32_t off = pos_[c][m] & ((bit << 1) - 1);
+    const uint32_t edge = std::min(std::min(off, (bit << 1) - off), off > bit ? off - bit : bit - off);
     double d = 0;
     for (int L = std::max(1, lm); L <= m_; ++L) {
-      const bool same = k >= levels_[std::size_t(L)].g;
+      const LevelGrid& lv = levels_[std::size_t(L)];
+      if (double(edge) > lv.reach) break;  // reach shrinks with L
+      const bool same = k >= lv.g;
       if (same != (pass == 0)) continue;
       around(L, x, y, [&](uint32_t j) {
         const int lj = level_of(j);
@@ -356,13 +367,16 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   if (p.depth < 1 || p.depth > kMaxLevel)
     throw UsageError("owen-pd: depth must be in 1..16, got " + std::to_string(p.depth));
   if (p.sweeps < 0) throw UsageError("owen-pd: sweeps must be >= 0, got " + std::to_string(p.sweeps));
-  if (!(p.beta > 0 && std::isfinite(p.beta))) throw UsageError("owen-pd: beta must be a finite number > 0");
+  if (!(p.beta > 0 && p.beta <= 1000))
+    throw UsageError("owen-pd: beta must be in (0, 1000], got " + std::to_string(p.beta));
   if (!(p.temperature >= 0 && std::isfinite(p.temperature)))
-    throw UsageError("owen-pd: temperature must be a finite number >= 0");
+    throw UsageError("owen-pd: temperature must be a finite number >= 0, got " + std::to_string(p.temperature));
+  if (!(p.level_weight >= 0 && p.level_weight <= 4))  // 2^(4 x 16) still fits a double sum
+    throw UsageError("owen-pd: level_weight must be in [0, 4], got " + std::to_string(p.level_weight));
   const int m = int(std::bit_width(uint64_t(p.count - 1)));  // 2^m >= count
   Optimiser opt(m, p.depth, p.seed);
   Rng rng(p.seed, 0x6f77656e2d7064ull);  // "owen-pd"
-  opt.anneal(p.sweeps, p.beta, p.temperature, rng);
+  opt.anneal(p.sweeps, p.beta, p.temperature, p.level_weight, rng);
   std::vector<uint32_t> order;
   std::vector<double> nearest2;
   farthest_first(opt.pos(0), opt.pos(1), m, order, nearest2);
@@ -386,6 +400,7 @@ PointSet generate_owen_pd(const GeneratorParams& p) {
   OwenPoisson2D o;
   o.count = *p.count;
   o.seed = p.seed;
+  o.depth = std::max(o.depth, int(std::bit_width(uint64_t(o.count - 1))));  // every level optimised
   return owen_poisson_2d(o);
 }
 

@@ -123,6 +123,7 @@ TEST(OwenPoisson2D, BadParametersThrowUsageError) {
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.sweeps = -1; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.beta = 0; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.temperature = -1; })), UsageError);
+  EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.level_weight = 5; })), UsageError);
   try {
     owen_poisson_2d(with([](OwenPoisson2D& p) { p.depth = 17; }));
   } catch (const UsageError& e) {

@@ -36,10 +36,11 @@ uint32_t top(uint32_t v, int bits) { return bits ? v >> (32 - bits) : 0; }
 
 int level_of(uint32_t j) { return std::bit_width(j); }  // j < 2^L, j >= 2^(L-1)
 
-// Squared toroidal distance in units of 2^-32: unsigned differences wrap around the torus.
-double dist2(uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by) {
-  const double dx = double(int32_t(ax - bx)), dy = double(int32_t(ay - by));
-  return dx * dx + dy * dy;
+// Squared toroidal distance in units of 2^-32, exact: unsigned differences wrap around the
+// torus. Integers keep the output the same whether or not the compiler fuses multiply-adds.
+uint64_t dist2(uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by) {
+  const int64_t dx = int32_t(ax - bx), dy = int32_t(ay - by);
+  return uint64_t(dx * dx) + uint64_t(dy * dy);
 }
 
 // Distinct cells c-r..c+r on a periodic axis of n cells (all of them when the block wraps).
@@ -122,8 +123,9 @@ class Optimiser {
   void anneal(int sweeps, double beta, double t0, double level_weight, Rng& rng) {
     beta_ = beta;
     const double floor = std::exp(-beta * kCap);
-    table_.resize(kTable + 1);
-    for (int i = 0; i <= kTable; ++i) table_[std::size_t(i)] = std::exp(-beta * kCap * std::sqrt(double(i) / kTable)) - floor;
+    table_.resize(kTable);
+    for (int i = 0; i < kTable; ++i)
+      table_[std::size_t(i)] = std::exp(-beta * kCap * std::sqrt((double(i) + 0.5) / kTable)) - floor;
     for (int L = 1; L <= m_; ++L) {
       LevelGrid& lv = levels_[std::size_t(L)];
       lv.scale2 = lv.scale * lv.scale / (kCap * kCap) * kTable;
@@ -181,13 +183,12 @@ class Optimiser {
 
   // A pair's term at level L: exp(-beta rho) - exp(-beta cap), 0 beyond the cap. Summed over
   // a point's neighbours it is exp(-beta s) of a soft nearest-neighbour score s.
-  // Tabulated on rho^2 (linear interpolation, monotone): no sqrt or exp per pair.
-  double term(int L, double d2) const {
-    const double x = levels_[std::size_t(L)].scale2 * d2;
-    if (x >= double(kTable)) return 0.0;
-    const int i = int(x);
-    return levels_[std::size_t(L)].weight *
-           (table_[std::size_t(i)] + (x - double(i)) * (table_[std::size_t(i) + 1] - table_[std::size_t(i)]));
+  // Tabulated on rho^2 in fine steps: no sqrt or exp per pair, and no multiply-add whose
+  // fusing could change a decision.
+  double term(int L, uint64_t d2) const {
+    const LevelGrid& lv = levels_[std::size_t(L)];
+    const double x = lv.scale2 * double(d2);
+    return x < double(kTable) ? lv.weight * table_[std::size_t(x)] : 0.0;
   }
 
   // Each point i >= 1 against the other points of its level's prefix 2^L (L = level of i):
@@ -278,7 +279,7 @@ class Optimiser {
   int m_;
   uint32_t n_;
   int depth_, tree_;
-  static constexpr int kTable = 4096;  // bins of rho^2 in [0, cap^2)
+  static constexpr int kTable = 1 << 16;  // bins of rho^2 in [0, cap^2)
   double beta_ = 1.0;
   std::vector<double> table_;
   std::array<std::vector<uint32_t>, 2> orig_, pos_, perm_;
@@ -293,10 +294,10 @@ class Optimiser {
 // from every earlier point. Returns the order and each point's distance (2^-32 units,
 // squared) to its nearest earlier point.
 void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>& py, int m,
-                    std::vector<uint32_t>& order, std::vector<double>& nearest2) {
+                    std::vector<uint32_t>& order, std::vector<uint64_t>& nearest2) {
   const uint32_t n = 1u << m;
   order.assign(1, 0);
-  nearest2.assign(1, std::numeric_limits<double>::infinity());
+  nearest2.assign(1, UINT64_MAX);
   // Scrambled-space grid of each prefix: 2^g x 2^g cells of 2^(L-2g) points each.
   auto grid = [&](int L, std::vector<uint32_t>& cells) {
     const int g = L / 2, per = 1 << (L - 2 * g);
@@ -308,7 +309,7 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
     }
   };
   std::vector<uint32_t> prev, cur;
-  std::vector<double> value(n, 0.0);
+  std::vector<uint64_t> value(n, 0);
   std::vector<uint8_t> done(n, 0);
   std::vector<uint32_t> xs(1u << 10), ys(1u << 10);
   grid(0, prev);
@@ -321,7 +322,7 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
     for (uint32_t j = lo; j < hi; ++j) {
       const int nx = axis_block(top(px[j], gp), 2, 1u << gp, xs.data()),
                 ny = axis_block(top(py[j], gp), 2, 1u << gp, ys.data());
-      double best = std::numeric_limits<double>::infinity();
+      uint64_t best = UINT64_MAX;
       for (int a = 0; a < nx; ++a)
         for (int b = 0; b < ny; ++b)
           for (int s = 0; s < pp; ++s) {
@@ -331,7 +332,7 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
       value[j] = best;
     }
     // Lazy max-heap: larger value first, then the smaller index (deterministic ties).
-    using Entry = std::pair<double, uint32_t>;
+    using Entry = std::pair<uint64_t, uint32_t>;
     auto less = [](const Entry& a, const Entry& b) { return a.first < b.first || (a.first == b.first && a.second > b.second); };
     std::priority_queue<Entry, std::vector<Entry>, decltype(less)> heap(less);
     for (uint32_t j = lo; j < hi; ++j) heap.push({value[j], j});
@@ -343,14 +344,14 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
       order.push_back(j);
       nearest2.push_back(v);
       // Only candidates closer than v to j can get nearer to the placed set.
-      const int r = std::min(int(std::sqrt(v) / std::ldexp(1.0, 32 - g)) + 1, 256);
+      const int r = std::min(int(std::sqrt(double(v)) / std::ldexp(1.0, 32 - g)) + 1, 256);
       const int nx = axis_block(top(px[j], g), r, 1u << g, xs.data()), ny = axis_block(top(py[j], g), r, 1u << g, ys.data());
       for (int a = 0; a < nx; ++a)
         for (int b = 0; b < ny; ++b)
           for (int s = 0; s < per; ++s) {
             const uint32_t i = cur[((xs[a] << g) | ys[b]) * uint32_t(per) + uint32_t(s)];
             if (i < lo || done[i]) continue;
-            const double d = dist2(px[j], py[j], px[i], py[i]);
+            const uint64_t d = dist2(px[j], py[j], px[i], py[i]);
             if (d < value[i]) value[i] = d, heap.push({d, i});
           }
     }
@@ -378,20 +379,21 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   Rng rng(p.seed, 0x6f77656e2d7064ull);  // "owen-pd"
   opt.anneal(p.sweeps, p.beta, p.temperature, p.level_weight, rng);
   std::vector<uint32_t> order;
-  std::vector<double> nearest2;
+  std::vector<uint64_t> nearest2;
   farthest_first(opt.pos(0), opt.pos(1), m, order, nearest2);
   PointSet ps;
   ps.dim = 2;
   ps.periodic = true;
   ps.coords.reserve(std::size_t(p.count) * 2);
   ps.radius.reserve(std::size_t(p.count));
-  double min2 = std::numeric_limits<double>::infinity();
+  uint64_t min2 = UINT64_MAX;
   for (int64_t i = 0; i < p.count; ++i) {
     const uint32_t j = order[std::size_t(i)];
     ps.coords.push_back(unit_from_u32(opt.pos(0)[j]));
     ps.coords.push_back(unit_from_u32(opt.pos(1)[j]));
     min2 = std::min(min2, nearest2[std::size_t(i)]);
-    ps.radius.push_back(std::sqrt(min2) * 0x1.0p-32);
+    ps.radius.push_back(min2 == UINT64_MAX ? std::numeric_limits<double>::infinity()
+                                           : std::sqrt(double(min2)) * 0x1.0p-32);
   }
   return ps;
 }

@@ -16,6 +16,7 @@ namespace pdrt {
 
 inline constexpr int kMaxDim = 8;
 inline constexpr IntRange kLloydIterationsRange{0, 10000};
+inline constexpr int64_t kOwenPoissonMaxCount = 65536;  // owen-pd: 2^16 Sobol points
 
 struct GeneratorParams {
   std::string method = "gamito";
@@ -86,5 +87,6 @@ PointSet generate_best_candidate(const GeneratorParams& p);
 PointSet generate_balanced(const GeneratorParams& p);
 PointSet generate_stratified_bc(const GeneratorParams& p);
 PointSet generate_stratified_pd(const GeneratorParams& p);
+PointSet generate_owen_pd(const GeneratorParams& p);
 
 }  // namespace pdrt

@@ -11,6 +11,7 @@
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
 #include "sampling/analysis/elementary_intervals.h"
+#include "sampling/generators/owen_poisson_2d.h"
 #include "sampling/generators/stratified_best_candidate_1d.h"
 #include "sampling/generators/stratified_poisson_2d.h"
 
@@ -55,9 +56,9 @@ PointSet draw_table(const TableParams& p, int dim, int64_t count, uint64_t seed)
       return stratified_poisson_2d(g);
     }
     case Construction::OwenPD: {
-      GeneratorParams g;  // TODO(merge owen-pd): call owen_poisson_2d with p.depth
-      g.method = "owen-pd", g.dim = 2, g.count = count, g.seed = seed, g.periodic = true;
-      return generate(g);
+      OwenPoisson2D g;
+      g.count = count, g.seed = seed, g.depth = p.depth;
+      return owen_poisson_2d(g);
     }
     case Construction::StratifiedBC: {
       StratifiedBestCandidate1D g;

@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <tuple>
 #include <memory>
@@ -46,11 +45,9 @@ int main() {
   samplers.push_back({"poisson (mccool tables, before issue 16)", make_poisson_sampler(1, old)});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
   samplers.push_back({"poisson, unshifted", make_poisson_sampler(1, default_tables(), {.toroidal_shift = false})});
-  if (!std::getenv("NO02")) {
   const TableSet& p02 = default_tables(TableSetKind::Poisson02);
   samplers.push_back({"poisson-02", make_poisson_sampler(1, p02)});
   samplers.push_back({"poisson-02, unshifted", make_poisson_sampler(1, p02, {.toroidal_shift = false})});
-  }
   std::printf("RMSE over %d pixels' streams (slope of log RMSE vs log N over 16..1024); rho: mean relative\n"
               "radius of the same streams' N-point prefixes. Table samplers beyond a table's length continue\n"
               "in another table (no longer one prefix).\n\n",

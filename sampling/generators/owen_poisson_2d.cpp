@@ -368,8 +368,12 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   if (p.depth < 1 || p.depth > kMaxLevel)
     throw UsageError("owen-pd: depth must be in 1..16, got " + std::to_string(p.depth));
   if (p.sweeps < 0) throw UsageError("owen-pd: sweeps must be >= 0, got " + std::to_string(p.sweeps));
+  if (p.polish_sweeps < 0)
+    throw UsageError("owen-pd: polish_sweeps must be >= 0, got " + std::to_string(p.polish_sweeps));
   if (!(p.beta > 0 && p.beta <= 1000))
     throw UsageError("owen-pd: beta must be in (0, 1000], got " + std::to_string(p.beta));
+  if (!(p.polish_beta > 0 && p.polish_beta <= 1000))
+    throw UsageError("owen-pd: polish_beta must be in (0, 1000], got " + std::to_string(p.polish_beta));
   if (!(p.temperature >= 0 && std::isfinite(p.temperature)))
     throw UsageError("owen-pd: temperature must be a finite number >= 0, got " + std::to_string(p.temperature));
   if (!(p.level_weight >= 0 && p.level_weight <= 4))  // 2^(4 x 16) still fits a double sum
@@ -378,6 +382,7 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   Optimiser opt(m, p.depth, p.seed);
   Rng rng(p.seed, 0x6f77656e2d7064ull);  // "owen-pd"
   opt.anneal(p.sweeps, p.beta, p.temperature, p.level_weight, rng);
+  opt.anneal(p.polish_sweeps, p.polish_beta, p.temperature / 10, p.level_weight, rng);
   std::vector<uint32_t> order;
   std::vector<uint64_t> nearest2;
   farthest_first(opt.pos(0), opt.pos(1), m, order, nearest2);

@@ -18,9 +18,9 @@ namespace pdrt {
 
 namespace {
 
-// Scores are capped at this rho: a point farther than that from its nearest neighbour adds
-// nothing to the soft-min, so every neighbour search stays inside the 3x3 block of its
-// level's dyadic grid of side 2^-floor(L/2) (needs cap <= sqrt(2 / sqrt 3) 2^(L/2 - floor(L/2))).
+// A pair adds to the energy only below this rho (scores are capped there), so every
+// neighbour search stays inside the 3x3 block of its level's dyadic grid of side
+// 2^-floor(L/2) (needs cap <= sqrt(2 / sqrt 3) 2^(L/2 - floor(L/2)), 0.9306 for even L).
 constexpr double kCap = 0.93;
 constexpr int kMaxLevel = 16;
 
@@ -121,11 +121,10 @@ class Optimiser {
 
   // Annealing over the flips of nodes at depths 1..depth-1 (depth 0 is a half-period shift).
   void anneal(int sweeps, double beta, double t0, double level_weight, Rng& rng) {
-    beta_ = beta;
-    const double floor = std::exp(-beta * kCap);
+    const double at_cap = std::exp(-beta * kCap);
     table_.resize(kTable);
     for (int i = 0; i < kTable; ++i)
-      table_[std::size_t(i)] = std::exp(-beta * kCap * std::sqrt((double(i) + 0.5) / kTable)) - floor;
+      table_[std::size_t(i)] = std::exp(-beta * kCap * std::sqrt((double(i) + 0.5) / kTable)) - at_cap;
     for (int L = 1; L <= m_; ++L) {
       LevelGrid& lv = levels_[std::size_t(L)];
       lv.scale2 = lv.scale * lv.scale / (kCap * kCap) * kTable;
@@ -280,7 +279,6 @@ class Optimiser {
   uint32_t n_;
   int depth_, tree_;
   static constexpr int kTable = 1 << 16;  // bins of rho^2 in [0, cap^2)
-  double beta_ = 1.0;
   std::vector<double> table_;
   std::array<std::vector<uint32_t>, 2> orig_, pos_, perm_;
   std::array<std::vector<uint8_t>, 2> flip_;  // node (k, p) at (1 << k) - 1 + p
@@ -368,8 +366,12 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   if (p.depth < 1 || p.depth > kMaxLevel)
     throw UsageError("owen-pd: depth must be in 1..16, got " + std::to_string(p.depth));
   if (p.sweeps < 0) throw UsageError("owen-pd: sweeps must be >= 0, got " + std::to_string(p.sweeps));
+  if (p.polish_sweeps < 0)
+    throw UsageError("owen-pd: polish_sweeps must be >= 0, got " + std::to_string(p.polish_sweeps));
   if (!(p.beta > 0 && p.beta <= 1000))
     throw UsageError("owen-pd: beta must be in (0, 1000], got " + std::to_string(p.beta));
+  if (!(p.polish_beta > 0 && p.polish_beta <= 1000))
+    throw UsageError("owen-pd: polish_beta must be in (0, 1000], got " + std::to_string(p.polish_beta));
   if (!(p.temperature >= 0 && std::isfinite(p.temperature)))
     throw UsageError("owen-pd: temperature must be a finite number >= 0, got " + std::to_string(p.temperature));
   if (!(p.level_weight >= 0 && p.level_weight <= 4))  // 2^(4 x 16) still fits a double sum
@@ -378,6 +380,7 @@ PointSet owen_poisson_2d(const OwenPoisson2D& p) {
   Optimiser opt(m, p.depth, p.seed);
   Rng rng(p.seed, 0x6f77656e2d7064ull);  // "owen-pd"
   opt.anneal(p.sweeps, p.beta, p.temperature, p.level_weight, rng);
+  opt.anneal(p.polish_sweeps, p.polish_beta, p.temperature / 10, p.level_weight, rng);
   std::vector<uint32_t> order;
   std::vector<uint64_t> nearest2;
   farthest_first(opt.pos(0), opt.pos(1), m, order, nearest2);

@@ -56,7 +56,8 @@ TEST(OwenPoisson2D, EveryPowerOfTwoPrefixIsA02Net) {
 }
 
 // rho = min distance / the hexagonal packing distance sqrt(2 / (sqrt3 n)), over n = 16..1024.
-// The study's owen-opt reached 0.409 mean, 0.365 min over 16 seeds; owen-pd keeps >= 0.35.
+// The study's owen-opt reached 0.409 mean, 0.365 min over 16 seeds; owen-pd measured 0.448
+// mean, 0.428 min (seeds 1-16), so 0.35 leaves room for other compilers' rounding of exp/log.
 TEST(OwenPoisson2D, EveryPrefixFromSixteenPointsKeepsRhoAboveTheFamilyBar) {
   double worst_all = INFINITY;
   for (uint64_t seed : {1u, 2u, 3u, 4u}) {
@@ -122,6 +123,8 @@ TEST(OwenPoisson2D, BadParametersThrowUsageError) {
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.depth = 17; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.sweeps = -1; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.beta = 0; })), UsageError);
+  EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.polish_sweeps = -1; })), UsageError);
+  EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.polish_beta = NAN; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.temperature = -1; })), UsageError);
   EXPECT_THROW(owen_poisson_2d(with([](OwenPoisson2D& p) { p.level_weight = 5; })), UsageError);
   try {

@@ -1,5 +1,5 @@
 // Integration error report (issues 3, 16): RMSE of every sampler on the standard 2-D
-// integrands (lens family) and two 1-D ones (time family) at N = 16..2048, over 256
+// integrands (lens family) and two 1-D ones (time family) at N = 16..2048, over 1024
 // independent pixel streams, the log-log slope of RMSE vs N over 16..1024, and the relative
 // radius rho of the streams' prefixes (mean over the same pixels) beside them.
 // Not a timed test: run ./build/bench/integration_report and read the tables it prints.
@@ -7,6 +7,7 @@
 #include "sampling/analysis/stream_analysis.h"
 #include "sampling/samplers/poisson_sampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -33,8 +34,9 @@ TableSet mccool_tables() {
 }  // namespace
 
 int main() {
-  const int trials = 256;
-  const std::vector<int64_t> ns = {16, 64, 256, 1024, 2048};
+  const int trials = 1024;
+  const std::vector<int64_t> ns = {16, 32, 64, 128, 256, 512, 1024, 2048};
+  const std::vector<int64_t> rho_ns = {16, 64, 256, 1024, 2048};
   struct Entry {
     std::string label;
     std::unique_ptr<Sampler> s;
@@ -53,14 +55,17 @@ int main() {
               "in another table (no longer one prefix).\n\n",
               trials);
   std::map<std::tuple<std::string, int, int64_t>, double> rho;  // the same for every integrand
+  std::map<std::tuple<std::string, std::string, int64_t>, double> measured;  // (integrand, sampler, N)
+  std::vector<std::string> titles;
   // One table: a row per sampler, RMSE at every N, the slope over 16..1024, then rho.
   auto table = [&](const std::string& title, Family family, auto&& rmse) {
+    titles.push_back(title);
     std::printf("### %s\n\n| sampler |", title.c_str());
     for (int64_t n : ns) std::printf(" N=%lld |", (long long)n);
     std::printf(" slope |");
-    for (int64_t n : ns) std::printf(" rho %lld |", (long long)n);
+    for (int64_t n : rho_ns) std::printf(" rho %lld |", (long long)n);
     std::printf("\n|---|");
-    for (std::size_t i = 0; i <= 2 * ns.size(); ++i) std::printf("---|");
+    for (std::size_t i = 0; i <= ns.size() + rho_ns.size(); ++i) std::printf("---|");
     std::printf("\n");
     for (const Entry& e : samplers) {
       std::printf("| %s |", e.label.c_str());
@@ -68,6 +73,7 @@ int main() {
       int m = 0;
       for (int64_t n : ns) {
         double r = rmse(*e.s, n);
+        measured[{title, e.label, n}] = r;
         std::printf(" %.3g |", r);
         if (n <= 1024) {
           double x = std::log(double(n)), y = std::log(r);
@@ -75,7 +81,7 @@ int main() {
         }
       }
       std::printf(" %.2f |", (m * sxy - sx * sy) / (m * sxx - sx * sx));
-      for (int64_t n : ns) {
+      for (int64_t n : rho_ns) {
         auto key = std::make_tuple(e.label, int(family), n);
         if (!rho.count(key)) rho[key] = analyze_stream(*e.s, family, 16, 16, int(n), 64).rho_mean;
         std::printf(" %.3f |", rho[key]);
@@ -90,4 +96,18 @@ int main() {
   for (const Integrand1D& f : time_integrands())
     table("time " + f.name + " (exact " + std::to_string(f.exact) + "), time family", Family::Time,
           [&](const Sampler& s, int64_t n) { return integration_rmse_1d(s, f, n, trials); });
+  // Issue 16's goals as ratios of the rows above (< 1: the first sampler's error is lower).
+  std::printf("### Ratios (issue 16)\n\n| integrand | poisson / mccool tables at N=1024 | worst poisson / mccool tables, N=16..1024 |"
+              " worst poisson-02 / sobol, N=16..1024 |\n|---|---|---|---|\n");
+  for (const std::string& t : titles) {
+    double worst_p = 0, worst_02 = 0;
+    for (int64_t n : ns) {
+      if (n > 1024) continue;
+      worst_p = std::max(worst_p, measured[{t, "poisson", n}] / measured[{t, "poisson (mccool tables, before issue 16)", n}]);
+      worst_02 = std::max(worst_02, measured[{t, "poisson-02", n}] / measured[{t, "sobol", n}]);
+    }
+    std::printf("| %s | %.2f | %.2f | %.2f |\n", t.c_str(),
+                measured[{t, "poisson", 1024}] / measured[{t, "poisson (mccool tables, before issue 16)", 1024}], worst_p,
+                worst_02);
+  }
 }

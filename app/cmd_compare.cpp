@@ -26,7 +26,7 @@ inline constexpr IntRange kCompareSeedsRange{1, 1024};
 
 void add_compare_command(CLI::App& app) {
   struct Opts {
-    std::string scene, out, samplers = "random,jitter,poisson,sobol", spp = "1,4,16,64,256", cache;
+    std::string scene, out, samplers = "random,jitter,poisson,poisson-02,sobol", spp = "1,4,16,64,256", cache;
     std::optional<int> width, height;
     int reference_spp = 4096, threads = 0, seeds = 4;
     double adaptive_threshold = 0;

@@ -1,14 +1,17 @@
-// Integration error report (issue 3): RMSE of every sampler on the standard 2-D integrands
-// (lens family) and two 1-D ones (time family) at N = 16..4096, over 256 independent pixel
-// streams, and the log-log slope of RMSE vs N.
+// Integration error report (issues 3, 16): RMSE of every sampler on the standard 2-D
+// integrands (lens family) and two 1-D ones (time family) at N = 16..2048, over 1024
+// independent pixel streams, the log-log slope of RMSE vs N over 16..1024, and the relative
+// radius rho of the streams' prefixes (mean over the same pixels) beside them.
 // Not a timed test: run ./build/bench/integration_report and read the tables it prints.
 #include "sampling/analysis/integration_error.h"
-#include "sampling/generators/stratified_best_candidate_1d.h"
+#include "sampling/analysis/stream_analysis.h"
 #include "sampling/samplers/poisson_sampler.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <tuple>
 #include <memory>
 #include <vector>
 
@@ -16,59 +19,53 @@ using namespace pdrt;
 
 namespace {
 
-// The default tables with the time family replaced by stratified-bc sets of the same size
-// (issue 16's stratified 1-D variant; in memory only, the table format does not name it yet).
-TableSet with_stratified_time_tables(int candidates) {
+// The `poisson` set as it was before issue 16: McCool–Fiume relaxation tables of 1024 points
+// for the 2-D families (built in memory), balanced time tables.
+TableSet mccool_tables() {
   TableSet set = default_tables();
-  const SampleTable& balanced = *set.family[int(Family::Time)];
-  auto t = std::make_shared<SampleTable>();
-  t->params = balanced.params;
-  t->dim = 1;
-  for (uint32_t k = 0; k < balanced.table_count(); ++k) {
-    StratifiedBestCandidate1D p;
-    p.count = balanced.params.points, p.seed = 1000 + k, p.candidates = candidates;
-    const PointSet ps = stratified_best_candidate_1d(p);
-    std::vector<uint32_t> c;
-    std::vector<float> r;
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      c.push_back(uint32_t(std::min(std::floor(ps.coords[i] * 4294967296.0), 4294967295.0)));
-      r.push_back(float(ps.radius[i]));
-    }
-    t->coords.push_back(std::move(c));
-    t->radius.push_back(std::move(r));
+  for (Family f : {Family::Pixel, Family::Lens, Family::Light, Family::Gloss}) {
+    TableParams p;
+    p.family = f, p.construction = Construction::Relaxation, p.points = 1024;
+    set.family[int(f)] = std::make_shared<const SampleTable>(generate_table(p));
   }
-  set.family[int(Family::Time)] = t;
   return set;
 }
 
 }  // namespace
 
 int main() {
-  const int trials = 256;
-  const std::vector<int64_t> ns = {16, 64, 256, 1024, 4096};
+  const int trials = 1024;
+  const std::vector<int64_t> ns = {16, 32, 64, 128, 256, 512, 1024, 2048};
+  const std::vector<int64_t> rho_ns = {16, 64, 256, 1024, 2048};
   struct Entry {
     std::string label;
     std::unique_ptr<Sampler> s;
   };
   std::vector<Entry> samplers;
   for (const char* name : {"random", "jitter", "sobol"}) samplers.push_back({name, make_sampler(name, 1)});
+  const TableSet old = mccool_tables();
+  samplers.push_back({"poisson (mccool tables, before issue 16)", make_poisson_sampler(1, old)});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
-  samplers.push_back({"poisson-noshift", make_poisson_sampler(1, default_tables(), {.toroidal_shift = false})});
-  // A toroidal shift keeps a stratified set stratified only on the circle: the stratum across
-  // 0/1 sees a non-periodic integrand's jump, so the shifted row converges at -1.0, not -1.5.
-  const TableSet stratified = with_stratified_time_tables(16);
-  samplers.push_back({"poisson, stratified-bc time", make_poisson_sampler(1, stratified)});
-  samplers.push_back({"poisson-noshift, stratified-bc time", make_poisson_sampler(1, stratified, {.toroidal_shift = false})});
-  const int64_t table_len = default_tables().family[int(Family::Lens)]->params.points;
-  std::printf("Lens family, %d pixels per point; RMSE (slope of log RMSE vs log N over 16..1024)\n", trials);
-  std::printf("poisson beyond N = %lld continues in another table and is no longer one prefix.\n\n",
-              (long long)table_len);
-  // One table: a row per sampler, RMSE at every N and the slope over 16..1024.
-  auto table = [&](const std::string& title, auto&& rmse) {
+  samplers.push_back({"poisson, unshifted", make_poisson_sampler(1, default_tables(), {.toroidal_shift = false})});
+  const TableSet& p02 = default_tables(TableSetKind::Poisson02);
+  samplers.push_back({"poisson-02", make_poisson_sampler(1, p02)});
+  samplers.push_back({"poisson-02, unshifted", make_poisson_sampler(1, p02, {.toroidal_shift = false})});
+  std::printf("RMSE over %d pixels' streams (slope of log RMSE vs log N over 16..1024); rho: mean relative\n"
+              "radius of the same streams' N-point prefixes. Table samplers beyond a table's length continue\n"
+              "in another table (no longer one prefix).\n\n",
+              trials);
+  std::map<std::tuple<std::string, int, int64_t>, double> rho;  // the same for every integrand
+  std::map<std::tuple<std::string, std::string, int64_t>, double> measured;  // (integrand, sampler, N)
+  std::vector<std::string> titles;
+  // One table: a row per sampler, RMSE at every N, the slope over 16..1024, then rho.
+  auto table = [&](const std::string& title, Family family, auto&& rmse) {
+    titles.push_back(title);
     std::printf("### %s\n\n| sampler |", title.c_str());
     for (int64_t n : ns) std::printf(" N=%lld |", (long long)n);
-    std::printf(" slope |\n|---|");
-    for (std::size_t i = 0; i <= ns.size(); ++i) std::printf("---|");
+    std::printf(" slope |");
+    for (int64_t n : rho_ns) std::printf(" rho %lld |", (long long)n);
+    std::printf("\n|---|");
+    for (std::size_t i = 0; i <= ns.size() + rho_ns.size(); ++i) std::printf("---|");
     std::printf("\n");
     for (const Entry& e : samplers) {
       std::printf("| %s |", e.label.c_str());
@@ -76,21 +73,41 @@ int main() {
       int m = 0;
       for (int64_t n : ns) {
         double r = rmse(*e.s, n);
+        measured[{title, e.label, n}] = r;
         std::printf(" %.3g |", r);
         if (n <= 1024) {
           double x = std::log(double(n)), y = std::log(r);
           sx += x, sy += y, sxx += x * x, sxy += x * y, ++m;
         }
       }
-      std::printf(" %.2f |\n", (m * sxy - sx * sy) / (m * sxx - sx * sx));
+      std::printf(" %.2f |", (m * sxy - sx * sy) / (m * sxx - sx * sx));
+      for (int64_t n : rho_ns) {
+        auto key = std::make_tuple(e.label, int(family), n);
+        if (!rho.count(key)) rho[key] = analyze_stream(*e.s, family, 16, 16, int(n), 64).rho_mean;
+        std::printf(" %.3f |", rho[key]);
+      }
+      std::printf("\n");
     }
     std::printf("\n");
   };
   for (const Integrand& f : standard_integrands())
-    table(f.name + " (exact " + std::to_string(f.exact) + ")",
+    table(f.name + " (exact " + std::to_string(f.exact) + "), lens family", Family::Lens,
           [&](const Sampler& s, int64_t n) { return integration_rmse(s, f, n, trials); });
-  std::printf("Time family (1-D), %d pixels per point.\n\n", trials);
   for (const Integrand1D& f : time_integrands())
-    table("time " + f.name + " (exact " + std::to_string(f.exact) + ")",
+    table("time " + f.name + " (exact " + std::to_string(f.exact) + "), time family", Family::Time,
           [&](const Sampler& s, int64_t n) { return integration_rmse_1d(s, f, n, trials); });
+  // Issue 16's goals as ratios of the rows above (< 1: the first sampler's error is lower).
+  std::printf("### Ratios (issue 16)\n\n| integrand | poisson / mccool tables at N=1024 | worst poisson / mccool tables, N=16..1024 |"
+              " worst poisson-02 / sobol, N=16..1024 |\n|---|---|---|---|\n");
+  for (const std::string& t : titles) {
+    double worst_p = 0, worst_02 = 0;
+    for (int64_t n : ns) {
+      if (n > 1024) continue;
+      worst_p = std::max(worst_p, measured[{t, "poisson", n}] / measured[{t, "poisson (mccool tables, before issue 16)", n}]);
+      worst_02 = std::max(worst_02, measured[{t, "poisson-02", n}] / measured[{t, "sobol", n}]);
+    }
+    std::printf("| %s | %.2f | %.2f | %.2f |\n", t.c_str(),
+                measured[{t, "poisson", 1024}] / measured[{t, "poisson (mccool tables, before issue 16)", 1024}], worst_p,
+                worst_02);
+  }
 }

@@ -11,7 +11,7 @@ for scene in scenes/*.json; do
   name=$(basename "$scene" .json)
   read -r w h < <(/usr/bin/env python3 -c "import json,sys; f=json.load(open('$scene'))['film']; print(f['width']//$SCALE, f['height']//$SCALE)")
   echo "== $name (${w}x${h}, spp $SPP, $SEEDS seeds, reference $REF spp)"
-  "$B/pdrt" compare "$scene" --out "$OUT/$name" --samplers random,jitter,poisson,sobol --spp "$SPP" \
+  "$B/pdrt" compare "$scene" --out "$OUT/$name" --samplers random,jitter,poisson,poisson-02,sobol --spp "$SPP" \
     --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive
 done
 # One summary table over all scenes: mean RMSE +- 95 % interval per sampler at each spp, the

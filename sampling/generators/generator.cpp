@@ -23,6 +23,8 @@ const std::vector<MethodInfo>& methods() {
       {"best-candidate", "Mitchell 1991 best-candidate, hierarchical", kMaxDim, true, false, true},
       {"balanced", "1-D balanced relaxation, hierarchical with even density (the time tables)", 1, true, false, true},
       {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false, true},
+      {"stratified-pd", "2-D (0,2)-first hierarchical Poisson-disk on the torus: strata kept while rho >= 0.65 allows", 2, true, false, true},
+      {"owen-pd", "2-D Owen-scrambled Sobol, scramble annealed for Poisson-disk prefixes ((0,m,2)-nets; periodic, count <= 65536)", 2, true, false, true},
   };
   return list;
 }
@@ -74,9 +76,20 @@ void validate(const GeneratorParams& p) {
     }
     throw UsageError("--method: unknown method '" + p.method + "' (known: " + known + ")");
   }
+  if (p.method == "owen-pd") {  // one fixed construction: 2-D, toroidal, at most 2^16 points
+    if (p.dim != 2) throw UsageError("--dim must be 2 for method 'owen-pd', got " + std::to_string(p.dim));
+    if (!p.periodic) throw UsageError("--periodic is required for method 'owen-pd' (its distances are toroidal)");
+    if (p.count && *p.count > kOwenPoissonMaxCount)
+      throw UsageError("--count must be at most " + std::to_string(kOwenPoissonMaxCount) + " for method 'owen-pd', got " +
+                       std::to_string(*p.count));
+  }
   if (p.dim < 1 || p.dim > m->max_dim)
     throw UsageError("--dim must be between 1 and " + std::to_string(m->max_dim) + " for method '" + p.method +
                      "', got " + std::to_string(p.dim));
+  if (p.method == "stratified-pd") {  // a 2-D construction on the torus
+    if (p.dim != 2) throw UsageError("--dim must be 2 for method 'stratified-pd', got " + std::to_string(p.dim));
+    if (!p.periodic) throw UsageError("--periodic is required for method 'stratified-pd' (its distances are toroidal)");
+  }
   if (p.count && p.radius) throw UsageError("--count and --radius are mutually exclusive; give one");
   if (!p.count && !p.radius) throw UsageError("one of --count or --radius is required");
   if (p.count && !m->accepts_count) throw UsageError("--count is not accepted by method '" + p.method + "'; use --radius");
@@ -126,6 +139,8 @@ PointSet generate(const GeneratorParams& p) {
   else if (m == "lloyd") out = generate_lloyd(p);
   else if (m == "balanced") out = generate_balanced(p);
   else if (m == "stratified-bc") out = generate_stratified_bc(p);
+  else if (m == "stratified-pd") out = generate_stratified_pd(p);
+  else if (m == "owen-pd") out = generate_owen_pd(p);
   else out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;

@@ -51,7 +51,8 @@ PointSet stratified_best_candidate_1d(const StratifiedBestCandidate1D& p) {
     }
     double best = lo, best_d = -1.0;
     for (int c = 0; c < p.candidates; ++c) {
-      const double x = std::min(lo + width * rng.uniform(), std::nextafter(lo + width, lo));
+      // On the 32-bit fixed-point grid tables store, so the recorded gaps are the stored ones.
+      const double x = std::ldexp(std::floor(std::ldexp(lo + width * rng.uniform(), 32)), -32);
       const double d = nearest(placed, x, p.periodic);
       if (d > best_d) best = x, best_d = d;
     }

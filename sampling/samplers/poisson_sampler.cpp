@@ -57,7 +57,7 @@ int mod(int a, int b) { return a - floor_div(a, b) * b; }
 class PoissonSampler final : public Sampler {
  public:
   PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {}
-  std::string name() const override { return "poisson"; }
+  std::string name() const override { return table_set_name(tables_.kind); }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (f == Family::Pixel && tiled()) {
@@ -130,9 +130,17 @@ class PoissonSampler final : public Sampler {
     for (int k = 0; k < 2; ++k) {
       const bool flip = sym & (2u << k);
       out->src[k] = uint8_t(swap ? 1 - k : k);
-      out->add[k] = uint32_t(s >> (32 * out->src[k]));  // the shift belongs to the table's axis
-      out->off[k] = flip ? 1.0 : 0.0;
-      out->mul[k] = flip ? -kFixed : kFixed;
+      const uint32_t r = uint32_t(s >> (32 * out->src[k]));  // the shift belongs to the table's axis
+      if (digital()) {
+        // A digital shift and a flip as the complement 1 - 2^-32 - x: both map every
+        // elementary interval onto one, so the strata survive (a toroidal shift would cut
+        // the stratum that wraps), and the shift makes each point uniform over seeds.
+        out->xr[k] = r ^ (flip ? ~0u : 0u), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
+      } else {
+        out->xr[k] = 0, out->add[k] = r;
+        out->off[k] = flip ? 1.0 : 0.0;
+        out->mul[k] = flip ? -kFixed : kFixed;
+      }
     }
   }
 
@@ -150,7 +158,8 @@ class PoissonSampler final : public Sampler {
     out->count = uint32_t(out->own.size() / 2);
     out->shift = 1;
     out->grows = true;
-    for (int k = 0; k < 2; ++k) out->src[k] = uint8_t(k), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
+    for (int k = 0; k < 2; ++k)
+      out->src[k] = uint8_t(k), out->xr[k] = 0, out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
   }
 
   // Appends up to `want` points of round `round` of pixel (px, py). The shifted pattern's
@@ -226,57 +235,64 @@ class PoissonSampler final : public Sampler {
   // Pixel tables of a P x P tile (P > 1) keep the Poisson-disk property across pixel borders;
   // the default P = 1 gives each pixel its own pattern on its torus like the other families.
   bool tiled() const { return tables_.family[int(Family::Pixel)]->params.tile > 1; }
+  // poisson-02 keeps its strata: digital shifts instead of toroidal ones.
+  bool digital() const { return tables_.kind == TableSetKind::Poisson02; }
 
   TableSet tables_;
   PoissonOptions opt_;
 };
 
-bool complete(const std::filesystem::path& dir) {
+bool complete(const std::filesystem::path& dir, TableSetKind kind) {
   for (int f = 0; f < kFamilyCount; ++f)
-    if (!std::filesystem::exists(dir / table_file_name(Family(f)))) return false;
+    if (!std::filesystem::exists(dir / table_file_name(Family(f), kind))) return false;
   return true;
 }
 
 }  // namespace
 
-TableSet load_tables(const std::filesystem::path& dir) {
+TableSet load_tables(const std::filesystem::path& dir, TableSetKind kind) {
   TableSet set;
   set.dir = dir;
+  set.kind = kind;
   for (int f = 0; f < kFamilyCount; ++f) {
     Family fam = Family(f);
-    set.family[f] = std::make_shared<const SampleTable>(read_table(dir / table_file_name(fam), &fam));
+    set.family[f] = std::make_shared<const SampleTable>(read_table(dir / table_file_name(fam, kind), &fam));
   }
   return set;
 }
 
-const TableSet& default_tables() {
-  static std::once_flag once;
-  static TableSet set;
-  std::call_once(once, [] {
+const TableSet& default_tables(TableSetKind kind) {
+  static std::once_flag once[2];
+  static TableSet sets[2];
+  const int i = int(kind);
+  std::call_once(once[i], [kind, i] {
+    TableSet& set = sets[i];
     if (const char* env = std::getenv("PDRT_TABLES"); env && *env) {
-      set = load_tables(env);
+      set = load_tables(env, kind);
       return;
     }
 #ifdef PDRT_BUILD_TABLE_DIR
-    if (complete(PDRT_BUILD_TABLE_DIR)) {
-      set = load_tables(PDRT_BUILD_TABLE_DIR);
+    if (complete(PDRT_BUILD_TABLE_DIR, kind)) {
+      set = load_tables(PDRT_BUILD_TABLE_DIR, kind);
       return;
     }
 #endif
     // The cache key names the file format and the generation rule (g2: draws that miss the
     // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them; g5: 64 time tables;
-    // g6: untiled pixel tables), so an older pdrt's cache is not reused.
-    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g6-seed1");
-    if (!complete(dir)) {
+    // g6: untiled pixel tables; g7: stratified-pd and owen-pd sets), so an older pdrt's cache
+    // is not reused.
+    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g7-seed1");
+    if (!complete(dir, kind)) {
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);
       if (ec) throw InputError(dir.string() + ": cannot create the table cache (" + ec.message() + ")");
-      std::fprintf(stderr, "pdrt: generating the default sample tables into %s (once)\n", dir.c_str());
-      for (const TableParams& p : default_table_params()) write_table(dir / table_file_name(p.family), generate_table(p));
+      std::fprintf(stderr, "pdrt: generating the %s sample tables into %s (once)\n", table_set_name(kind), dir.c_str());
+      for (const TableParams& p : default_table_params(kind))
+        write_table(dir / table_file_name(p.family, kind), generate_table(p));
     }
-    set = load_tables(dir);
+    set = load_tables(dir, kind);
   });
-  return set;
+  return sets[i];
 }
 
 std::unique_ptr<Sampler> make_poisson_sampler(uint64_t seed, const TableSet& tables, PoissonOptions options) {

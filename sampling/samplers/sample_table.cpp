@@ -10,6 +10,10 @@
 #include "sampling/analysis/min_distance.h"
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
+#include "sampling/analysis/elementary_intervals.h"
+#include "sampling/generators/owen_poisson_2d.h"
+#include "sampling/generators/stratified_best_candidate_1d.h"
+#include "sampling/generators/stratified_poisson_2d.h"
 
 #include <tbb/parallel_for.h>
 
@@ -22,56 +26,84 @@ namespace pdrt {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'D', 'R', 'T', 'T', 'B', 'L', '1'};
+constexpr std::size_t kParamName = 16;  // a construction parameter's name field, NUL padded
 
 uint32_t to_fixed(double x) {
   double v = std::floor(x * 4294967296.0);
   return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
 }
 
-PointSet relaxation_draw(const TableParams& p, int dim, int64_t count, uint64_t seed) {
-  if (dim == 1) {
-    // 1-D relaxation keeps the radius but not the density (balanced_relaxation_1d.h).
-    BalancedRelaxation1D b;
-    b.count = count;
-    b.seed = seed;
-    return balanced_relaxation_1d(b);
+PointSet draw_table(const TableParams& p, int dim, int64_t count, uint64_t seed) {
+  switch (p.construction) {
+    case Construction::Relaxation: {
+      if (dim == 1) break;  // 1-D relaxation keeps the radius but not the density: balanced
+      GeneratorParams g;
+      g.method = "mccool";
+      g.dim = dim;
+      g.count = count;
+      g.periodic = true;  // tables tile: prefixes stay Poisson-disk across pixel/tile borders
+      g.seed = seed;
+      g.decay = p.decay;
+      g.attempts = int64_t(p.attempts);
+      g.magnification = p.magnification;
+      return generate(g);
+    }
+    case Construction::Balanced: break;
+    case Construction::StratifiedPD: {
+      StratifiedPoisson2D g;
+      g.count = count, g.seed = seed, g.candidates = p.candidates;
+      g.prefix_floor = p.prefix_floor, g.whole_floor = p.whole_floor;
+      return stratified_poisson_2d(g);
+    }
+    case Construction::OwenPD: {
+      OwenPoisson2D g;
+      g.count = count, g.seed = seed, g.depth = p.depth;
+      return owen_poisson_2d(g);
+    }
+    case Construction::StratifiedBC: {
+      StratifiedBestCandidate1D g;
+      g.count = count, g.seed = seed, g.candidates = p.candidates;
+      return stratified_best_candidate_1d(g);
+    }
   }
-  GeneratorParams g;
-  g.method = "mccool";
-  g.dim = dim;
-  g.count = count;
-  g.periodic = true;  // tables tile: prefixes stay Poisson-disk across pixel/tile borders
-  g.seed = seed;
-  g.decay = p.decay;
-  g.attempts = int64_t(p.attempts);
-  g.magnification = p.magnification;
-  return generate(g);
+  BalancedRelaxation1D b;
+  b.count = count;
+  b.seed = seed;
+  return balanced_relaxation_1d(b);
 }
 
-// Issue 3's bar for every table: rho >= 0.65 for every prefix of >= 16 points and >= 0.72
-// for the whole set. 2-D relaxation sets clear it as generated; about 1 in 5 balanced 1-D
-// sets ends a little under 0.72 (the last points find no gap twice the final radius), so a
-// table that misses is redrawn with the next attempt.
-constexpr double kPrefixRhoMin = 0.65, kFullRhoMin = 0.72;
+uint32_t construction_dim(Construction c) {
+  return c == Construction::Balanced || c == Construction::StratifiedBC ? 1 : c == Construction::Relaxation ? 0 : 2;
+}
+
+// Every table meets its set's bar (issue 3's for `poisson`: rho >= 0.65 for every prefix of
+// >= 16 points and >= 0.72 for the whole set). About 1 in 5 balanced 1-D sets ends a little
+// under 0.72 (the last points find no gap twice the final radius), so a table that misses
+// is redrawn with the next attempt. owen-pd tables must also keep every (0,m,2)-net.
 constexpr std::size_t kFirstPrefix = 16;
 constexpr int kMaxDraws = 256;
 
-bool meets_quality_bar(const PointSet& ps) {
+bool meets_quality_bar(const TableParams& p, const PointSet& ps) {
   PointSet q = ps;  // judged as stored: 32-bit fixed point
   for (double& x : q.coords) x = double(to_fixed(x)) * 0x1.0p-32;
   const std::vector<double> rho = prefix_relative_radius(q, true);
-  return !rho.empty() && rho.back() >= kFullRhoMin && worst_prefix_rho(rho, kFirstPrefix) >= kPrefixRhoMin;
+  if (rho.empty() || rho.back() < p.whole_floor || worst_prefix_rho(rho, kFirstPrefix) < p.prefix_floor) return false;
+  if (p.construction == Construction::OwenPD)
+    for (bool net : net_prefixes(q))
+      if (!net) return false;
+  return true;
 }
 
 PointSet relaxation(const TableParams& p, int dim, int64_t count, uint64_t table_index) {
   const uint64_t first_seed = hash_combine(p.seed, (uint64_t(p.family) << 32) | table_index);
   for (int draw = 0; draw < kMaxDraws; ++draw) {
-    PointSet ps = relaxation_draw(p, dim, count, draw == 0 ? first_seed : hash_combine(first_seed, uint64_t(draw)));
-    if (meets_quality_bar(ps)) return ps;
+    PointSet ps = draw_table(p, dim, count, draw == 0 ? first_seed : hash_combine(first_seed, uint64_t(draw)));
+    if (meets_quality_bar(p, ps)) return ps;
   }
   std::ostringstream msg;
-  msg << "tables: " << family_name(p.family) << " table " << table_index << " missed rho >= " << kPrefixRhoMin
-      << " (prefixes) / " << kFullRhoMin << " (whole) in " << kMaxDraws << " draws; try other relaxation parameters";
+  msg << "tables: " << family_name(p.family) << " table " << table_index << " (" << construction_name(p.construction)
+      << ") missed rho >= " << p.prefix_floor << " (prefixes) / " << p.whole_floor << " (whole) in " << kMaxDraws
+      << " draws; try other parameters";
   throw InputError(msg.str());
 }
 
@@ -115,6 +147,11 @@ std::size_t SampleTable::memory_bytes() const {
 SampleTable generate_table(const TableParams& p, Progress* progress) {
   if (p.tables < 1 || p.points < 1) throw UsageError("tables: table count and points must be >= 1");
   if (p.family == Family::Pixel && p.tile < 1) throw UsageError("tables: pixel tile must be >= 1");
+  const uint32_t cdim = construction_dim(p.construction);
+  if (cdim && int(cdim) != family_dim(p.family))
+    throw UsageError(std::string("tables: ") + construction_name(p.construction) + " makes " + std::to_string(cdim) +
+                     "-D tables; the " + family_name(p.family) + " family is " + std::to_string(family_dim(p.family)) +
+                     "-D");
   SampleTable t;
   t.params = p;
   if (p.family != Family::Pixel) t.params.tile = 1;
@@ -204,15 +241,21 @@ void write_table(const std::filesystem::path& path, const SampleTable& t) {
   put<uint32_t>(out, kTableVersion);
   put<uint8_t>(out, uint8_t(t.params.family));
   put<uint8_t>(out, uint8_t(t.dim));
-  put<uint16_t>(out, 0);
+  put<uint8_t>(out, uint8_t(t.params.construction));
+  put<uint8_t>(out, 0);
   put<uint32_t>(out, t.table_count());
   put<uint32_t>(out, t.params.points);
   put<uint32_t>(out, t.params.tile);
   put<uint32_t>(out, t.per_pixel_min);
   put<uint64_t>(out, t.params.seed);
-  put<double>(out, t.params.decay);
-  put<double>(out, t.params.attempts);
-  put<double>(out, t.params.magnification);
+  const auto named = construction_params(t.params);
+  put<uint32_t>(out, uint32_t(named.size()));
+  for (const auto& [name, value] : named) {
+    char field[kParamName] = {};
+    std::memcpy(field, name.data(), std::min(name.size(), kParamName - 1));
+    out.append(field, kParamName);
+    put<double>(out, value);
+  }
   for (uint32_t k = 0; k < t.table_count(); ++k) {
     put<uint32_t>(out, uint32_t(t.radius[k].size()));
     if (t.params.family == Family::Pixel) {
@@ -248,16 +291,33 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
     r.fail(std::string("holds the ") + family_name(t.params.family) + " family, expected " + family_name(*expected));
   t.dim = r.get<uint8_t>("the header");
   if (t.dim != family_dim(t.params.family)) r.fail("dimension " + std::to_string(t.dim) + " does not match its family");
-  r.get<uint16_t>("the header");
+  const uint8_t construction = r.get<uint8_t>("the header");
+  if (construction >= kConstructionCount) r.fail("unknown construction " + std::to_string(construction));
+  t.params.construction = Construction(construction);
+  r.get<uint8_t>("the header");
   uint32_t tables = r.get<uint32_t>("the header");
   t.params.tables = tables;
   t.params.points = r.get<uint32_t>("the header");
   t.params.tile = r.get<uint32_t>("the header");
   t.per_pixel_min = r.get<uint32_t>("the header");
   t.params.seed = r.get<uint64_t>("the header");
-  t.params.decay = r.get<double>("the header");
-  t.params.attempts = r.get<double>("the header");
-  t.params.magnification = r.get<double>("the header");
+  const uint32_t named = r.get<uint32_t>("the header");
+  if (named > 64) r.fail("header says " + std::to_string(named) + " construction parameters, at most 64");
+  for (uint32_t i = 0; i < named; ++i) {
+    char field[kParamName];
+    for (char& c : field) c = r.get<char>("the construction parameters");
+    const std::string name(field, strnlen(field, kParamName));
+    const double v = r.get<double>("the construction parameters");
+    if (!std::isfinite(v)) r.fail("construction parameter " + name + " is not finite");
+    if (name == "prefix_floor") t.params.prefix_floor = v;
+    else if (name == "whole_floor") t.params.whole_floor = v;
+    else if (name == "decay") t.params.decay = v;
+    else if (name == "attempts") t.params.attempts = v;
+    else if (name == "magnification") t.params.magnification = v;
+    else if (name == "candidates") t.params.candidates = int(std::clamp(v, 0.0, 1e9));
+    else if (name == "depth") t.params.depth = int(std::clamp(v, 0.0, 64.0));
+    else r.fail("unknown construction parameter '" + name + "' for " + construction_name(t.params.construction));
+  }
   const bool pixel = t.params.family == Family::Pixel;
   // Each header field on its own, before the checksum, so a damaged header says which field is wrong.
   if (tables == 0) r.fail("header field tables is 0");
@@ -303,7 +363,28 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   return t;
 }
 
-std::vector<TableParams> default_table_params() {
+const char* construction_name(Construction c) {
+  static const char* const names[] = {"mccool", "balanced", "stratified-pd", "owen-pd", "stratified-bc"};
+  return names[int(c) < kConstructionCount ? int(c) : 0];
+}
+
+const char* table_set_name(TableSetKind k) { return k == TableSetKind::Poisson02 ? "poisson-02" : "poisson"; }
+
+std::vector<std::pair<std::string, double>> construction_params(const TableParams& p) {
+  std::vector<std::pair<std::string, double>> v = {{"prefix_floor", p.prefix_floor}, {"whole_floor", p.whole_floor}};
+  switch (p.construction) {
+    case Construction::Relaxation:
+      v.insert(v.end(), {{"decay", p.decay}, {"attempts", p.attempts}, {"magnification", p.magnification}});
+      break;
+    case Construction::StratifiedPD:
+    case Construction::StratifiedBC: v.push_back({"candidates", p.candidates}); break;
+    case Construction::OwenPD: v.push_back({"depth", p.depth}); break;
+    case Construction::Balanced: break;
+  }
+  return v;
+}
+
+std::vector<TableParams> default_table_params(TableSetKind kind) {
   // See docs/sampling.md for the reasoning behind these sizes.
   std::vector<TableParams> v;
   for (Family f : {Family::Pixel, Family::Lens, Family::Time, Family::Light, Family::Gloss}) {
@@ -316,14 +397,27 @@ std::vector<TableParams> default_table_params() {
     // sample index is uniform in the pixel over seeds (a window of a tiled pattern pulls its
     // first points toward the window's centre).
     p.tables = f == Family::Time ? 64 : 16;
-    // Time: twice the samples a pixel uses, so 1024 spp reads a prefix, which is more even
-    // than a whole balanced table (its last points must saturate the gaps for the rho bar).
-    p.points = f == Family::Time ? 2048 : 1024;
+    // 2048 points, twice the samples a pixel uses, so 1024 spp reads a prefix, which is more
+    // even than a whole table (its last points must saturate the gaps for the rho bar).
+    p.points = 2048;
+    if (kind == TableSetKind::Poisson) {
+      p.construction = f == Family::Time ? Construction::Balanced : Construction::StratifiedPD;
+    } else {
+      // Strict strata: the bar is what a (0,2)-sequence can reach (stratified-pd.md: 0.41
+      // at best over every prefix), and 1-D progressive jitter with best candidates.
+      p.construction = f == Family::Time ? Construction::StratifiedBC : Construction::OwenPD;
+      p.points = f == Family::Time ? 2048 : 1024;
+      p.prefix_floor = f == Family::Time ? 0.25 : 0.35;
+      p.whole_floor = 0.0;
+      p.candidates = 16;
+    }
     v.push_back(p);
   }
   return v;
 }
 
-std::string table_file_name(Family family) { return std::string(family_name(family)) + ".pdrttbl"; }
+std::string table_file_name(Family family, TableSetKind kind) {
+  return std::string(family_name(family)) + (kind == TableSetKind::Poisson02 ? ".02" : "") + ".pdrttbl";
+}
 
 }  // namespace pdrt

@@ -1,18 +1,16 @@
 #pragma once
-// Precomputed hierarchical Poisson-disk tables (McCool & Fiume §4–5, Cook §5.1), one file per
-// dimension family. Every table is a McCool–Fiume relaxation set on the torus, stored in rank
-// order, so every prefix is Poisson-disk at its recorded radius.
-//
-// The pixel family (McCool §5.1) holds one periodic pattern per table spanning a tile of
-// P x P pixels; each pixel's samples are the points that fall in it, in rank order, stored as
-// offsets within the pixel. The other families hold T tables of M points each.
-//
-// File format (little-endian, documented in docs/table-format.md):
-//   magic "PDRTTBL1", u32 version, u8 family, u8 dim, u16 reserved, u32 tables, u32 points,
-//   u32 tile (P, 1 for non-pixel families), u32 per_pixel_min, u64 seed, f64 decay,
-//   f64 attempts, f64 magnification, then per table: for pixel tables P*P u32 counts and
-//   offsets; coordinates as u32 fixed point (x * 2^32), f32 radius per point; finally a
-//   u64 FNV-1a checksum of everything before it.
+// Precomputed hierarchical tables (McCool & Fiume §4–5, Cook §5.1), one file per dimension
+// family and table set. Every table is stored in rank order, so every prefix is
+// Poisson-disk at its recorded radius. Two sets (issue 16):
+//   `poisson`:    2-D families "(0,2)-first" stratified Poisson-disk (stratified-pd), 2048
+//                 points, rho >= 0.65 on every prefix of >= 16 points and >= 0.72 whole;
+//                 time: balanced 1-D relaxation at the same bar.
+//   `poisson-02`: 2-D families owen-pd (every power-of-two prefix a (0,m,2)-net, scramble
+//                 chosen for distance, rho >= 0.35 on every prefix of >= 16 points); time:
+//                 stratified-bc (every 2^k prefix one point per 1/2^k stratum).
+// The pixel family holds one pattern per table spanning a tile of P x P pixels (P = 1 by
+// default); each pixel's samples are the points that fall in it, in rank order, stored as
+// offsets within the pixel. The format is in docs/table-format.md.
 #include "sampling/samplers/sampler.h"
 
 #include <cstdint>
@@ -22,15 +20,31 @@
 
 namespace pdrt {
 
-inline constexpr uint32_t kTableVersion = 1;
+inline constexpr uint32_t kTableVersion = 2;
+
+// How a table's points are made: the generator methods of the same names.
+enum class Construction : uint8_t { Relaxation = 0, Balanced = 1, StratifiedPD = 2, OwenPD = 3, StratifiedBC = 4 };
+inline constexpr int kConstructionCount = 5;
+const char* construction_name(Construction c);  // "mccool", "balanced", "stratified-pd", "owen-pd", "stratified-bc"
+
+// The two table sets, read by the samplers of the same names.
+enum class TableSetKind : uint8_t { Poisson, Poisson02 };
+const char* table_set_name(TableSetKind k);  // "poisson", "poisson-02"
 
 struct TableParams {
   Family family = Family::Lens;
+  Construction construction = Construction::StratifiedPD;
   uint32_t tables = 16;        // T
-  uint32_t points = 1024;      // M per table (non-pixel); samples per pixel wanted (pixel)
+  uint32_t points = 2048;      // M per table (non-pixel); samples per pixel wanted (pixel)
   uint32_t tile = 1;           // P (pixel family only)
   uint64_t seed = 1;
-  double decay = 0.97, attempts = 30, magnification = 128;  // McCool–Fiume relaxation
+  // The bar every table is drawn to (a draw that misses it is redrawn): rho >= prefix_floor
+  // on every prefix of >= 16 points, >= whole_floor for the whole set. stratified-pd also
+  // places its points by them.
+  double prefix_floor = 0.65, whole_floor = 0.72;
+  double decay = 0.97, attempts = 30, magnification = 128;  // mccool relaxation
+  int candidates = 64;                                      // stratified-pd, stratified-bc
+  int depth = 10;                                           // owen-pd: optimised scramble levels
 };
 
 struct SampleTable {
@@ -60,8 +74,11 @@ void write_table(const std::filesystem::path& path, const SampleTable& table);
 // checksum. Throws InputError naming the file and the problem.
 SampleTable read_table(const std::filesystem::path& path, const Family* expected = nullptr);
 
-// The default table set: parameters per family.
-std::vector<TableParams> default_table_params();
-std::string table_file_name(Family family);
+// A table set's parameters per family.
+std::vector<TableParams> default_table_params(TableSetKind kind = TableSetKind::Poisson);
+std::string table_file_name(Family family, TableSetKind kind = TableSetKind::Poisson);
+
+// The construction's parameters as they are recorded in a table file's header.
+std::vector<std::pair<std::string, double>> construction_params(const TableParams& p);
 
 }  // namespace pdrt

@@ -60,8 +60,9 @@ inline uint64_t shuffle_index(uint64_t index, uint64_t stream) { return IndexShu
 
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
-// Axis k of value i: off[k] + mul[k] * uint32(coords[(i << shift) + src[k]] + add[k]) (the
-// unsigned add is a toroidal shift in 32-bit fixed point), clamped to [0, 1).
+// Axis k of value i: off[k] + mul[k] * uint32((coords[(i << shift) + src[k]] ^ xr[k]) + add[k])
+// (the xor is a digital shift, which keeps elementary intervals; the unsigned add is a
+// toroidal shift in 32-bit fixed point), clamped to [0, 1).
 // The numeric fields are left uninitialised on purpose: PixelSampleState keeps 320 of them
 // per thread and fills one only when its stream is first used. `own` holds the coordinates
 // when the sampler has to assemble them per pixel (coords then points into it).
@@ -70,14 +71,14 @@ struct PreparedStream {
   uint32_t count;          // indices below count are stored
   uint8_t shift;           // log2 of the values per point
   uint8_t src[2];
-  uint32_t add[2];
+  uint32_t xr[2], add[2];
   double off[2], mul[2];
   uint32_t want;  // input: values the caller needs now; a sampler may prepare fewer
   bool grows;     // preparing again with a larger `want` gives more values
   std::vector<uint32_t> own;
 
   double value(int64_t index, int k) const {
-    const uint32_t c = coords[(std::size_t(index) << shift) + src[k]] + add[k];
+    const uint32_t c = (coords[(std::size_t(index) << shift) + src[k]] ^ xr[k]) + add[k];
     return clamp_to_unit(off[k] + mul[k] * double(c));
   }
 };
@@ -96,7 +97,7 @@ void fill_prepared(PreparedStream* out, uint32_t n, int dim, ValueFn&& value) {
   out->shift = dim == 2 ? 1 : 0;
   out->grows = true;
   for (int k = 0; k < 2; ++k)
-    out->src[k] = uint8_t(dim == 2 ? k : 0), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = 0x1.0p-32;
+    out->src[k] = uint8_t(dim == 2 ? k : 0), out->xr[k] = 0, out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = 0x1.0p-32;
 }
 
 class Sampler {

@@ -1,5 +1,6 @@
 // The replayable sampler interface: determinism, stratification, decorrelation.
 #include "sampling/samplers/sampler.h"
+#include "sampling/analysis/elementary_intervals.h"
 #include "sampling/core/rng.h"
 
 #include <gtest/gtest.h>
@@ -230,6 +231,46 @@ TEST(PoissonSampler, TimeSamplesIntegrateAStepFarBetterThanRandomAtEveryCount) {
     EXPECT_LT(p, r / 3) << n << " samples: poisson " << p << ", random " << r;
   }
 }
+
+}  // namespace
+}  // namespace pdrt
+
+namespace pdrt {
+namespace {
+
+PointSet stream_points(const Sampler& s, int px, int py, Family f, int bounce, int n) {
+  PointSet ps;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 v = s.get_2d(px, py, i, f, bounce);
+    ps.coords.push_back(v[0]);
+    ps.coords.push_back(v[1]);
+  }
+  return ps;
+}
+
+// poisson-02 randomises by symmetries and digital (xor) shifts, which map elementary intervals
+// onto elementary intervals: every power-of-two prefix of every stream a render reads stays a
+// (0,m,2)-net, and every 2^k prefix of a time stream one point per 1/2^k stratum. (A
+// toroidal shift would cut the strata at the seam.)
+TEST(Poisson02Sampler, EveryStreamKeepsItsStrata) {
+  auto s = make_sampler("poisson-02", 11);
+  for (auto [px, py] : {std::pair{0, 0}, std::pair{-7, 123}, std::pair{40000, 3}})
+    for (auto [f, bounce] : {std::pair{Family::Pixel, 0}, std::pair{Family::Lens, 0}, std::pair{Family::Light, 5},
+                             std::pair{Family::Gloss, 15}}) {
+      const PointSet ps = stream_points(*s, px, py, f, bounce, 1024);
+      for (std::size_t n = 1; n <= 1024; n *= 2)
+        ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " pixel " << px << "," << py << " n " << n;
+    }
+  for (int bounce : {0, 48}) {
+    for (uint64_t n = 1; n <= 2048; n *= 2) {
+      std::vector<int> hits(n, 0);
+      for (uint64_t i = 0; i < n; ++i) ++hits[std::size_t(s->get_1d(9, 9, int64_t(i), Family::Time, bounce) * double(n))];
+      ASSERT_TRUE(std::all_of(hits.begin(), hits.end(), [](int h) { return h == 1; })) << bounce << " " << n;
+    }
+  }
+}
+
+TEST(Poisson02Sampler, IsNamedForItsTableSet) { EXPECT_EQ(make_sampler("poisson-02", 1)->name(), "poisson-02"); }
 
 }  // namespace
 }  // namespace pdrt

@@ -174,8 +174,9 @@ SampleTable generate_table(const TableParams& p, Progress* progress) {
     }
     // Poisson-disk counts per pixel vary only a little; grow the pattern until every pixel
     // of the tile holds the samples wanted.
+    // (An untiled table, tile 1, is one pixel: exactly the points wanted.)
     const double pixels = double(p.tile) * p.tile;
-    double total = pixels * p.points * 1.05 + 16;
+    double total = p.tile == 1 ? double(p.points) : pixels * p.points * 1.05 + 16;
     for (;;) {
       PointSet ps = relaxation(p, 2, int64_t(total), k);
       bucket_by_pixel(ps, p.tile, t.coords[k], t.radius[k], t.cell_start[k], t.cell_count[k]);

@@ -35,7 +35,7 @@ void add_sample_command(CLI::App& app) {
                   "dart: consecutive failures before stopping (1000); bridson: candidates per active point (30); "
                   "mccool: consecutive missed darts before the radius shrinks (30, plus magnification per placed point); best-candidate: candidates per placed point "
                   "(1); lloyd: Monte Carlo probes per point (64); balanced: darts per point (32); stratified-bc: candidates per "
-                  "point (16)");
+                  "point (16); stratified-pd: open intervals tried per point (64)");
   add_real_option(cmd, "--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
   add_real_option(cmd, "--magnification", o->p.magnification,
                   "mccool: extra consecutive misses allowed per placed point (128)");

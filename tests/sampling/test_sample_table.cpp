@@ -164,6 +164,12 @@ TEST(SampleTable, RefusesWrongVersion) {
 TEST(SampleTable, RefusesUnknownConstruction) {
   expect_refused([](std::string& b) { b[14] = 9; }, "unknown construction 9");
 }
+// The parameter list starts at byte 40 (count), the first name at 44, its value at 60.
+TEST(SampleTable, RefusesUnknownOrNonFiniteConstructionParameters) {
+  expect_refused([](std::string& b) { b[44] = 'Z'; }, "unknown construction parameter 'Zrefix_floor' for stratified-pd");
+  expect_refused([](std::string& b) { b[66] = char(0xF0), b[67] = char(0x7F); }, "construction parameter prefix_floor is not finite");
+  expect_refused([](std::string& b) { b[40] = b[41] = char(0xFF); }, "construction parameters, at most 64");
+}
 TEST(SampleTable, RefusesWrongMagic) {
   expect_refused([](std::string& b) { b[0] = 'X'; }, "bad magic");
 }

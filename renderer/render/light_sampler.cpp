@@ -17,6 +17,13 @@ float sphere_radius_at(const EmbreeScene& s, int shape, const Affine& m) {
 // and its pdf loses precision. sample_sphere and sphere_pdf must decide alike for MIS.
 bool sees_sphere_from_inside(float dc2, float r) { return dc2 <= r * r * 1.0001f; }
 
+// pbrt-v4's SmoothStep: 0 at x <= a, 1 at x >= b, a cubic between (a step when a == b).
+float smoothstep(float x, float a, float b) {
+  if (a == b) return x < a ? 0.0f : 1.0f;
+  const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3 - 2 * t);
+}
+
 // The point of a sphere light nearest to `near`, with the error of its (transformed) centre.
 ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, const Vec3& c, float r, const Vec3& near) {
   ErrorPoint x = sphere_point(c, r, near);
@@ -47,6 +54,16 @@ LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
     }
     for (std::size_t t = 0; t < scene.indices(int(i)).size() / 3; ++t) entries_.push_back({int(i), int(t)});
   }
+  // Point and spot lights join the BVH after every shape's entries (so a shape's entries stay
+  // contiguous); distant lights stay outside it, beside the environment.
+  for (std::size_t k = 0; k < d.delta_lights.size(); ++k) {
+    const DeltaLightDesc& l = d.delta_lights[k];
+    if (l.kind != DeltaLightDesc::Kind::Distant) {
+      if (!is_black(l.intensity)) entries_.push_back({-1, -1, int(k)});
+    } else if (!is_black(l.irradiance)) {
+      distant_.push_back({-l.direction, l.irradiance, std::max(luminance(l.irradiance), 1e-6f)});
+    }
+  }
   std::vector<LightBounds> bounds;
   bounds.reserve(entries_.size());
   for (const Entry& e : entries_) bounds.push_back(bounds_of(e));
@@ -58,7 +75,58 @@ LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
   if (!is_black(env_)) env_irradiance_ = kPi * std::max(luminance(env_), 1e-6f);
 }
 
+void LightSampler::delta_light_at(int delta, float time, Vec3* p, Vec3* axis) const {
+  const DeltaLightDesc& l = scene_.desc().delta_lights[delta];
+  Affine m = l.transform;
+  if (!l.motion.empty()) {
+    const CameraDesc& c = scene_.desc().camera;  // time is normalised to the shutter
+    const float t = c.shutter_open + time * (c.shutter_close - c.shutter_open);
+    m = interpolate(l.motion.data(), int(l.motion.size()), t).matrix() * l.transform;
+  }
+  *p = m.point(l.position);
+  if (axis) *axis = normalize(m.vector(l.direction));
+}
+
+// A point light emits into every direction: a point box, the whole sphere of normals, phi =
+// luminance of I, so that phi cos / d^2 is the irradiance I cos / d^2 it delivers (the BVH's
+// units; pbrt-v4's phi is the power 4 pi I). A spot light adds its cone: normals within the
+// falloff start, emission reaching the cone's edge (plus 1e-3 rad of slop for the rounding of
+// the importance's angles, so a point just inside the cone never gets importance 0). A moving
+// one has the box over the shutter and, since it may turn, the whole sphere of normals.
+LightBounds LightSampler::delta_bounds(int delta) const {
+  const DeltaLightDesc& l = scene_.desc().delta_lights[delta];
+  const bool spot = l.kind == DeltaLightDesc::Kind::Spot;
+  LightBounds b;
+  b.phi = std::max(luminance(l.intensity), 1e-6f);
+  b.cos_e = 0;
+  b.normals = DirectionCone{};
+  if (l.motion.empty()) {
+    Vec3 p, axis;
+    delta_light_at(delta, 0, &p, &axis);
+    b.box.extend(p);
+    if (spot && is_finite(axis)) {
+      const float start = std::acos(std::clamp(l.cos_falloff_start, -1.0f, 1.0f));
+      const float end = std::acos(std::clamp(l.cos_cone, -1.0f, 1.0f));
+      b.normals = {axis, l.cos_falloff_start};
+      b.cos_e = std::cos(std::min(kPi, end - start + 1e-3f));
+    }
+    return b;
+  }
+  float step = 0;
+  Vec3 prev;
+  for (int k = 0; k < kTimeSamples; ++k) {
+    Vec3 p;
+    delta_light_at(delta, float(k) / (kTimeSamples - 1), &p, nullptr);
+    b.box.extend(p);
+    if (k > 0) step = std::max(step, length(p - prev));
+    prev = p;
+  }
+  b.box.lo -= Vec3(step), b.box.hi += Vec3(step);
+  return b;
+}
+
 LightBounds LightSampler::bounds_of(const Entry& e) const {
+  if (e.delta >= 0) return delta_bounds(e.delta);
   const Material& m = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
   const float lum = std::max(luminance(m.radiance), 1e-6f);
   const bool moving = scene_.moving(e.shape);
@@ -130,31 +198,48 @@ ErrorPoint LightSampler::triangle_point_at(int shape, int prim, float time, floa
 }
 
 bool LightSampler::select(const Vec3& ref, const Vec3& n, float u, std::size_t* light, float* pmf) const {
-  // The environment against all other lights together, both as irradiance estimates; then
-  // the BVH with the pick number rescaled to what is left of [0, 1). Without an environment
-  // the root's importance is not needed (the BVH fails if all of its lights have none).
-  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;
-  if (!(e + b > 0)) return false;
-  const float pe = e / (e + b);
-  if (u < pe) {
-    *light = environment_id(), *pmf = pe;
-    return true;
+  // The lights outside the BVH (distant lights, then the environment) against the BVH's root,
+  // all as irradiance estimates: each takes its share of [0, 1) in turn, the BVH the rest,
+  // with the pick number rescaled to it. Without lights outside it the root's importance is
+  // not needed (the BVH fails if all of its lights have none). select_pmf() repeats exactly
+  // this arithmetic.
+  const std::size_t ni = infinite_count();
+  float inf = 0;
+  for (std::size_t k = 0; k < ni; ++k) inf += infinite_importance(k, n);
+  const float b = inf > 0 ? bvh_.importance(ref, n) : 1.0f, total = inf + b;
+  if (!(total > 0)) return false;
+  float c = 0;  // the shares of the lights outside the BVH passed so far
+  for (std::size_t k = 0; k < ni; ++k) {
+    const float p = infinite_importance(k, n) / total;
+    if (p > 0 && u < c + p) {
+      *light = entries_.size() + k, *pmf = p;
+      return true;
+    }
+    c += p;
   }
-  u = std::min((u - pe) / (1 - pe), 0x1.fffffep-1f);
+  if (!(b > 0 && c < 1)) return false;
+  u = std::min((u - c) / (1 - c), 0x1.fffffep-1f);
   int id;
   float pb;
   if (!bvh_.sample(ref, n, u, &id, &pb)) return false;
-  *light = std::size_t(id), *pmf = (1 - pe) * pb;
+  *light = std::size_t(id), *pmf = (1 - c) * pb;
   return *pmf > 0;
 }
 
 float LightSampler::select_pmf(const Vec3& ref, const Vec3& n, std::size_t light) const {
-  const float e = env_irradiance_, b = e > 0 ? bvh_.importance(ref, n) : 1.0f;  // as in select()
-  if (!(e + b > 0)) return 0;
-  const float pe = e / (e + b);
-  if (light == environment_id()) return pe;
-  if (!(b > 0)) return 0;
-  return (1 - pe) * bvh_.pmf(ref, n, int(light));
+  const std::size_t ni = infinite_count();  // as in select()
+  float inf = 0;
+  for (std::size_t k = 0; k < ni; ++k) inf += infinite_importance(k, n);
+  const float b = inf > 0 ? bvh_.importance(ref, n) : 1.0f, total = inf + b;
+  if (!(total > 0)) return 0;
+  if (light >= entries_.size()) {
+    const std::size_t k = light - entries_.size();
+    return k < ni ? infinite_importance(k, n) / total : 0.0f;
+  }
+  float c = 0;
+  for (std::size_t k = 0; k < ni; ++k) c += infinite_importance(k, n) / total;
+  if (!(b > 0 && c < 1)) return 0;
+  return (1 - c) * bvh_.pmf(ref, n, int(light));
 }
 
 bool LightSampler::sample(const Vec3& ref, const Vec3& n, float time, float u_pick, std::array<double, 2> u,
@@ -172,6 +257,18 @@ bool LightSampler::sample(const Vec3& ref, const Vec3& n, float time, float u_pi
     out->radiance = env_;
     out->pdf = 1.0f / (4 * kPi);
     ok = true;
+  } else if (e >= entries_.size()) {
+    // A distant light: one direction, its irradiance, probability 1 (times the pick).
+    const Distant& l = distant_[e - entries_.size()];
+    out->wi = l.to_light;
+    out->dist = 1e30f;
+    out->at_infinity = true;
+    out->delta = true;
+    out->radiance = l.irradiance;
+    out->pdf = 1;
+    ok = true;
+  } else if (entries_[e].delta >= 0) {
+    ok = sample_delta(entries_[e], ref, time, out);
   } else if (entries_[e].prim < 0) {
     ok = sample_sphere(entries_[e], ref, time, u, out);
   } else {
@@ -180,6 +277,29 @@ bool LightSampler::sample(const Vec3& ref, const Vec3& n, float time, float u_pi
   if (!ok) return false;
   out->pdf *= pick;
   return out->pdf > 0;
+}
+
+// A point or spot light: the one direction to it, I falloff / d^2 (the irradiance at a
+// surface facing it, as `radiance` so the integrator's f L |cos| / pdf holds), probability 1.
+// The light-family pair u is not used: its values are a pure function of (pixel, sample,
+// family, bounce), so leaving it unread shifts no other stream.
+bool LightSampler::sample_delta(const Entry& e, const Vec3& ref, float time, LightSample* out) const {
+  const DeltaLightDesc& l = scene_.desc().delta_lights[e.delta];
+  const bool spot = l.kind == DeltaLightDesc::Kind::Spot;
+  Vec3 p, axis;
+  delta_light_at(e.delta, time, &p, spot ? &axis : nullptr);
+  const Vec3 d = p - ref;
+  const float d2 = dot(d, d);
+  if (!(d2 > 0 && std::isfinite(d2)) || (spot && !is_finite(axis))) return false;
+  const float dist = std::sqrt(d2);
+  out->wi = d / dist, out->dist = dist;
+  out->x = {p, Vec3(0.0f)};  // no geometry there: the shadow ray ends 1e-4 of its length short of p
+  out->n = -out->wi;
+  out->delta = true;
+  const float falloff = spot ? smoothstep(-dot(axis, out->wi), l.cos_cone, l.cos_falloff_start) : 1.0f;
+  out->radiance = l.intensity * (falloff / d2);
+  out->pdf = 1;
+  return true;
 }
 
 bool LightSampler::sample_triangle(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u,

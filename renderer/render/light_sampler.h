@@ -1,14 +1,17 @@
 #pragma once
 // Next-event estimation targets (Cook §5.3 "light area" dimension): every emissive triangle,
-// every emissive sphere and the constant environment, chosen by their estimated contribution
-// at the shading point (a light BVH, light_bvh.h, with the environment on the same footing).
-// Triangles are sampled uniformly by area, spheres by the cone they subtend, the
-// environment uniformly over the sphere of directions. Moving emitters are sampled where
-// they are at the ray's time, using the same transform Embree intersects.
+// every emissive sphere, every point and spot light (in the light BVH, light_bvh.h), and the
+// distant lights and the constant environment (outside it, on the same footing), chosen by
+// their estimated contribution at the shading point. Triangles are sampled uniformly by area,
+// spheres by the cone they subtend, the environment uniformly over the sphere of directions;
+// point, spot and distant lights are delta lights: one direction, weight 1, no MIS. Moving
+// emitters are sampled where they are at the ray's time, using the same transform Embree
+// intersects.
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/light_bvh.h"
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace pdrt {
@@ -16,7 +19,8 @@ namespace pdrt {
 struct LightSample {
   Vec3 wi;          // unit direction from the reference point to the light
   float dist = 0;   // distance to the sampled point (1e30 for the environment)
-  bool at_infinity = false;  // the environment: no point to aim the shadow ray at
+  bool at_infinity = false;  // the environment, a distant light: no point to aim the shadow ray at
+  bool delta = false;        // a point, spot or distant light: no MIS (weight 1); pdf is the pick probability
   ErrorPoint x;     // the sampled point on an area light, with its error bound (shadow rays end there)
   Vec3 n;           // the light's geometric normal at x
   Vec3 radiance;    // emitted radiance toward the reference point (0 if back-facing)
@@ -39,9 +43,10 @@ class LightSampler {
   float environment_pdf(const Vec3& ref, const Vec3& n) const;
 
   // Light selection alone. Light ids: 0 .. light_count() - 1, one per emissive triangle or
-  // sphere in shape order, then the environment (if it emits).
-  std::size_t light_count() const { return entries_.size() + (env_irradiance_ > 0 ? 1 : 0); }
-  std::size_t environment_id() const { return entries_.size(); }
+  // sphere in shape order, then the point and spot lights (the BVH's), then the distant
+  // lights, then the environment (if it emits). Lights of zero power are left out.
+  std::size_t light_count() const { return environment_id() + (env_irradiance_ > 0 ? 1 : 0); }
+  std::size_t environment_id() const { return entries_.size() + distant_.size(); }
   bool select(const Vec3& ref, const Vec3& n, float u, std::size_t* light, float* pmf) const;
   float select_pmf(const Vec3& ref, const Vec3& n, std::size_t light) const;
 
@@ -52,9 +57,25 @@ class LightSampler {
 
  private:
   struct Entry {
-    int shape;  // the emitting shape
-    int prim;   // triangle index, -1 for spheres
+    int shape;       // the emitting shape, -1 for a point or spot light
+    int prim;        // triangle index, -1 for spheres
+    int delta = -1;  // point or spot light: index into SceneDesc::delta_lights
   };
+  struct Distant {
+    Vec3 to_light;   // unit, against the direction the light travels
+    Vec3 irradiance;
+    float lum;       // luminance of the irradiance (> 0)
+  };
+  // Importance of the lights outside the BVH at a point of shading normal n: distant light k
+  // (k < distant_.size()) delivers E = luminance |cos|, the environment pi luminance.
+  float infinite_importance(std::size_t k, const Vec3& n) const {
+    return k < distant_.size() ? distant_[k].lum * std::abs(dot(n, distant_[k].to_light)) : env_irradiance_;
+  }
+  std::size_t infinite_count() const { return distant_.size() + (env_irradiance_ > 0 ? 1 : 0); }
+  // World position and unit axis (spot lights) of a point or spot light at the normalised time.
+  void delta_light_at(int delta, float time, Vec3* p, Vec3* axis) const;
+  LightBounds delta_bounds(int delta) const;
+  bool sample_delta(const Entry& e, const Vec3& ref, float time, LightSample* out) const;
   LightBounds bounds_of(const Entry& e) const;
   // World-space corners of a triangle of `shape` at the normalised shutter time.
   void triangle_at(int shape, int prim, float time, Vec3* a, Vec3* b, Vec3* c) const;
@@ -69,6 +90,7 @@ class LightSampler {
   std::vector<Entry> entries_;
   LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1
+  std::vector<Distant> distant_;      // distant lights of non-zero irradiance
   float env_irradiance_ = 0;          // pi x luminance of the environment, 0 if none
   Vec3 env_;
 };

@@ -93,7 +93,8 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
                                                  : spawn_ray_to(hit.point(), hit.ng, ls.x, ls.n, time);
           ++res.rays;
           if (!scene_.occluded(shadow)) {
-            float w = power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
+            // A delta light (point, spot, distant) cannot be hit by BSDF sampling: weight 1.
+            float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
             res.radiance += beta * f * ls.radiance * (std::abs(wi.z) * w / ls.pdf);
           }
         }

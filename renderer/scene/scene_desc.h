@@ -103,6 +103,25 @@ struct EnvironmentDesc {
   Vec3 radiance{0.0f};              // constant radiance from every direction
 };
 
+// A light without area (docs/scene-format.md, "lights"): next-event estimation reaches it,
+// no ray ever hits it, so it takes no part in MIS (its light sample has weight 1).
+//   Point    radiant intensity `intensity` from `position` into every direction
+//   Spot     the same on its axis `direction`, smoothstep falloff from cos_falloff_start down
+//            to cos_cone, none past the cone (pbrt-v4's SpotLight)
+//   Distant  parallel light travelling along `direction`; `irradiance` on a surface facing it
+//            (pbrt-v4's DistantLight `L`)
+struct DeltaLightDesc {
+  enum class Kind { Point, Spot, Distant } kind = Kind::Point;
+  Vec3 position{0.0f};             // point, spot: object space
+  Vec3 direction{0, 0, -1};        // unit; spot: the cone's axis (object space); distant: the way light travels (world)
+  Vec3 intensity{0.0f};            // point, spot: W/sr per channel (spot: on its axis)
+  Vec3 irradiance{0.0f};           // distant: W/m^2 per channel on a surface facing the light
+  float cos_cone = -1;             // spot: cosine of the cone's half-angle (nothing past it)
+  float cos_falloff_start = -1;    // spot: cosine of the half-angle where the falloff begins (>= cos_cone)
+  Affine transform;                // point, spot: object to world (static part)
+  std::vector<MotionKey> motion;   // point, spot: world(t) = interpolate(motion, t) * transform
+};
+
 struct SceneDesc {
   std::filesystem::path file;       // the scene file; relative paths resolve against its directory
   CameraDesc camera;
@@ -112,6 +131,7 @@ struct SceneDesc {
   std::vector<Material> materials;
   std::vector<ShapeDesc> shapes;    // objects and area lights (lights carry emitter materials)
   EnvironmentDesc environment;
+  std::vector<DeltaLightDesc> delta_lights;  // point, spot and distant lights
   int64_t degenerate_triangles = 0; // skipped while loading (the loader warns once)
 };
 

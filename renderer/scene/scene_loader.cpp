@@ -8,6 +8,7 @@
 #include "renderer/scene/scene_limits.h"
 #include "renderer/scene/text_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -34,6 +35,7 @@ class SceneParser {
   void materials(const JsonNode& n);
   void objects(const JsonNode& n);
   void lights(const JsonNode& n);
+  void delta_light(const JsonNode& ln, const JsonObject& o, const std::string& type);
   void load_objs();
 
   std::pair<float, float> shutter() const { return {scene_.camera.shutter_open, scene_.camera.shutter_close}; }
@@ -457,7 +459,11 @@ void SceneParser::lights(const JsonNode& n) {
   for (size_t i = 0; i < count; ++i) {
     JsonNode ln = n.at(i);
     JsonObject o = ln.object();
-    std::string type = o.require("type").choice({"quad", "sphere", "environment"});
+    std::string type = o.require("type").choice({"quad", "sphere", "environment", "point", "spot", "distant"});
+    if (type == "point" || type == "spot" || type == "distant") {
+      delta_light(ln, o, type);
+      continue;
+    }
     if (type == "environment") {
       o.allow({"type", "radiance"});
       if (environment) ln.fail("is a second environment light (at most one; the first is " + environment->path() + ")");
@@ -485,6 +491,84 @@ void SceneParser::lights(const JsonNode& n) {
     place(s, o, ln.path());
     scene_.shapes.push_back(std::move(s));
   }
+}
+
+// v / |v|, refused at `at` when |v| is 0 or not finite in float (a direction written as
+// [1e-30, 0, 0] or [1e30, 1e30, 0] is non-zero yet cannot be normalised).
+Vec3 unit_direction(const JsonNode& at, const Vec3& v, const std::string& what) {
+  const float len = length(v);
+  if (!(len > 0 && std::isfinite(len))) at.fail_got(what + " cannot be normalised in float (length 0 or overflowing)");
+  return v / len;
+}
+
+float cos_deg(float degrees) { return float(std::cos(double(degrees) * M_PI / 180)); }
+
+// Point, spot and distant lights (SceneDesc::delta_lights).
+void SceneParser::delta_light(const JsonNode& ln, const JsonObject& o, const std::string& type) {
+  DeltaLightDesc l;
+  if (type == "distant") {
+    o.allow({"type", "direction", "irradiance"});
+    l.kind = DeltaLightDesc::Kind::Distant;
+    JsonNode d = o.require("direction");
+    l.direction = unit_direction(d, d.nonzero_vec3(), "is a direction that");
+    l.irradiance = o.require("irradiance").radiance();
+    scene_.delta_lights.push_back(l);
+    return;
+  }
+  std::optional<JsonNode> at_position = o.get("position");
+  if (type == "point") {
+    o.allow({"type", "position", "intensity", "transform", "motion"});
+  } else {
+    o.allow({"type", "position", "direction", "look_at", "intensity", "cone_angle_deg", "falloff_start_deg",
+             "transform", "motion"});
+    l.kind = DeltaLightDesc::Kind::Spot;
+  }
+  if (at_position) l.position = at_position->vec3();
+  l.intensity = o.require("intensity").radiance();
+  if (l.kind == DeltaLightDesc::Kind::Spot) {
+    auto dir = o.get("direction"), look = o.get("look_at");
+    if (dir && look) look->fail_key("cannot be combined with direction (give one of them)");
+    if (dir) {
+      l.direction = unit_direction(*dir, dir->nonzero_vec3(), "is a direction that");
+    } else if (look) {
+      const Vec3 d = look->vec3() - l.position;
+      if (is_black(d)) look->fail_got("must differ from the position");
+      l.direction = unit_direction(*look, d, "minus the position");
+    } else {
+      ln.fail("needs \"direction\" or \"look_at\" (the axis of a spot light)");
+    }
+    float cone = 30, start;
+    if (auto c = o.get("cone_angle_deg")) {
+      cone = c->number();
+      if (!(cone > 0 && cone <= 180)) c->fail_got("must be in (0, 180] (degrees from the axis to the cone's edge)");
+    }
+    start = std::max(0.0f, cone - 5);
+    if (auto f = o.get("falloff_start_deg")) {
+      start = f->number();
+      if (!(start >= 0 && start <= cone)) {
+        std::ostringstream m;
+        m << "must be in [0, cone_angle_deg] = [0, " << cone << "]";
+        f->fail_got(m.str());
+      }
+    }
+    l.cos_cone = cos_deg(cone);
+    l.cos_falloff_start = std::max(cos_deg(start), l.cos_cone);
+  }
+  std::optional<JsonNode> at_transform = o.get("transform"), at_motion = o.get("motion");
+  if (at_transform) l.transform = transform(*at_transform);
+  if (at_motion) l.motion = motion(*at_motion, false);
+  // The light's world position and axis at its static transform and at every key must be
+  // finite (and the axis normalisable), so nothing downstream divides by zero or infinity.
+  auto check_world = [&](const Affine& m, const JsonNode& at) {
+    if (!is_finite(m.point(l.position))) at.fail("puts the light at a position beyond float range");
+    if (l.kind == DeltaLightDesc::Kind::Spot) {
+      const float len = length(m.vector(l.direction));
+      if (!(len > 0 && std::isfinite(len))) at.fail("makes the spot light's axis impossible to normalise in float");
+    }
+  };
+  check_world(l.transform, at_transform ? *at_transform : at_position ? *at_position : ln);
+  for (size_t k = 0; k < l.motion.size(); ++k) check_world(l.motion[k].matrix() * l.transform, at_motion->at(k));
+  scene_.delta_lights.push_back(l);
 }
 
 bool same_material(const Material& a, const Material& b) {

@@ -127,6 +127,41 @@ TEST_F(BadInput, DirectoriesAndMissingFilesAreNamedWithTheReason) {
                  dir / "a" / "stats.json", 1, "missing.csv: cannot open: No such file or directory");
 }
 
+// Point, spot and distant lights (issue 17): a bad value or an unknown key is one line naming
+// file:line:col and the key, exit status 1, and no image written.
+TEST_F(BadInput, BadDeltaLightsAreRefusedByNameWithoutOutput) {
+  const fs::path out = dir / "o.png";
+  struct Case {
+    const char* light;
+    const char* what;
+  };
+  const Case cases[] = {
+      {R"({"type": "point", "position": [0, 2, 0], "intensity": [1, -2, 1]})",
+       "scene.json:7:59: lights[0].intensity must have components >= 0, got [1,-2,1]"},
+      {R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, 0, 0]})",
+       "scene.json:7:59: lights[0].direction must be non-zero, got [0,0,0]"},
+      {R"({"type": "distant", "direction": [0, 0, 0], "irradiance": [1, 1, 1]})",
+       "scene.json:7:38: lights[0].direction must be non-zero"},
+      {R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, -1, 0], "cone_angle_deg": 0})",
+       "scene.json:7:89: lights[0].cone_angle_deg must be in (0, 180]"},
+      {R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, -1, 0], "cone_angle_deg": 200})",
+       "lights[0].cone_angle_deg must be in (0, 180] (degrees from the axis to the cone's edge), got 200"},
+      {R"({"type": "point", "intensity": [1, 1, 1], "colour": [1, 1, 1]})", "scene.json:7:47: lights[0].colour unknown key"},
+      {R"({"type": "distant", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "intensity": 2})",
+       "lights[0].intensity unknown key"},
+  };
+  for (const Case& c : cases) {
+    const fs::path scene = dir / "scene.json";
+    std::ofstream(scene) << "{\n  \"camera\": {\"position\": [0, 0, 4], \"look_at\": [0, 0, 0]},\n"
+                            "  \"film\": {\"width\": 8, \"height\": 8},\n"
+                            "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}},\n"
+                            "  \"objects\": [{\"type\": \"sphere\", \"material\": \"grey\", \"radius\": 1}],\n"
+                            "  \"lights\": [\n"
+                            "    " << c.light << "\n  ]\n}\n";
+    expect_refused("render " + scene.string() + " -q -o " + out.string(), out, 1, c.what);
+  }
+}
+
 TEST_F(BadInput, InvalidBytesInAFileNameAreEscaped) {
   auto r = run_pdrt("analyze --no-plots -o " + (dir / "a").string() + " \"$(printf '\\377\\033[31m.csv')\"");
   EXPECT_EQ(r.exit_code, 1) << r.err;

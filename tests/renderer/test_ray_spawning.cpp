@@ -15,19 +15,6 @@ using namespace pdrt::test;
 
 namespace {
 
-// Placement of a whole scene: p -> offset + scale p.
-struct Placement {
-  Vec3 offset;
-  float scale;
-  Vec3 point(const Vec3& p) const { return offset + p * scale; }
-  Vec3 vector(const Vec3& v) const { return v * scale; }
-};
-
-std::string describe(const Placement& at) {
-  return "offset (" + std::to_string(at.offset.x) + ", " + std::to_string(at.offset.y) + ", " +
-         std::to_string(at.offset.z) + ") scale " + std::to_string(at.scale);
-}
-
 const std::vector<Placement> kPlacements = {
     {{0, 0, 0}, 1},        {{10, 0, 0}, 1},       {{1e3f, -1e3f, 0}, 1},  {{1e5f, 0, 0}, 1},
     {{0, 0, 1e5f}, 1},     {{0, 0, 0}, 1e-3f},    {{0, 0, 0}, 1e3f},      {{1e3f, 0, 1e3f}, 1e3f},

@@ -143,6 +143,32 @@ TEST_F(SceneLoader, ExampleShapesMaterialsAndLights) {
   EXPECT_EQ(s.degenerate_triangles, 0);
 }
 
+TEST_F(SceneLoader, ExampleDeltaLights) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  ASSERT_EQ(s.delta_lights.size(), 4u);
+  const DeltaLightDesc& point = s.delta_lights[0];
+  EXPECT_EQ(point.kind, DeltaLightDesc::Kind::Point);
+  expect_vec(point.position, -2, 2, 1);
+  expect_vec(point.intensity, 2, 1.8f, 1.5f);
+  ASSERT_EQ(point.motion.size(), 2u);
+  expect_vec(point.motion[1].translate, 0.2f, 0, 0);
+  const DeltaLightDesc& spot = s.delta_lights[1];
+  EXPECT_EQ(spot.kind, DeltaLightDesc::Kind::Spot);
+  const Vec3 axis = normalize(Vec3(-0.5f, -2.6f, -0.5f));  // look_at - position, in object space
+  expect_vec(spot.direction, axis.x, axis.y, axis.z);
+  EXPECT_FLOAT_EQ(spot.cos_cone, std::cos(25 * float(M_PI) / 180));
+  EXPECT_FLOAT_EQ(spot.cos_falloff_start, std::cos(15 * float(M_PI) / 180));
+  expect_vec(spot.transform.point(spot.position), 2, 3.5f, 2);
+  // Defaults: cone 30 degrees, falloff from 25.
+  EXPECT_FLOAT_EQ(s.delta_lights[2].cos_cone, std::cos(30 * float(M_PI) / 180));
+  EXPECT_FLOAT_EQ(s.delta_lights[2].cos_falloff_start, std::cos(25 * float(M_PI) / 180));
+  const DeltaLightDesc& sun = s.delta_lights[3];
+  EXPECT_EQ(sun.kind, DeltaLightDesc::Kind::Distant);
+  const Vec3 travel = normalize(Vec3(-1, -2, -1));
+  expect_vec(sun.direction, travel.x, travel.y, travel.z);
+  expect_vec(sun.irradiance, 0.5f, 0.5f, 0.45f);
+}
+
 TEST_F(SceneLoader, ExampleMtlMapping) {
   SceneDesc s = load_scene(kExamples / "all-features.json");
   auto find = [&](const std::string& name) -> const Material& {
@@ -603,6 +629,38 @@ TEST_F(SceneLoader, SingularMatrix) {
                "transform": {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0]}}]
 })");
   EXPECT_ERROR(f, "s.json:6:29: objects[0].transform is singular");
+}
+
+// Point, spot and distant lights: every rule refused at the offending value.
+TEST_F(SceneLoader, DeltaLightsRefuseBadValuesByName) {
+  auto lights = [](const std::string& text) { return scene(kHead + "  \"lights\": [" + text + "]\n}"); };
+  // Every light is on line 4, after `  "lights": [`.
+  EXPECT_ERROR(lights(R"({"type": "point", "intensity": [1, -1, 1]})"),
+               "s.json:4:45: lights[0].intensity must have components >= 0, got [1,-1,1]");
+  EXPECT_ERROR(lights(R"({"type": "point", "position": [0, 0, 0]})"), "s.json:4:14: lights[0] missing required key \"intensity\"");
+  EXPECT_ERROR(lights(R"({"type": "point", "intensity": [1, 1, 1], "radiance": [1, 1, 1]})"),
+               "s.json:4:56: lights[0].radiance unknown key");
+  EXPECT_ERROR(lights(R"({"type": "distant", "direction": [0, 0, 0], "irradiance": [1, 1, 1]})"),
+               "s.json:4:47: lights[0].direction must be non-zero, got [0,0,0]");
+  EXPECT_ERROR(lights(R"({"type": "distant", "direction": [1e-30, 0, 0], "irradiance": [1, 1, 1]})"),
+               "s.json:4:47: lights[0].direction is a direction that cannot be normalised in float");
+  EXPECT_ERROR(lights(R"({"type": "distant", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "position": [0, 1, 0]})"),
+               "lights[0].position unknown key");
+  const std::string spot = R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, -1, 0], )";
+  EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 0})"), "s.json:4:98: lights[0].cone_angle_deg must be in (0, 180]");
+  EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 180.5})"), "lights[0].cone_angle_deg must be in (0, 180]");
+  EXPECT_ERROR(lights(spot + R"("cone_angle_deg": -10})"), "lights[0].cone_angle_deg must be in (0, 180]");
+  EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 20, "falloff_start_deg": 25})"),
+               "lights[0].falloff_start_deg must be in [0, cone_angle_deg] = [0, 20], got 25");
+  EXPECT_ERROR(lights(spot + R"("look_at": [0, 0, 0]})"), "lights[0].look_at cannot be combined with direction");
+  EXPECT_ERROR(lights(R"({"type": "spot", "intensity": [1, 1, 1]})"), "s.json:4:14: lights[0] needs \"direction\" or \"look_at\"");
+  EXPECT_ERROR(lights(R"({"type": "spot", "intensity": [1, 1, 1], "position": [1, 2, 3], "look_at": [1, 2, 3]})"),
+               "lights[0].look_at must differ from the position");
+  EXPECT_ERROR(lights(spot + R"("transform": {"translate": [3e38, 0, 0]}, "position": [3e38, 0, 0]})"),
+               "lights[0].transform puts the light at a position beyond float range");
+  // Fine: a spot of 180 degrees (every direction) with no falloff, a point light of zero intensity.
+  EXPECT_NO_THROW(load_scene(lights(spot + R"("cone_angle_deg": 180, "falloff_start_deg": 180})")));
+  EXPECT_NO_THROW(load_scene(lights(R"({"type": "point", "intensity": [0, 0, 0]})")));
 }
 
 TEST_F(SceneLoader, SecondEnvironmentLight) {

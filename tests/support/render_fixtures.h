@@ -4,12 +4,27 @@
 #include "renderer/render/thin_lens_camera.h"
 #include "renderer/scene/scene_desc.h"
 
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <cmath>
 
 namespace pdrt::test {
+
+// Placement of a whole scene: p -> offset + scale p (tests that a scene renders the same
+// wherever it is and at whatever scale).
+struct Placement {
+  Vec3 offset;
+  float scale;
+  Vec3 point(const Vec3& p) const { return offset + p * scale; }
+  Vec3 vector(const Vec3& v) const { return v * scale; }
+};
+
+inline std::string describe(const Placement& at) {
+  return "offset (" + std::to_string(at.offset.x) + ", " + std::to_string(at.offset.y) + ", " +
+         std::to_string(at.offset.z) + ") scale " + std::to_string(at.scale);
+}
 
 inline int add_material(SceneDesc& s, Material m) {
   s.materials.push_back(std::move(m));

@@ -19,12 +19,13 @@ done
 /usr/bin/env python3 - "$OUT" <<'PY'
 import json, os, sys
 out = sys.argv[1]
-rows = []
+rows, names = [], []
 for name in sorted(os.listdir(out)):
     p = os.path.join(out, name, "results.json")
     if not os.path.exists(p):
         continue
     r = json.load(open(p))
+    names = r["samplers"]
     for n in r["spp"]:
         e = {u["sampler"]: (u["rmse"], u.get("rmse_ci95", 0.0)) for u in r["runs"] if u["spp"] == n}
         best = min(e, key=lambda s: e[s][0])
@@ -34,7 +35,7 @@ for name in sorted(os.listdir(out)):
             name, n, " | ".join("%.4g ± %.2g" % e[s] for s in r["samplers"]), verdict))
     rows.append("| %s | slope | %s | |" % (name, " | ".join("%.2f" % r["slopes"][s] for s in r["samplers"])))
 with open(os.path.join(out, "summary.md"), "w") as f:
-    f.write("| scene | spp | random | jitter | poisson | sobol | best |\n|---|---|---|---|---|---|---|\n")
+    f.write("| scene | spp | " + " | ".join(names) + " | best |\n|---|---|" + "---|" * (len(names) + 1) + "\n")
     f.write("\n".join(rows) + "\n")
 print("wrote", os.path.join(out, "summary.md"))
 PY

@@ -11,11 +11,14 @@
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <mutex>
+#include <vector>
 
 namespace pdrt {
 namespace {
@@ -69,8 +72,9 @@ class PoissonSampler final : public Sampler {
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
     if (f == Family::Pixel && uint64_t(index) >= m) warn_past_prefix(px, py, m);
-    map_stream(px, py, f, bounce, uint64_t(index) / m, &p);
-    index %= m;
+    const uint64_t round = uint64_t(index) / m;
+    map_stream(px, py, f, bounce, round, &p);
+    index = table_index(px, py, f, bounce, round, uint64_t(index) % m);
     return {p.value(index, 0), p.value(index, 1)};
   }
 
@@ -78,18 +82,35 @@ class PoissonSampler final : public Sampler {
     if (f != Family::Time) return get_2d(px, py, index, f, bounce)[0];
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
-    map_stream(px, py, f, bounce, uint64_t(index) / m, &p);
-    return p.value(int64_t(uint64_t(index) % m), 0);
+    const uint64_t round = uint64_t(index) / m;
+    map_stream(px, py, f, bounce, round, &p);
+    return p.value(table_index(px, py, f, bounce, round, uint64_t(index) % m), 0);
   }
 
-  // get_2d/get_1d read values through the same PreparedStream, so the fast path is exact.
+  // get_2d/get_1d read values through the same PreparedStream (and, for poisson-02, the same
+  // index shuffle), so the fast path is exact.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
     map_stream(px, py, f, bounce, 0, out);
+    if (!digital() || !std::has_single_bit(out->count)) return;
+    // poisson-02: the table read through the stream's index shuffle, stored per stream.
+    const PreparedStream table = *out;
+    const uint32_t n = std::min(out->want, table.count);
+    const int dim = family_dim(f);
+    thread_local std::vector<uint32_t> perm;
+    perm.resize(n);
+    IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(n, perm.data());
+    fill_prepared(out, n, dim, [&](uint32_t i, uint32_t* v) {
+      for (int k = 0; k < dim; ++k) v[k] = table.coords[(std::size_t(perm[i]) << table.shift) + table.src[k]] ^ table.xr[k];
+    });
+    out->grows = n < table.count;
   }
 
-  // Tiled pixel tables merge cells per pixel; every other stream points into a table.
-  bool prepare_computes(Family f) const override { return f == Family::Pixel && tiled(); }
+  // Tiled pixel tables merge cells per pixel, poisson-02 shuffles; every other stream points
+  // into a table.
+  bool prepare_computes(Family f) const override {
+    return (f == Family::Pixel && tiled()) || (digital() && std::has_single_bit(tables_.family[int(f)]->params.points));
+  }
 
   int64_t samples_available(int px, int py) const override {
     int64_t n = INT64_MAX;
@@ -230,6 +251,21 @@ class PoissonSampler final : public Sampler {
                    "pdrt: poisson: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
                    "in another table and shift (docs/sampling.md)\n",
                    px, py, n);
+  }
+
+  // poisson-02 reads every stream through its own index shuffle (as jitter and sobol do):
+  // its stratified tables visit their strata in related orders (progressive jitter's fixed
+  // parent order in time, Sobol's index structure in 2-D) that a digital shift does not
+  // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
+  // keep their point sets, so their strata. `poisson` keeps the tables' own order, which is
+  // what makes every prefix Poisson-disk.
+  uint64_t shuffle_key(int px, int py, Family f, int bounce, uint64_t round) const {
+    return hash_combine(stream(px, py, f, bounce), round ^ 0x73687566666c6532ull);
+  }
+  // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
+  int64_t table_index(int px, int py, Family f, int bounce, uint64_t round, uint64_t j) const {
+    if (!digital() || !std::has_single_bit(tables_.family[int(f)]->params.points)) return int64_t(j);
+    return int64_t(IndexShuffle(shuffle_key(px, py, f, bounce, round))(j));
   }
 
   // Pixel tables of a P x P tile (P > 1) keep the Poisson-disk property across pixel borders;

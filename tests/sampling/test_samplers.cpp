@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -271,6 +272,31 @@ TEST(Poisson02Sampler, EveryStreamKeepsItsStrata) {
 }
 
 TEST(Poisson02Sampler, IsNamedForItsTableSet) { EXPECT_EQ(make_sampler("poisson-02", 1)->name(), "poisson-02"); }
+
+}  // namespace
+}  // namespace pdrt
+
+namespace pdrt {
+namespace {
+
+// Two time streams of one pixel (the shutter and a vertex's decisions) must not visit their
+// strata in lockstep. The stratified-bc tables share progressive jitter's parent order, so
+// their 16-prefixes' strata differ by a constant xor, which a digital shift keeps: without
+// the per-stream index shuffle, 63 of the 120 pairs below did (and gloss-translucency at
+// 256 spp rendered 10 % worse than Sobol, 0.0300 against 0.0272 at 160 x 120).
+TEST(Poisson02Sampler, TimeStreamsOfAPixelDoNotMoveInLockstep) {
+  auto s = make_sampler("poisson-02", 3);
+  int lockstep = 0, pairs = 0;
+  for (int px = 0; px < 8; ++px)
+    for (int a = 0; a < 6; ++a)
+      for (int b = a + 1; b < 6; ++b, ++pairs) {
+        std::set<int> xors;
+        for (int i = 0; i < 16; ++i)
+          xors.insert(int(s->get_1d(px, 1, i, Family::Time, a) * 16) ^ int(s->get_1d(px, 1, i, Family::Time, b) * 16));
+        lockstep += xors.size() == 1;
+      }
+  EXPECT_EQ(lockstep, 0) << "of " << pairs << " pairs";
+}
 
 }  // namespace
 }  // namespace pdrt

@@ -643,7 +643,7 @@ TEST_F(SceneLoader, ConductorUnknownMetalListsTheKnownOnes) {
     "m": {"type": "conductor", "metal": "Pt"}
   }
 })");
-  EXPECT_ERROR(f, "s.json:5:40: materials.m.metal must be one of \"Ag\", \"Al\", \"Au\", \"Cu\", got \"Pt\"");
+  EXPECT_ERROR(f, "s.json:5:41: materials.m.metal must be one of \"Ag\", \"Al\", \"Au\", \"Cu\", got \"Pt\"");
 }
 
 TEST_F(SceneLoader, ConductorMetalExcludesEtaAndK) {
@@ -676,7 +676,7 @@ TEST_F(SceneLoader, ConductorEtaAndKRanges) {
   EXPECT_ERROR(with("[1, 0, 1]", "[1, 1, 1]"), "s.json:5:39: materials.m.eta must have finite components > 0");
   EXPECT_ERROR(with("[1, -1, 1]", "[1, 1, 1]"), "materials.m.eta must have finite components > 0");
   EXPECT_ERROR(with("[1, 1e39, 1]", "[1, 1, 1]"), "is too large for a float");
-  EXPECT_ERROR(with("[1, 1, 1]", "[1, -0.5, 1]"), "s.json:5:57: materials.m.k must have finite components >= 0");
+  EXPECT_ERROR(with("[1, 1, 1]", "[1, -0.5, 1]"), "s.json:5:55: materials.m.k must have finite components >= 0");
   EXPECT_ERROR(with("[1, 1, 1]", "[1, 1]"), "materials.m.k must be an array of 3 numbers");
   EXPECT_ERROR(with("[1, 1, 1]", "[1, 1, 1e39]"), "is too large for a float");
 }

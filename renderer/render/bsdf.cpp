@@ -53,6 +53,15 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
       kind_ = m.lobe == GlossLobe::Phong ? Kind::Phong : Kind::Ggx;
       alpha_ = alpha;
       exponent_ = std::max(0.0f, m.exponent);
+      [[fallthrough]];
+    case MaterialType::Conductor:
+      if (m.type == MaterialType::Conductor) {
+        conductor_ = true;
+        eta_ = m.eta, k_ = m.k;
+        alpha_ = alpha;
+        kind_ = m.roughness > 0 ? Kind::Ggx : Kind::SmoothConductor;
+        albedo_ = fresnel_conductor(1.0f, eta_, k_);  // the albedo AOV: normal-incidence reflectance
+      }
       if (kind_ == Kind::Ggx && m.energy_compensation) {
         // Kulla & Conty 2017: f_ms carries 1 - E(mu_o) when F = 1. With Fresnel, the light that
         // does not leave after a bounce (1 - E_avg) is reflected with F_avg and leaves with E_avg
@@ -64,7 +73,7 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
           e_avg_[0] = e_avg;
           e_nodes_ = ggx_albedo_nodes(false);
           for (int i = 0; i < e_nodes_; ++i) e_row_[0][i] = ggx_conductor_albedo(float(i) / float(e_nodes_ - 1), alpha_);
-          Vec3 f_avg = albedo_ + (Vec3(1.0f) - albedo_) * (1.0f / 21.0f);
+          Vec3 f_avg = conductor_ ? fresnel_conductor_average(eta_, k_) : albedo_ + (Vec3(1.0f) - albedo_) * (1.0f / 21.0f);
           Vec3 f_ms = f_avg * f_avg * e_avg / (Vec3(1.0f) - f_avg * (1.0f - e_avg));
           ms_scale_ = f_ms * (kInvPi / (1.0f - e_avg));
           ms_pick_ss_ = (f_avg.x + f_avg.y + f_avg.z) / 3.0f;
@@ -108,7 +117,9 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
   }
 }
 
-bool Bsdf::is_delta() const { return kind_ == Kind::Mirror || kind_ == Kind::SmoothDielectric; }
+bool Bsdf::is_delta() const {
+  return kind_ == Kind::Mirror || kind_ == Kind::SmoothConductor || kind_ == Kind::SmoothDielectric;
+}
 bool Bsdf::scatters() const { return kind_ != Kind::Black; }
 Vec3 Bsdf::albedo() const { return albedo_; }
 
@@ -189,6 +200,13 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
       out->delta = true;
       out->weight = fresnel_schlick(albedo_, wo.z);
       return true;
+    case Kind::SmoothConductor:
+      if (wo.z <= 0) return false;
+      out->wi = mirror_z(wo);
+      out->pdf = 1.0f;
+      out->delta = true;
+      out->weight = fresnel_conductor(wo.z, eta_, k_);
+      return true;
     case Kind::SmoothDielectric:
       return sample_smooth_dielectric(wo, uc, out);
     case Kind::RoughDielectric:
@@ -198,6 +216,10 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
   }
 }
 
+Vec3 Bsdf::fresnel_ggx(float cos_i) const {
+  return conductor_ ? fresnel_conductor(cos_i, eta_, k_) : fresnel_schlick(albedo_, cos_i);
+}
+
 Vec3 Bsdf::eval_ggx(const Vec3& wo, const Vec3& wi) const {
   if (!same_hemisphere_up(wo, wi)) return Vec3(0.0f);
   Vec3 h = wo + wi;
@@ -205,7 +227,7 @@ Vec3 Bsdf::eval_ggx(const Vec3& wo, const Vec3& wi) const {
   h = normalize(h);
   MicrofacetGgx ggx(alpha_);
   // Cook-Torrance / Walter 2007 eq. 20.
-  return fresnel_schlick(albedo_, dot(wi, h)) * (ggx.d(h) * ggx.g2(wo, wi) / (4.0f * wo.z * wi.z));
+  return fresnel_ggx(dot(wi, h)) * (ggx.d(h) * ggx.g2(wo, wi) / (4.0f * wo.z * wi.z));
 }
 
 float Bsdf::pdf_ggx(const Vec3& wo, const Vec3& wi) const {
@@ -228,7 +250,7 @@ bool Bsdf::sample_ggx(const Vec3& wo, float u1, float u2, BsdfSample* out) const
   out->wi = normalize(wi);
   out->pdf = ggx.pdf_visible(wo, m) / (4.0f * c);
   // f cos / pdf with the visible-normal pdf: D and the Jacobian cancel, G1(wo) remains.
-  out->weight = fresnel_schlick(albedo_, c) * (ggx.g2(wo, wi) / ggx.g1(wo));
+  out->weight = fresnel_ggx(c) * (ggx.g2(wo, wi) / ggx.g1(wo));
   return true;
 }
 

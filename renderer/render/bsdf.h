@@ -7,6 +7,9 @@
 //   Glossy      GGX: Schlick Fresnel with F0 = albedo, alpha = roughness^2, height-correlated
 //               Smith G2, visible-normal sampling. Phong: normalised modified Phong about the
 //               mirror direction, exponent as given (no mapping from roughness).
+//   Conductor   exact conductor Fresnel with complex index eta + ik per RGB channel
+//               (fresnel_conductor): roughness 0 a delta reflection, otherwise the GGX lobe of
+//               Glossy with that Fresnel in place of Schlick's (pbrt-v4's ConductorBxDF).
 //   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
 //   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
 //               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
@@ -43,13 +46,14 @@ class Bsdf {
   // False when no direction is produced (below the horizon, wo grazing, non-scattering).
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
 
-  bool is_delta() const;  // every lobe is a delta (mirror, dielectric with roughness 0)
+  bool is_delta() const;  // every lobe is a delta (mirror, conductor or dielectric with roughness 0)
   bool scatters() const;  // false for emitters
   Vec3 albedo() const;    // for the albedo AOV
 
  private:
-  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothDielectric, RoughDielectric };
+  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric };
 
+  Vec3 fresnel_ggx(float cos_i) const;  // Schlick with F0 = albedo, or the exact conductor Fresnel
   Vec3 eval_ggx(const Vec3& wo, const Vec3& wi) const;
   float pdf_ggx(const Vec3& wo, const Vec3& wi) const;
   bool sample_ggx(const Vec3& wo, float u1, float u2, BsdfSample* out) const;
@@ -70,6 +74,8 @@ class Bsdf {
   float alpha_ = 1.0f;     // GGX roughness, alpha = roughness^2 clamped to >= kMinGgxAlpha
   float exponent_ = 0.0f;  // Phong
   float ior_ = 1.5f;       // inside / outside
+  bool conductor_ = false; // Ggx / SmoothConductor: exact complex Fresnel with eta_, k_
+  Vec3 eta_{1.0f}, k_{0.0f};
   bool ms_ = false;        // energy compensation active
   Vec3 ms_scale_{0.0f};    // conductor: F_ms / (pi (1 - E_avg)) per channel
   float ms_pick_ss_ = 0, ms_pick_ms_ = 0;  // conductor: mean F_avg and F_ms, weights of the lobe choice

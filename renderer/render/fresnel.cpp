@@ -1,5 +1,7 @@
 #include "renderer/render/fresnel.h"
 
+#include <complex>
+
 namespace pdrt {
 
 // Snell: sin_t = sin_i / eta; the result is -w / eta + (cos_i / eta - cos_t) n.
@@ -29,6 +31,37 @@ double fresnel_dielectric_average(double eta) {
   double s = 0;
   for (int i = 0; i < n; ++i) s += fresnel_dielectric(std::sqrt((i + 0.5) / n), eta);
   return s / n;
+}
+
+double fresnel_conductor(double cos_i, double eta, double k) {
+  using C = std::complex<double>;
+  cos_i = std::clamp(cos_i, 0.0, 1.0);
+  const C n(eta, k);
+  const C sin2_t = (1.0 - cos_i * cos_i) / (n * n);
+  const C cos_t = std::sqrt(1.0 - sin2_t);  // principal root: Re >= 0, the wave decays inside
+  const C rs = (cos_i - n * cos_t) / (cos_i + n * cos_t);
+  const C rp = (n * cos_i - cos_t) / (n * cos_i + cos_t);
+  return std::min(1.0, 0.5 * (std::norm(rs) + std::norm(rp)));
+}
+
+Vec3 fresnel_conductor(float cos_i, const Vec3& eta, const Vec3& k) {
+  return {float(fresnel_conductor(cos_i, eta.x, k.x)), float(fresnel_conductor(cos_i, eta.y, k.y)),
+          float(fresnel_conductor(cos_i, eta.z, k.z))};
+}
+
+Vec3 fresnel_conductor_average(const Vec3& eta, const Vec3& k) {
+  // Midpoint rule in mu^2, as fresnel_dielectric_average (smooth: no critical angle for k > 0).
+  const int n = 1024;
+  double s[3] = {0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    double mu = std::sqrt((i + 0.5) / n);
+    for (int c = 0; c < 3; ++c) s[c] += fresnel_conductor(mu, eta[c], k[c]);
+  }
+  return {float(s[0] / n), float(s[1] / n), float(s[2] / n)};
+}
+
+double conductor_r0(double eta, double k) {
+  return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);
 }
 
 Vec3 fresnel_schlick(const Vec3& f0, float cos_i) {

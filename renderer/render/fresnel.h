@@ -20,6 +20,19 @@ double fresnel_dielectric(double cos_i, double eta);
 // Hemispherical cosine-weighted average 2 int_0^1 F(mu, eta) mu dmu of fresnel_dielectric.
 double fresnel_dielectric_average(double eta);
 
+// Exact unpolarised Fresnel reflectance of a conductor (or any absorbing medium) with complex
+// relative index eta + i k, for cos_i > 0 on the incident side (the side of index 1). The s and p
+// amplitude coefficients with the complex cos_t = sqrt(1 - sin_i^2 / (eta + ik)^2), averaged in
+// power (Born & Wolf §14.2; pbrt-v4's FrComplex). k = 0 is fresnel_dielectric, including total
+// internal reflection for eta < 1 (cos_t becomes imaginary and |r| = 1).
+double fresnel_conductor(double cos_i, double eta, double k);
+// Per RGB channel.
+Vec3 fresnel_conductor(float cos_i, const Vec3& eta, const Vec3& k);
+// Its hemispherical cosine-weighted average 2 int_0^1 F(mu) mu dmu, per channel.
+Vec3 fresnel_conductor_average(const Vec3& eta, const Vec3& k);
+// Normal-incidence reflectance ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2).
+double conductor_r0(double eta, double k);
+
 // Schlick 1994: f0 + (1 - f0)(1 - cos)^5.
 Vec3 fresnel_schlick(const Vec3& f0, float cos_i);
 

@@ -7,7 +7,7 @@
 
 namespace pdrt {
 
-enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter };
+enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Conductor };
 enum class GlossLobe { GGX, Phong };
 
 struct Material {
@@ -18,9 +18,19 @@ struct Material {
   float roughness = 0.0f;  // perceptual: GGX alpha = roughness^2; 0 = smooth (delta)
   float exponent = 0.0f;   // normalised Phong exponent (lobe == Phong)
   float ior = 1.5f;        // dielectric, relative to the outside medium
+  Vec3 eta{1.0f};          // conductor: real part of the complex index per RGB channel (> 0)
+  Vec3 k{0.0f};            // conductor: imaginary part (extinction) per RGB channel (>= 0)
   Vec3 radiance{0.0f};     // emitted radiance (Emitter)
   bool two_sided = false;  // emitters: emit from both faces (default: front face only)
-  bool energy_compensation = true;  // GGX glossy and rough dielectric: add the multiple-scattering lobe
+  bool energy_compensation = true;  // GGX glossy, rough conductor and rough dielectric: add the multiple-scattering lobe
 };
+
+// Measured complex indices of named metals at 650, 550 and 450 nm (R, G, B): material.cpp.
+struct NamedMetal {
+  const char* name;
+  Vec3 eta, k;
+};
+const NamedMetal* find_named_metal(const std::string& name);  // nullptr if unknown
+std::string named_metal_list();                                // "\"Ag\", \"Al\", \"Au\", \"Cu\""
 
 }  // namespace pdrt

@@ -224,7 +224,7 @@ void SceneParser::materials(const JsonNode& n) {
     JsonObject o = mn.object();
     Material m;
     m.name = it.key();
-    std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter"});
+    std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor"});
     if (type == "diffuse") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Diffuse;
@@ -263,6 +263,28 @@ void SceneParser::materials(const JsonNode& n) {
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
       if (auto x = o.get("ior")) m.ior = x->positive();
+      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
+    } else if (type == "conductor") {
+      o.allow({"type", "eta", "k", "metal", "roughness", "energy_compensation"});
+      m.type = MaterialType::Conductor;
+      m.albedo = Vec3(1.0f);
+      auto metal = o.get("metal"), eta = o.get("eta"), k = o.get("k");
+      if (metal && (eta || k)) (eta ? eta : k)->fail_key("cannot be combined with metal: give metal or eta and k");
+      if (metal) {
+        const NamedMetal* nm = find_named_metal(metal->string());
+        if (!nm) metal->fail_got("must be one of " + named_metal_list());
+        m.eta = nm->eta, m.k = nm->k;
+      } else {
+        if (!eta && !k) mn.fail("needs metal (one of " + named_metal_list() + ") or eta and k");
+        JsonNode e = eta ? *eta : o.require("eta"), kk = k ? *k : o.require("k");
+        m.eta = e.vec3();
+        m.k = kk.vec3();
+        for (int c = 0; c < 3; ++c)
+          if (!(std::isfinite(m.eta[c]) && m.eta[c] > 0)) e.fail_got("must have finite components > 0");
+        for (int c = 0; c < 3; ++c)
+          if (!(std::isfinite(m.k[c]) && m.k[c] >= 0)) kk.fail_got("must have finite components >= 0");
+      }
       if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
     } else {
@@ -574,6 +596,7 @@ void SceneParser::delta_light(const JsonNode& ln, const JsonObject& o, const std
 bool same_material(const Material& a, const Material& b) {
   return a.name == b.name && a.type == b.type && is_black(a.albedo - b.albedo) && a.lobe == b.lobe &&
          a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior &&
+         is_black(a.eta - b.eta) && is_black(a.k - b.k) &&
          is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided &&
          a.energy_compensation == b.energy_compensation;
 }

@@ -70,6 +70,20 @@ Material mirror(Vec3 albedo) {
   return m;
 }
 
+Material conductor(float roughness, Vec3 eta, Vec3 k) {
+  Material m;
+  m.type = MaterialType::Conductor;
+  m.roughness = roughness;
+  m.eta = eta;
+  m.k = k;
+  return m;
+}
+
+Material metal(const char* name, float roughness) {
+  const NamedMetal* nm = find_named_metal(name);
+  return conductor(roughness, nm->eta, nm->k);
+}
+
 double rel_diff(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
 
 // ---- Chi-square goodness of fit of sample() against pdf() (after pbrt-v3's and Mitsuba's test).
@@ -208,6 +222,11 @@ std::vector<FitCase> fit_cases() {
       cases.push_back({"RoughDielectric_r0p" + std::to_string(r) + "_inside_theta" + std::to_string(int(t)),
                        dielectric(0.1f * r), -direction(t)});
   }
+  // Rough conductors: the GGX lobe with the exact complex Fresnel (gold, plus compensation lobe).
+  for (int r : {2, 6})
+    for (float t : {0.0f, 45.0f, 80.0f})
+      cases.push_back({"ConductorAu_r0p" + std::to_string(r) + "_theta" + std::to_string(int(t)), metal("Au", 0.1f * r),
+                       direction(t)});
   return cases;
 }
 
@@ -666,6 +685,141 @@ TEST(Bsdf, DeltaFlagsFollowRoughness) {
   EXPECT_FALSE(Bsdf(diffuse(Vec3(0.5f))).is_delta());
   EXPECT_FALSE(Bsdf(phong(10)).is_delta());
   EXPECT_TRUE(Bsdf(diffuse(Vec3(0.5f))).scatters());
+}
+
+}  // namespace
+}  // namespace pdrt
+
+namespace pdrt {
+namespace {
+
+// ---- Conductor: exact complex Fresnel, named metals, rough GGX lobe.
+
+// Normal-incidence reflectance of the named metals at 650 / 550 / 450 nm as computed from the
+// same published n, k (renderer/scene/material.cpp) with R = ((n-1)^2 + k^2) / ((n+1)^2 + k^2),
+// rounded to 3 digits; for comparison, the spectrally averaged linear-sRGB F0 that Hoffman
+// ("Physics and Math of Shading", SIGGRAPH 2015 course) lists is Au (1.00, 0.71, 0.29), Ag (0.95,
+// 0.93, 0.88), Cu (0.95, 0.64, 0.54), Al (0.91, 0.92, 0.92).
+struct MetalR0 {
+  const char* name;
+  double r, g, b;
+};
+constexpr MetalR0 kMetalR0[] = {
+    {"Au", 0.955, 0.827, 0.404}, {"Ag", 0.990, 0.983, 0.980}, {"Cu", 0.943, 0.620, 0.540}, {"Al", 0.912, 0.921, 0.924}};
+
+TEST(Conductor, FresnelAtNormalIncidenceIsR0OfEachNamedMetal) {
+  for (const MetalR0& m : kMetalR0) {
+    const NamedMetal* nm = find_named_metal(m.name);
+    ASSERT_NE(nm, nullptr) << m.name;
+    double expected[3] = {m.r, m.g, m.b};
+    for (int c = 0; c < 3; ++c) {
+      double r0 = conductor_r0(nm->eta[c], nm->k[c]);
+      // The exact Fresnel equals the closed form at cos = 1 to double rounding.
+      EXPECT_NEAR(fresnel_conductor(1.0, nm->eta[c], nm->k[c]), r0, 1e-12) << m.name << " channel " << c;
+      // And the tabulated reflectance within 1 % (relative).
+      EXPECT_LE(rel_diff(r0, expected[c]), 0.01) << m.name << " channel " << c << " R0 " << r0;
+    }
+  }
+}
+
+TEST(Conductor, ZeroExtinctionIsTheDielectricFresnel) {
+  // k = 0: the complex formula reduces to fresnel_dielectric, also for eta < 1 beyond the critical
+  // angle (total internal reflection). Tolerance 1e-12 (double rounding).
+  for (double eta : {0.67, 1.33, 1.5, 2.4})
+    for (double cos_i : {1.0, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01})
+      EXPECT_NEAR(fresnel_conductor(cos_i, eta, 0.0), fresnel_dielectric(cos_i, eta), 1e-12)
+          << "eta " << eta << " cos " << cos_i;
+}
+
+TEST(Conductor, FresnelTendsToOneAtGrazing) {
+  // F(cos) -> 1 as cos -> 0 for every metal and channel: within 2e-3 at cos = 1e-4, exactly 1 at 0,
+  // and F increases toward grazing over the last 5 degrees.
+  for (const MetalR0& m : kMetalR0) {
+    const NamedMetal* nm = find_named_metal(m.name);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(fresnel_conductor(0.0, nm->eta[c], nm->k[c]), 1.0, 1e-12);
+      EXPECT_NEAR(fresnel_conductor(1e-4, nm->eta[c], nm->k[c]), 1.0, 2e-3) << m.name << " " << c;
+      EXPECT_LT(fresnel_conductor(std::cos(85 * M_PI / 180), nm->eta[c], nm->k[c]),
+                fresnel_conductor(std::cos(89.9 * M_PI / 180), nm->eta[c], nm->k[c]));
+    }
+  }
+}
+
+TEST(Conductor, SmoothConductorIsADeltaMirrorWeightedByExactFresnel) {
+  Bsdf bsdf(metal("Cu", 0.0f));
+  EXPECT_TRUE(bsdf.is_delta());
+  const NamedMetal* nm = find_named_metal("Cu");
+  for (float t : {0.0f, 40.0f, 80.0f}) {
+    Vec3 wo = direction(t);
+    BsdfSample s;
+    ASSERT_TRUE(bsdf.sample(wo, 0.3f, 0.6f, 0.5f, &s));
+    EXPECT_TRUE(s.delta);
+    EXPECT_FLOAT_EQ(s.wi.z, wo.z);
+    EXPECT_FLOAT_EQ(s.wi.x, -wo.x);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.weight[c], fresnel_conductor(wo.z, nm->eta[c], nm->k[c]), 1e-6);
+    EXPECT_EQ(bsdf.eval(wo, s.wi).x, 0.0f);
+  }
+}
+
+TEST(Conductor, RoughConductorIsReciprocal) {
+  // f(wo, wi) = f(wi, wo) within 1e-4 relative, with and without energy compensation.
+  Rng rng(77);
+  for (const char* name : {"Au", "Al"})
+    for (float r : {0.2f, 0.5f, 0.9f})
+      for (bool comp : {false, true}) {
+        Material m = metal(name, r);
+        m.energy_compensation = comp;
+        Bsdf bsdf(m);
+        int nonzero = 0;
+        for (int i = 0; i < 5000; ++i) {
+          Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
+          wo.z = std::abs(wo.z), wi.z = std::abs(wi.z);
+          Vec3 a = bsdf.eval(wo, wi), b = bsdf.eval(wi, wo);
+          for (int c = 0; c < 3; ++c) {
+            if (a[c] < 1e-12f && b[c] < 1e-12f) continue;
+            ++nonzero;
+            ASSERT_LE(rel_diff(a[c], b[c]), 1e-4) << name << " r " << r << " channel " << c;
+          }
+        }
+        EXPECT_GT(nonzero, 1000);
+      }
+}
+
+TEST(Conductor, PerfectConductorFurnaceStaysWithinTheGlossyBounds) {
+  // A conductor with k = 1e4 has F = 1 to 2e-4 at every angle (R0 = 1 - 4 eta / ((eta+1)^2 + k^2)).
+  // Same bounds as GlossyGgxNeverCreatesEnergy: mean weight <= 1 + 3 sigma (+ 3e-3 with
+  // compensation); and, with compensation, no more than 3 % lost as in test_energy_compensation.cpp (E_ss alone loses up to 60 %).
+  EXPECT_GT(fresnel_conductor(0.05, 1.0, 1e4), 1.0 - 2e-4);
+  for (bool comp : {false, true})
+    for (float r : {0.05f, 0.2f, 0.5f, 0.9f, 1.0f})
+      for (float t : {0.0f, 45.0f, 70.0f, 85.0f}) {
+        Material m = conductor(r, Vec3(1.0f), Vec3(1e4f));
+        m.energy_compensation = comp;
+        Estimate e = mean_weight(Bsdf(m), direction(t), 11, 50000);
+        EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma + (comp ? 3e-3 : 0.0)) << "roughness " << r << " theta " << t;
+        if (comp) {
+          EXPECT_GT(e.mean, 0.97 - 3.0 * e.sigma) << "roughness " << r << " theta " << t;
+        }
+      }
+}
+
+TEST(Conductor, PerfectConductorMatchesWhiteSchlickGlossy) {
+  // F = 1 both ways: the rough conductor's eval equals the white GGX glossy's within 1e-3 relative.
+  Rng rng(5);
+  Bsdf c(conductor(0.5f, Vec3(1.0f), Vec3(1e4f))), g(ggx(0.5f, Vec3(1.0f)));
+  for (int i = 0; i < 2000; ++i) {
+    Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
+    wo.z = std::abs(wo.z), wi.z = std::abs(wi.z);
+    float a = c.eval(wo, wi).x, b = g.eval(wo, wi).x;
+    if (a < 1e-12f && b < 1e-12f) continue;
+    ASSERT_LE(rel_diff(a, b), 1e-3);
+  }
+}
+
+TEST(Conductor, DeltaOnlyAtRoughnessZero) {
+  EXPECT_TRUE(Bsdf(metal("Ag", 0.0f)).is_delta());
+  EXPECT_FALSE(Bsdf(metal("Ag", 0.3f)).is_delta());
+  EXPECT_TRUE(Bsdf(metal("Ag", 0.3f)).scatters());
 }
 
 }  // namespace

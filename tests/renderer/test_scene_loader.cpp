@@ -617,6 +617,84 @@ TEST_F(SceneLoader, EnergyCompensationRefusedOnPhongAndDiffuse) {
   EXPECT_ERROR(diffuse, "energy_compensation");
 }
 
+TEST_F(SceneLoader, ConductorFromNamedMetalOrEtaAndK) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {
+    "au": {"type": "conductor", "metal": "Au"},
+    "cu": {"type": "conductor", "metal": "Cu", "roughness": 0.3, "energy_compensation": false},
+    "own": {"type": "conductor", "eta": [0.2, 0.9, 1.1], "k": [3.9, 2.4, 0]}
+  }
+})"));
+  ASSERT_EQ(s.materials.size(), 3u);
+  const Material& au = s.materials[0];
+  EXPECT_EQ(au.type, MaterialType::Conductor);
+  EXPECT_FLOAT_EQ(au.roughness, 0);
+  EXPECT_TRUE(au.energy_compensation);
+  expect_vec(au.eta, find_named_metal("Au")->eta.x, find_named_metal("Au")->eta.y, find_named_metal("Au")->eta.z);
+  expect_vec(au.k, find_named_metal("Au")->k.x, find_named_metal("Au")->k.y, find_named_metal("Au")->k.z);
+  EXPECT_FLOAT_EQ(s.materials[1].roughness, 0.3f);
+  EXPECT_FALSE(s.materials[1].energy_compensation);
+  expect_vec(s.materials[2].eta, 0.2f, 0.9f, 1.1f);
+  expect_vec(s.materials[2].k, 3.9f, 2.4f, 0);
+  for (const char* name : {"Au", "Ag", "Cu", "Al"}) EXPECT_NE(find_named_metal(name), nullptr) << name;
+}
+
+TEST_F(SceneLoader, ConductorUnknownMetalListsTheKnownOnes) {
+  fs::path f = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "metal": "Pt"}
+  }
+})");
+  EXPECT_ERROR(f, "s.json:5:41: materials.m.metal must be one of \"Ag\", \"Al\", \"Au\", \"Cu\", got \"Pt\"");
+}
+
+TEST_F(SceneLoader, ConductorMetalExcludesEtaAndK) {
+  fs::path f = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "metal": "Au", "k": [1, 1, 1]}
+  }
+})");
+  EXPECT_ERROR(f, "s.json:5:47: materials.m.k cannot be combined with metal");
+}
+
+TEST_F(SceneLoader, ConductorNeedsMetalOrBothEtaAndK) {
+  fs::path none = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "roughness": 0.2}
+  }
+})");
+  EXPECT_ERROR(none, "materials.m needs metal (one of \"Ag\", \"Al\", \"Au\", \"Cu\") or eta and k");
+  fs::path no_k = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "eta": [1, 1, 1]}
+  }
+})");
+  EXPECT_ERROR(no_k, "s.json:5:10: materials.m");
+  EXPECT_ERROR(no_k, "\"k\"");
+}
+
+TEST_F(SceneLoader, ConductorEtaAndKRanges) {
+  auto with = [&](const std::string& eta, const std::string& k) {
+    return scene(kHead + "  \"materials\": {\n    \"m\": {\"type\": \"conductor\", \"eta\": " + eta + ", \"k\": " + k +
+                 "}\n  }\n}\n");
+  };
+  EXPECT_ERROR(with("[1, 0, 1]", "[1, 1, 1]"), "s.json:5:39: materials.m.eta must have finite components > 0");
+  EXPECT_ERROR(with("[1, -1, 1]", "[1, 1, 1]"), "materials.m.eta must have finite components > 0");
+  EXPECT_ERROR(with("[1, 1e39, 1]", "[1, 1, 1]"), "is too large for a float");
+  EXPECT_ERROR(with("[1, 1, 1]", "[1, -0.5, 1]"), "s.json:5:55: materials.m.k must have finite components >= 0");
+  EXPECT_ERROR(with("[1, 1, 1]", "[1, 1]"), "materials.m.k must be an array of 3 numbers");
+  EXPECT_ERROR(with("[1, 1, 1]", "[1, 1, 1e39]"), "is too large for a float");
+}
+
+TEST_F(SceneLoader, ConductorRejectsAlbedoAndBadRoughness) {
+  fs::path albedo = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "metal": "Al", "albedo": [1, 1, 1]}
+  }
+})");
+  EXPECT_ERROR(albedo, "materials.m");
+  EXPECT_ERROR(albedo, "albedo");
+  fs::path rough = scene(kHead + R"(  "materials": {
+    "m": {"type": "conductor", "metal": "Al", "roughness": 1.5}
+  }
+})");
+  EXPECT_ERROR(rough, "materials.m.roughness must be");
+}
+
 TEST_F(SceneLoader, AlbedoOutOfRange) {
   fs::path f = scene(kHead + R"(  "materials": {"hot": {"type": "diffuse", "albedo": [1.2, 0, 0]}}
 })");

@@ -1,17 +1,14 @@
 // Elementary-interval checks by counting: one occupancy bitmap per interval shape.
 #include "sampling/analysis/elementary_intervals.h"
 
+#include "sampling/core/fixed_point.h"
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
 
 namespace pdrt {
 namespace {
-
-uint32_t fixed(double x) {
-  const double v = std::floor(x * 4294967296.0);
-  return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
-}
 
 // Interval index of shape (i, m - i): the top i bits of x, then the top m - i bits of y.
 uint64_t interval(uint32_t x, uint32_t y, int i, int m) {
@@ -30,7 +27,7 @@ bool is_02_net(const PointSet& ps, std::size_t first, std::size_t n) {
     std::fill(seen.begin(), seen.end(), 0);
     for (std::size_t k = first; k < first + n; ++k) {
       auto q = ps.point(k);
-      uint8_t& s = seen[interval(fixed(q[0]), fixed(q[1]), i, m)];
+      uint8_t& s = seen[interval(to_fixed(q[0]), to_fixed(q[1]), i, m)];
       if (s) return false;  // n points in n intervals: a repeat means an empty interval too
       s = 1;
     }
@@ -57,13 +54,13 @@ std::size_t stratum_breaks(const PointSet& ps) {
       seen.assign(L + 1, std::vector<uint8_t>(std::size_t(1) << L, 0));
       for (std::size_t j = 0; j < k; ++j) {
         auto q = ps.point(j);
-        for (int i = 0; i <= L; ++i) seen[i][interval(fixed(q[0]), fixed(q[1]), i, L)] = 1;
+        for (int i = 0; i <= L; ++i) seen[i][interval(to_fixed(q[0]), to_fixed(q[1]), i, L)] = 1;
       }
     }
     auto q = ps.point(k);
     bool broke = false;
     for (int i = 0; i <= L; ++i) {
-      uint8_t& s = seen[i][interval(fixed(q[0]), fixed(q[1]), i, L)];
+      uint8_t& s = seen[i][interval(to_fixed(q[0]), to_fixed(q[1]), i, L)];
       broke |= s != 0;
       s = 1;
     }

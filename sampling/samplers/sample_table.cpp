@@ -4,6 +4,7 @@
 #include "sampling/core/atomic_file.h"
 #include "sampling/generators/balanced_relaxation_1d.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/fixed_point.h"
 #include "sampling/core/hash.h"
 #include "sampling/core/input_file.h"
 #include "sampling/generators/generator.h"
@@ -27,11 +28,6 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'D', 'R', 'T', 'T', 'B', 'L', '1'};
 constexpr std::size_t kParamName = 16;  // a construction parameter's name field, NUL padded
-
-uint32_t to_fixed(double x) {
-  double v = std::floor(x * 4294967296.0);
-  return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
-}
 
 PointSet draw_table(const TableParams& p, int dim, int64_t count, uint64_t seed) {
   switch (p.construction) {

@@ -8,6 +8,7 @@ PACKAGES=(
   libembree-dev embree-tools
   libopenimageio-dev openimageio-tools
   libtinyobjloader-dev
+  libassimp-dev
   libtbb-dev
   libfftw3-dev
   nlohmann-json3-dev

@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 using namespace pdrt;
 using namespace pdrt::test;
@@ -309,3 +312,71 @@ TEST(PbrtImport, RendersTheImageOfItsJsonEquivalent) {
   EXPECT_GT(sum, 0);
   EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
 }
+
+namespace {
+
+std::filesystem::path ply_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("pdrt_ply_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void write_file(const std::filesystem::path& f, const std::string& bytes) { std::ofstream(f, std::ios::binary) << bytes; }
+
+// A unit quad (one face of 4 vertices) with normals and uv, in ASCII.
+const char* kAsciiQuad =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "property float nx\nproperty float ny\nproperty float nz\nproperty float u\nproperty float v\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n0 1 0 0 0 1 0 1\n4 0 1 2 3\n";
+
+std::string binary_triangles(int n_tri, bool truncate) {
+  std::string h = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(3 * n_tri) +
+                  "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(n_tri) +
+                  "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string b;
+  auto put = [&](const void* p, size_t n) { b.append(static_cast<const char*>(p), n); };
+  for (int t = 0; t < n_tri; ++t) {
+    float v[9] = {float(t), 0, 0, float(t) + 1, 0, 0, float(t), 1, 0};
+    put(v, sizeof v);
+  }
+  for (int t = 0; t < n_tri; ++t) {
+    unsigned char three = 3;
+    int idx[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+    put(&three, 1);
+    put(idx, sizeof idx);
+  }
+  if (truncate) b.resize(b.size() - 7);
+  return h + b;
+}
+
+}  // namespace
+
+TEST(PbrtImport, PlyMeshesLoadAsciiAndBinaryWithQuadsAndNormals) {
+  const std::filesystem::path dir = ply_dir();
+  write_file(dir / "quad.ply", kAsciiQuad);
+  write_file(dir / "tris.ply", binary_triangles(5, false));
+  write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"quad.ply\"\n"
+                                                    "Translate 0 0 1\nShape \"plymesh\" \"string filename\" \"tris.ply\"\n");
+  PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
+  ASSERT_EQ(im.scene.shapes.size(), 2u);
+  const MeshData& q = im.scene.shapes[0].mesh;
+  EXPECT_EQ(q.positions.size(), 4u);
+  EXPECT_EQ(q.indices.size(), 6u);  // the quad, triangulated
+  ASSERT_EQ(q.normals.size(), 4u);
+  expect_near(q.normals[2], {0, 0, 1}, 0, "normal");
+  // Each triangle winds counter-clockwise about the normals' side (+z).
+  for (size_t i = 0; i < q.indices.size(); i += 3) {
+    const Vec3 ng = cross(q.positions[q.indices[i + 1]] - q.positions[q.indices[i]], q.positions[q.indices[i + 2]] - q.positions[q.indices[i]]);
+    EXPECT_GT(ng.z, 0);
+  }
+  const MeshData& t = im.scene.shapes[1].mesh;
+  EXPECT_EQ(t.positions.size(), 15u);
+  EXPECT_EQ(t.indices.size(), 15u);
+  expect_near(t.positions[4], {2, 0, 0}, 0, "binary vertex 4");
+  expect_near(im.scene.shapes[1].transform.point(t.positions[4]), {2, 0, 1}, 0, "placed");
+  std::filesystem::remove_all(dir);
+}
+

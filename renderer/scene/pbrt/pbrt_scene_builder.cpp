@@ -2,6 +2,7 @@
 
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
+#include "renderer/scene/pbrt/ply_mesh.h"
 #include "sampling/core/errors.h"
 
 #include <algorithm>
@@ -698,9 +699,34 @@ class Builder {
       const double zmin = ps.get_float("zmin", -s.radius), zmax = ps.get_float("zmax", s.radius), phimax = ps.get_float("phimax", 360);
       if (zmin > -s.radius || zmax < s.radius || phimax < 360) note(d.at, "partial spheres are not supported (the whole sphere is used)");
       if (flip && cur_.area) note(d.at, "an inward-facing emitting sphere is not supported (it emits outward)");
-    } else if (t == "trianglemesh" || t == "loopsubdiv" || t == "bilinearmesh") {
-      std::vector<Vec3> P = ps.point3s("P");
-      std::vector<int64_t> idx = ps.ints("indices");
+    } else if (t == "trianglemesh" || t == "loopsubdiv" || t == "bilinearmesh" || t == "plymesh") {
+      std::vector<Vec3> P, N;
+      std::vector<int64_t> idx;
+      if (t == "plymesh") {
+        std::optional<std::string> name = ps.find_string("filename");
+        if (!name) fail(d.at, "Shape \"plymesh\" needs \"string filename\"");
+        const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+        const std::filesystem::path file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
+        PlyMesh ply;
+        try {
+          ply = load_ply(file, file.string());
+        } catch (const InputError& e) {
+          fail(ps.find("filename")->at, e.what());
+        }
+        if (ply.dropped_faces) note(ps.find("filename")->at, std::to_string(ply.dropped_faces) + " points or lines in the PLY file are not surfaces (skipped)");
+        P = std::move(ply.mesh.positions);
+        N = std::move(ply.mesh.normals);
+        idx.assign(ply.mesh.indices.begin(), ply.mesh.indices.end());
+        for (const char* k : {"displacement", "edgelength"})
+          if (const PbrtParam* p = ps.find(k)) {
+            p->used = true;
+            note(p->at, std::string("\"") + k + "\" is not supported (ignored)");
+          }
+      } else {
+        P = ps.point3s("P");
+        idx = ps.ints("indices");
+        N = ps.normal3s("N");
+      }
       if (P.empty()) fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
       if (t == "trianglemesh" && idx.empty()) {
         if (P.size() != 3) fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
@@ -726,12 +752,12 @@ class Builder {
         if (i < 0 || uint64_t(i) >= P.size())
           fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
       for (const Vec3& p : P)
-        if (!is_finite(p)) fail(ps.find("P")->at, "\"P\" holds a non-finite coordinate");
-      std::vector<Vec3> N = ps.normal3s("N");
+        if (!is_finite(p)) fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+      const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
       if (!N.empty() && N.size() != P.size())
-        fail(ps.find("N")->at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
+        fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
       for (Vec3& n : N)
-        if (!(length(n) > 0) || !is_finite(n)) fail(ps.find("N")->at, "\"N\" holds a zero or non-finite normal");
+        if (!(length(n) > 0) || !is_finite(n)) fail(n_at, "\"N\" holds a zero or non-finite normal");
       ps.point2s("uv");  // texture coordinates wait for textures
       if (const PbrtParam* p = ps.find("uv")) note(p->at, "texture coordinates are not used yet (ignored)");
       for (const char* k : {"S", "faceIndices"})
@@ -739,6 +765,7 @@ class Builder {
       s.mesh.positions = std::move(P);
       s.mesh.normals = std::move(N);
       s.mesh.indices.reserve(idx.size());
+      const bool swaps = cur_.ctm.t[0].det3() < 0;
       for (size_t i = 0; i < idx.size(); i += 3) {
         uint32_t a = uint32_t(idx[i]), b = uint32_t(idx[i + 1]), c = uint32_t(idx[i + 2]);
         const Vec3 &pa = s.mesh.positions[a], &pb = s.mesh.positions[b], &pc = s.mesh.positions[c];
@@ -747,11 +774,7 @@ class Builder {
         // pbrt's geometric normal follows the shading normals when there are some, else the
         // winding, reversed by ReverseOrientation and by a handedness-swapping transform.
         bool swap = flip;
-        if (!s.mesh.normals.empty()) {
-          const Vec3 ns = s.mesh.normals[a] + s.mesh.normals[b] + s.mesh.normals[c];
-          swap = dot(ng, ns) < 0;
-          if (cur_.ctm.t[0].det3() < 0) swap = !swap;
-        }
+        if (!s.mesh.normals.empty()) swap = (dot(ng, s.mesh.normals[a] + s.mesh.normals[b] + s.mesh.normals[c]) < 0) != swaps;
         if (swap) std::swap(b, c);
         s.mesh.indices.insert(s.mesh.indices.end(), {a, b, c});
       }

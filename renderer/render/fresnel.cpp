@@ -35,8 +35,9 @@ double fresnel_dielectric_average(double eta) {
 
 double fresnel_dielectric_average_closed(double eta) {
   double n = std::max(1.0, eta);
-  // Near n = 1 the terms below cancel to ~1e-8 of 1; the average is (n - 1) / 3 to first order.
-  if (n - 1 < 1e-4) return (n - 1) / 3;
+  // Near n = 1 the terms below cancel (1e-8 lost at n - 1 = 3e-5), where the first order,
+  // (n - 1) / 3, is as close.
+  if (n - 1 < 3e-5) return (n - 1) / 3;
   // The integral of the unpolarised Fresnel reflectance against 2 mu dmu done analytically
   // (rational terms and logarithms in n: the standard closed form of a dielectric boundary's
   // diffuse reflectance). Checked against fresnel_dielectric_average in test_coated_diffuse.cpp.

@@ -8,6 +8,7 @@
 #include "sampling/core/rng.h"
 #include "tests/support/bsdf_chi_square.h"
 #include "tests/support/render_fixtures.h"
+#include "tests/support/sphere_quadrature.h"
 
 #include <gtest/gtest.h>
 
@@ -86,7 +87,8 @@ std::vector<FitCase> fit_cases() {
                    direction(45)});
   for (int r : {2, 5, 10})
     for (float t : {0.0f, 60.0f, 85.0f})
-      cases.push_back({"Rough_r0p" + std::to_string(r) + "_theta" + deg(t), coated(0.1f * r, Vec3(0.5f)), direction(t)});
+      cases.push_back({"Rough_r" + std::to_string(r / 10) + "p" + std::to_string(r % 10) + "_theta" + deg(t),
+                       coated(0.1f * r, Vec3(0.5f)), direction(t)});
   cases.push_back({"RoughAbsorbing_r0p3_theta70", coated(0.3f, Vec3(0.9f), 1.33f, Vec3(0.5f, 0.7f, 0.9f)), direction(70)});
   return cases;
 }
@@ -98,7 +100,7 @@ class CoatedSampleMatchesPdf : public ::testing::TestWithParam<FitCase> {};
 TEST_P(CoatedSampleMatchesPdf, ChiSquareAndTotalProbability) {
   const FitCase& c = GetParam();
   Bsdf bsdf(c.material);
-  const int64_t n = 300000;
+  const int64_t n = 500000;
   uint64_t seed = 4321;  // from the case name: the same on every standard library
   for (char ch : c.name) seed = hash_combine(seed, uint64_t(ch));
   FitResult r = chi_square_fit(bsdf, c.wo, seed, n);
@@ -281,7 +283,7 @@ TEST(CoatedDiffuse, BlackBaseReflectsTheCoatAlone) {
   for (float mu : {0.1f, 0.5f, 1.0f}) {
     Estimate s = sampled_albedo(Bsdf(coated(0, Vec3(0.0f))), wo_at(mu), 7, 1000);
     EXPECT_NEAR(s.mean[0], fresnel_dielectric(mu, 1.5), 1e-6) << "mu " << mu;
-    EXPECT_EQ(s.sigma[0], 0.0);
+    EXPECT_LT(s.sigma[0], 1e-6);  // every weight is F(mu_o), up to float rounding
     for (float r : {0.3f, 0.7f, 1.0f}) {
       Estimate e = sampled_albedo(Bsdf(coated(r, Vec3(0.0f))), wo_at(mu), 8, 200000);
       EXPECT_NEAR(e.mean[0], ggx_coat_albedo(mu, r * r, 1.5f), 3.0 * e.sigma[0] + 3e-3) << "roughness " << r << " mu " << mu;
@@ -332,9 +334,18 @@ TEST(CoatedDiffuse, BeerLambertAtNormalIncidence) {
 }
 
 TEST(CoatedDiffuse, ClosedFormFresnelAverageMatchesQuadrature) {
-  // fresnel_dielectric_average_closed against the 4096-point quadrature: 1e-6 absolute.
-  for (double eta : {1.0, 1.00005, 1.001, 1.01, 1.2, 1.33, 1.5, 2.0, 2.4, 3.0})
-    EXPECT_NEAR(fresnel_dielectric_average_closed(eta), fresnel_dielectric_average(eta), 1e-6) << "eta " << eta;
+  // fresnel_dielectric_average_closed against composite Simpson of 2 F(mu) mu dmu in mu (F is
+  // smooth in mu for eta > 1; 2e5 intervals resolve even eta = 1 + 1e-5): 2e-8 absolute, also
+  // where the closed form hands over to its first order near eta = 1.
+  for (double eta : {1.0, 1.00001, 1.00003, 1.0001, 1.001, 1.01, 1.2, 1.33, 1.5, 2.0, 2.4, 3.0}) {
+    const int n = 200000;
+    double s = 0;
+    for (int i = 0; i <= n; ++i) {
+      double mu = double(i) / n, w = i == 0 || i == n ? 1 : i % 2 ? 4 : 2;
+      s += w * 2 * fresnel_dielectric(mu, eta) * mu;
+    }
+    EXPECT_NEAR(fresnel_dielectric_average_closed(eta), s / (3.0 * n), 2e-8) << "eta " << eta;
+  }
 }
 
 // ---- A rendered white furnace.

@@ -19,7 +19,11 @@ Vec3 exp_neg(const Vec3& v) { return {std::exp(-v.x), std::exp(-v.y), std::exp(-
 }  // namespace
 
 CoatedDiffuse::CoatedDiffuse(const Material& m)
-    : smooth_(!(m.roughness > 0)), ior_(m.ior), alpha_(std::max(kMinGgxAlpha, m.roughness * m.roughness)) {
+    : smooth_(!(m.roughness > 0)),
+      // The loader refuses other indices; the coat table holds this range, and below 1 the
+      // coat would reflect totally from outside.
+      ior_(std::clamp(m.ior, 1.0f, ggx_tables::kEtaMax)),
+      alpha_(std::max(kMinGgxAlpha, m.roughness * m.roughness)) {
   static_assert(kNodes == ggx_tables::kDielMu, "e_row_ holds one row of the coat table");
   float e_avg;
   if (smooth_) {

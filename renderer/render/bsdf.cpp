@@ -84,6 +84,10 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
     case MaterialType::Mirror:
       kind_ = Kind::Mirror;
       break;
+    case MaterialType::CoatedDiffuse:
+      kind_ = Kind::Coated;
+      coated_ = CoatedDiffuse(m);
+      break;
     case MaterialType::Dielectric:
       // Index-matched: the interface is invisible, a pure pass-through (delta).
       kind_ = m.roughness > 0 && m.ior != 1.0f ? Kind::RoughDielectric : Kind::SmoothDielectric;
@@ -138,6 +142,8 @@ Vec3 Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
     }
     case Kind::RoughDielectric:
       return ms_ ? eval_rough_dielectric(wo, wi) + eval_ms(wo, wi) : eval_rough_dielectric(wo, wi);
+    case Kind::Coated:
+      return coated_.eval(wo, wi);
     default:
       return Vec3(0.0f);
   }
@@ -160,6 +166,8 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
       if (c <= 0) return 0.0f;
       return (exponent_ + 1.0f) * (0.5f * kInvPi) * std::pow(c, exponent_);
     }
+    case Kind::Coated:
+      return coated_.pdf(wo, wi);
     default:
       return 0.0f;
   }
@@ -211,6 +219,8 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
       return sample_smooth_dielectric(wo, uc, out);
     case Kind::RoughDielectric:
       return ms_ ? sample_compensated(wo, u1, u2, uc, out) : sample_rough_dielectric(wo, u1, u2, uc, out);
+    case Kind::Coated:
+      return coated_.sample(wo, u1, u2, uc, out);
     default:
       return false;
   }

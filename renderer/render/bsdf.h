@@ -13,6 +13,11 @@
 //   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
 //   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
 //               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
+//   CoatedDiffuse  Lambert base (albedo) under a smooth (delta) or GGX-rough dielectric coat,
+//               optionally absorbing (coated_diffuse.h): Weidlich & Wilkie 2007's layered
+//               model on the coat's albedo, energy conserving and reciprocal. A smooth coat is
+//               one delta lobe beside a non-delta one: is_delta() is false, eval() and pdf()
+//               give the non-delta part, sample() flags the delta reflection.
 // Energy compensation (Material::energy_compensation, on by default): single-scattering GGX
 // loses the light that bounces more than once between microfacets (31 % kept at roughness 1).
 // A diffuse-like multiple-scattering lobe built on the albedo tables of ggx_albedo.h returns it:
@@ -22,6 +27,7 @@
 //               split into reflection and transmission so that every side conserves energy and
 //               the BTDF stays reciprocal (see bsdf.cpp, Bsdf::Bsdf).
 // The lobe is sampled as a cosine lobe, chosen with a probability from the lobes' albedos.
+#include "renderer/render/coated_diffuse.h"
 #include "renderer/scene/material.h"
 #include "renderer/scene/vec3.h"
 
@@ -51,7 +57,7 @@ class Bsdf {
   Vec3 albedo() const;    // for the albedo AOV
 
  private:
-  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric };
+  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric, Coated };
 
   Vec3 fresnel_ggx(float cos_i) const;  // Schlick with F0 = albedo, or the exact conductor Fresnel
   Vec3 eval_ggx(const Vec3& wo, const Vec3& wi) const;
@@ -85,6 +91,7 @@ class Bsdf {
   float e_row_[2][kMsNodes] = {};
   int e_nodes_ = kMsNodes;
   float reflect_[2] = {1, 1};  // dielectric: reflected fraction of the compensation lobe per side
+  CoatedDiffuse coated_;       // Kind::Coated
 };
 
 // Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.

@@ -19,6 +19,10 @@ double fresnel_dielectric(double cos_i, double eta);
 
 // Hemispherical cosine-weighted average 2 int_0^1 F(mu, eta) mu dmu of fresnel_dielectric.
 double fresnel_dielectric_average(double eta);
+// The same in closed form, for eta >= 1 (seen from the less dense side): a few logarithms
+// instead of a quadrature, so cheap enough for a per-hit BSDF. From inside, by the reciprocity
+// of transmission: 1 - F_avg(1 / eta) = (1 - F_avg(eta)) / eta^2.
+double fresnel_dielectric_average_closed(double eta);
 
 // Exact unpolarised Fresnel reflectance of a conductor (or any absorbing medium) with complex
 // relative index eta + i k, for cos_i > 0 on the incident side (the side of index 1). The s and p

@@ -58,6 +58,21 @@ float ggx_dielectric_albedo(float mu, float alpha, float eta) {
   return mix(plane(e.k.i), plane(e.k.i + 1), e.k.t);
 }
 
+float ggx_coat_albedo(float mu, float alpha, float eta) {
+  Lerp k = eta_at(std::max(1.0f, eta)).k;
+  Lerp r = lerp_at(std::sqrt(alpha), kDielRough), m = lerp_at(mu, kDielMu);
+  auto at = [&](int kk, int j) { return mix(kCoatAlbedo[kk][j][m.i], kCoatAlbedo[kk][j][m.i + 1], m.t); };
+  auto plane = [&](int kk) { return mix(at(kk, r.i), at(kk, r.i + 1), r.t); };
+  return mix(plane(k.i), plane(k.i + 1), k.t);
+}
+
+float ggx_coat_albedo_average(float alpha, float eta) {
+  Lerp k = eta_at(std::max(1.0f, eta)).k;
+  Lerp r = lerp_at(std::sqrt(alpha), kDielRough);
+  auto plane = [&](int kk) { return mix(kCoatAverage[kk][r.i], kCoatAverage[kk][r.i + 1], r.t); };
+  return mix(plane(k.i), plane(k.i + 1), k.t);
+}
+
 int ggx_albedo_nodes(bool dielectric) { return dielectric ? kDielMu : kMu; }
 
 float ggx_dielectric_albedo_average(float alpha, float eta) {

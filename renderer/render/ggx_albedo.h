@@ -16,7 +16,12 @@ float ggx_conductor_albedo_average(float alpha);
 float ggx_dielectric_albedo(float mu, float alpha, float eta);
 float ggx_dielectric_albedo_average(float alpha, float eta);
 
-// Number of mu nodes of the conductor (false) or dielectric (true) tables: between them the
+// Reflection alone of the rough dielectric seen from outside, eta = ior >= 1 (clamped to the
+// grid, [1, 3]): the albedo of the coat of coated_diffuse, white, exact Fresnel at wo.m.
+float ggx_coat_albedo(float mu, float alpha, float eta);
+float ggx_coat_albedo_average(float alpha, float eta);
+
+// Number of mu nodes of the conductor (false) or dielectric and coat (true) tables: between them the
 // lookups are linear in mu.
 int ggx_albedo_nodes(bool dielectric);
 

@@ -28,5 +28,9 @@ extern const float kConductorAverage[kRough];
 // 1 / eta^2 radiance scaling), white.
 extern const float kDielectricAlbedo[2][kEta][kDielRough][kDielMu];
 extern const float kDielectricAverage[2][kEta][kDielRough];
+// The rough dielectric's reflection alone, from outside (eta >= 1, side 0's grid), white: the
+// coat of coated_diffuse.
+extern const float kCoatAlbedo[kEta][kDielRough][kDielMu];
+extern const float kCoatAverage[kEta][kDielRough];
 
 }  // namespace pdrt::ggx_tables

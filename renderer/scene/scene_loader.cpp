@@ -227,7 +227,8 @@ void SceneParser::materials(const JsonNode& n) {
     JsonObject o = mn.object();
     Material m;
     m.name = it.key();
-    std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor"});
+    std::string type =
+        o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor", "coated_diffuse"});
     if (type == "diffuse") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Diffuse;
@@ -290,6 +291,18 @@ void SceneParser::materials(const JsonNode& n) {
       }
       if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
+    } else if (type == "coated_diffuse") {
+      o.allow({"type", "albedo", "roughness", "ior", "coat_color", "coat_thickness"});
+      m.type = MaterialType::CoatedDiffuse;
+      m.albedo = Vec3(0.5f);
+      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("ior")) {
+        // The coat's albedo tables hold indices 1 to 3 (ggx_albedo_tables.h); 1 is no coat.
+        m.ior = x->number();
+        if (!(m.ior >= 1 && m.ior <= 3)) x->fail_got("must be in [1,3] (the coat's index relative to the outside)");
+      }
+      if (auto x = o.get("coat_color")) m.coat_color = x->color();
+      if (auto x = o.get("coat_thickness")) m.coat_thickness = x->non_negative();
     } else {
       o.allow({"type", "radiance", "two_sided"});
       m.type = MaterialType::Emitter;
@@ -599,7 +612,8 @@ void SceneParser::delta_light(const JsonNode& ln, const JsonObject& o, const std
 bool same_material(const Material& a, const Material& b) {
   return a.name == b.name && a.type == b.type && is_black(a.albedo - b.albedo) && a.lobe == b.lobe &&
          a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior &&
-         is_black(a.eta - b.eta) && is_black(a.k - b.k) &&
+         is_black(a.eta - b.eta) && is_black(a.k - b.k) && is_black(a.coat_color - b.coat_color) &&
+         a.coat_thickness == b.coat_thickness &&
          is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided &&
          a.energy_compensation == b.energy_compensation;
 }

@@ -46,17 +46,22 @@ double conductor_albedo(float mu, float alpha, int n) {
 }
 
 // White rough dielectric, wo on the upper side, eta = transmitted over incident: both the
-// reflection (weight F) and the refraction (weight 1 - F) of each sampled normal, as energy.
-double dielectric_albedo(float mu, float alpha, float eta, int n) {
+// reflection (weight F) and the refraction (weight 1 - F) of each sampled normal, as energy;
+// `reflected` gets the reflection alone (the coat of coated_diffuse).
+double dielectric_albedo(float mu, float alpha, float eta, int n, double* reflected = nullptr) {
   MicrofacetGgx ggx(alpha);
   Vec3 wo = wo_at(mu);
-  return visible_normal_mean(ggx, wo, n, [&](Vec3 m, float c) {
+  double r_sum = 0;
+  double total = visible_normal_mean(ggx, wo, n, [&](Vec3 m, float c) {
     double f = fresnel_dielectric(c, eta), e = 0;
     Vec3 wr = normalize(reflect(wo, m)), wt;
     if (wr.z > 0) e += f * (ggx.g2(wo, wr) / ggx.g1(wo));
+    r_sum += e;
     if (f < 1 && refract(wo, m, eta, &wt) && (wt = normalize(wt)).z < 0) e += (1 - f) * (ggx.g2(wo, wt) / ggx.g1(wo));
     return e;
   });
+  if (reflected) *reflected = r_sum / (double(n) * n);
+  return total;
 }
 
 // 2 int_0^1 E(mu) mu dmu of the linear interpolant through (node_i, e_i), exactly; the first
@@ -89,6 +94,7 @@ int main(int argc, char** argv) {
   }
   static float ce[kRough][kMu], ca[kRough];
   static float de[2][kEta][kDielRough][kDielMu], da[2][kEta][kDielRough];
+  static float re[kEta][kDielRough][kDielMu], ra[kEta][kDielRough];
   for (int j = 0; j < kRough; ++j) {
     for (int i = 0; i < kMu; ++i)
       ce[j][i] = float(conductor_albedo(mu_node(i, kMu), alpha_at(rough_node(j, kRough)), 64));
@@ -98,9 +104,13 @@ int main(int argc, char** argv) {
     for (int k = 0; k < kEta; ++k) {
       float eta = side == 0 ? eta_node(k) : 1.0f / eta_node(k);
       for (int j = 0; j < kDielRough; ++j) {
-        for (int i = 0; i < kDielMu; ++i)
-          de[side][k][j][i] = float(dielectric_albedo(mu_node(i, kDielMu), alpha_at(rough_node(j, kDielRough)), eta, 40));
+        for (int i = 0; i < kDielMu; ++i) {
+          double r = 0;
+          de[side][k][j][i] = float(dielectric_albedo(mu_node(i, kDielMu), alpha_at(rough_node(j, kDielRough)), eta, 40, &r));
+          if (side == 0) re[k][j][i] = float(r);
+        }
         da[side][k][j] = float(cosine_average(de[side][k][j], kDielMu));
+        if (side == 0) ra[k][j] = float(cosine_average(re[k][j], kDielMu));
       }
     }
 
@@ -127,6 +137,14 @@ int main(int argc, char** argv) {
     for (int k = 0; k < kEta; ++k) out += "  ", print_row(out, da[side][k], kDielRough), out += ",\n";
     out += " },\n";
   }
+  out += "};\n\nconst float kCoatAlbedo[kEta][kDielRough][kDielMu] = {\n";
+  for (int k = 0; k < kEta; ++k) {
+    out += " {\n";
+    for (int j = 0; j < kDielRough; ++j) out += "  ", print_row(out, re[k][j], kDielMu), out += ",\n";
+    out += " },\n";
+  }
+  out += "};\n\nconst float kCoatAverage[kEta][kDielRough] = {\n";
+  for (int k = 0; k < kEta; ++k) out += " ", print_row(out, ra[k], kDielRough), out += ",\n";
   out += "};\n\n}  // namespace pdrt::ggx_tables\n";
 
   // Written beside the target and renamed, so that an interrupted run leaves no partial source.

@@ -47,17 +47,33 @@ TEST(GgxAlbedo, DielectricTableMatchesBruteForceFromBothSides) {
   }
 }
 
+// The coat of coated_diffuse: the rough dielectric's reflection alone, from outside. A black
+// base leaves only the coat lobe in eval().
+TEST(GgxAlbedo, CoatTableMatchesBruteForce) {
+  struct P { float mu, roughness, ior; };
+  for (P p : {P{1.0f, 0.8f, 1.5f}, P{0.5f, 0.5f, 1.5f}, P{0.2f, 0.3f, 1.33f}, P{0.1f, 0.7f, 2.4f}, P{0.7f, 1.0f, 3.0f}}) {
+    Material m;
+    m.type = MaterialType::CoatedDiffuse;
+    m.roughness = p.roughness, m.ior = p.ior, m.albedo = Vec3(0.0f);
+    double ref = test::energy_albedo(Bsdf(m), wo_at(p.mu));
+    EXPECT_NEAR(ggx_coat_albedo(p.mu, p.roughness * p.roughness, p.ior), ref, 3e-3)
+        << "mu " << p.mu << " roughness " << p.roughness << " ior " << p.ior;
+  }
+}
+
 // The average is 2 int E mu dmu of the same interpolated E the lookup returns.
 TEST(GgxAlbedo, AverageIsTheCosineWeightedMeanOfTheLookup) {
   for (float r : {0.3f, 0.7f, 1.0f}) {
     const int n = 20000;
-    double c = 0, d = 0;
+    double c = 0, d = 0, e = 0;
     for (int i = 0; i < n; ++i) {
       float mu = (i + 0.5f) / n;
       c += ggx_conductor_albedo(mu, r * r) * mu, d += ggx_dielectric_albedo(mu, r * r, 1 / 1.5f) * mu;
+      e += ggx_coat_albedo(mu, r * r, 1.7f) * mu;
     }
     EXPECT_NEAR(ggx_conductor_albedo_average(r * r), 2 * c / n, 1e-5) << "roughness " << r;
     EXPECT_NEAR(ggx_dielectric_albedo_average(r * r, 1 / 1.5f), 2 * d / n, 1e-5) << "roughness " << r;
+    EXPECT_NEAR(ggx_coat_albedo_average(r * r, 1.7f), 2 * e / n, 1e-5) << "roughness " << r;
   }
 }
 

@@ -695,6 +695,65 @@ TEST_F(SceneLoader, ConductorRejectsAlbedoAndBadRoughness) {
   EXPECT_ERROR(rough, "materials.m.roughness must be");
 }
 
+TEST_F(SceneLoader, CoatedDiffuseDefaultsAndEveryKey) {
+  SceneDesc s = load_scene(scene(kHead + R"(  "materials": {
+    "plain": {"type": "coated_diffuse"},
+    "paint": {"type": "coated_diffuse", "albedo": [0.8, 0.1, 0.1], "roughness": 0.3, "ior": 1.33,
+              "coat_color": [0.9, 0.8, 0.5], "coat_thickness": 2.5},
+    "bare": {"type": "coated_diffuse", "ior": 1, "coat_thickness": 0}
+  }
+})"));
+  ASSERT_EQ(s.materials.size(), 3u);
+  auto find = [&](const std::string& name) -> const Material& {
+    for (const Material& m : s.materials)
+      if (m.name == name) return m;
+    ADD_FAILURE() << "no material " << name;
+    return s.materials.at(0);
+  };
+  const Material& plain = find("plain");
+  EXPECT_EQ(plain.type, MaterialType::CoatedDiffuse);
+  expect_vec(plain.albedo, 0.5f, 0.5f, 0.5f);
+  EXPECT_FLOAT_EQ(plain.roughness, 0);
+  EXPECT_FLOAT_EQ(plain.ior, 1.5f);
+  expect_vec(plain.coat_color, 1, 1, 1);
+  EXPECT_FLOAT_EQ(plain.coat_thickness, 1);
+  const Material& paint = find("paint");
+  EXPECT_EQ(paint.type, MaterialType::CoatedDiffuse);
+  expect_vec(paint.albedo, 0.8f, 0.1f, 0.1f);
+  EXPECT_FLOAT_EQ(paint.roughness, 0.3f);
+  EXPECT_FLOAT_EQ(paint.ior, 1.33f);
+  expect_vec(paint.coat_color, 0.9f, 0.8f, 0.5f);
+  EXPECT_FLOAT_EQ(paint.coat_thickness, 2.5f);
+  EXPECT_FLOAT_EQ(find("bare").ior, 1);
+  EXPECT_FLOAT_EQ(find("bare").coat_thickness, 0);
+}
+
+TEST_F(SceneLoader, CoatedDiffuseRefusesBadValuesByName) {
+  // Every material is on line 5: `    "m": {"type": "coated_diffuse", <keys>}`.
+  auto with = [&](const std::string& keys) {
+    return scene(kHead + "  \"materials\": {\n    \"m\": {\"type\": \"coated_diffuse\", " + keys + "}\n  }\n}\n");
+  };
+  EXPECT_ERROR(with(R"("ior": 0.5)"), "s.json:5:44: materials.m.ior must be in [1,3] (the coat's index relative to the outside), got 0.5");
+  EXPECT_ERROR(with(R"("ior": 3.5)"), "s.json:5:44: materials.m.ior must be in [1,3]");
+  EXPECT_ERROR(with(R"("ior": "glass")"), "s.json:5:44: materials.m.ior must be a number, got \"glass\"");
+  EXPECT_ERROR(with(R"("coat_color": [1.2, 0, 0])"), "s.json:5:51: materials.m.coat_color must have components in [0,1], got [1.2,0,0]");
+  EXPECT_ERROR(with(R"("coat_color": 0.5)"), "materials.m.coat_color must be an array of 3 numbers");
+  EXPECT_ERROR(with(R"("coat_thickness": -1)"), "s.json:5:55: materials.m.coat_thickness must be >= 0, got -1");
+  EXPECT_ERROR(with(R"("coat_thickness": 1e39)"), "is too large for a float");
+  EXPECT_ERROR(with(R"("roughness": 1.5)"), "s.json:5:50: materials.m.roughness must be in [0,1], got 1.5");
+  EXPECT_ERROR(with(R"("albedo": [0.5, 0.5, -0.1])"), "materials.m.albedo must have components in [0,1]");
+}
+
+TEST_F(SceneLoader, CoatedDiffuseRefusesOtherMaterialsKeys) {
+  auto with = [&](const std::string& keys) {
+    return scene(kHead + "  \"materials\": {\n    \"m\": {\"type\": \"coated_diffuse\", " + keys + "}\n  }\n}\n");
+  };
+  EXPECT_ERROR(with(R"("energy_compensation": true)"), "s.json:5:37: materials.m.energy_compensation unknown key");
+  EXPECT_ERROR(with(R"("eta": [1, 1, 1])"), "materials.m.eta unknown key");
+  EXPECT_ERROR(with(R"("thickness": 1)"),
+               "materials.m.thickness unknown key (expected one of: type, albedo, roughness, ior, coat_color, coat_thickness)");
+}
+
 TEST_F(SceneLoader, AlbedoOutOfRange) {
   fs::path f = scene(kHead + R"(  "materials": {"hot": {"type": "diffuse", "albedo": [1.2, 0, 0]}}
 })");

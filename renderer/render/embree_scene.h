@@ -10,6 +10,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <atomic>
 #include <vector>
 
@@ -24,6 +25,10 @@ struct SurfaceHit {
   int shape = -1;
   int prim = -1;
   bool front = true;  // the ray arrived from the side ng points to
+  // Texture coordinates (docs/scene-format.md, "Texture coordinates") and the world-space
+  // surface derivatives dp/du, dp/dv the texture footprint needs (texture_footprint.h).
+  float u = 0, v = 0;
+  Vec3 dpdu, dpdv;
   ErrorPoint point() const { return {p, p_error}; }
 };
 
@@ -68,8 +73,12 @@ class EmbreeScene {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::vector<uint32_t> indices;
+    std::vector<std::array<float, 2>> uvs;
     Vec3 center;
     float radius = 0;
+    Affine to_world;   // sphere: the shape's static transform (object to the stored space)
+    Affine to_object;  // its inverse: uv are measured in object space
+    float object_radius = 1;
     bool sphere = false;
     RTCScene child = nullptr;
     RTCGeometry instance = nullptr;

@@ -224,14 +224,43 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
   if (inst) m = transform(shape, ray.time), inv = m.inverse();
   ErrorPoint x;
   Vec3 ng, ns;
-  Vec3 dpdu, dpdv;
   if (s.sphere) {
     ng = ns = embree_ng;  // centre to hit, instance space
     const Vec3 near = ray.org + ray.dir * t;
     x = sphere_point(s.center, s.radius, inst ? inv.point(near) : near);
+  } else {
+    const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
+    const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
+    x = triangle_point(a, b, c, u, v);
+    ng = cross(b - a, c - a);  // counter-clockwise winding is the front face
+    if (!s.normals.empty()) {
+      ns = s.normals[tri[0]] * (1 - u - v) + s.normals[tri[1]] * u + s.normals[tri[2]] * v;
+    } else {
+      ns = ng;
+    }
+  }
+  hit->p_local = x.p;
+  if (inst) {
+    x = transform_point(m, x);
+    ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
+  }
+  hit->bary_u = u, hit->bary_v = v;
+  hit->p = x.p;
+  hit->p_error = x.error;
+  ng = normalize(ng), ns = normalize(ns);
+  if (!is_finite(ns) || dot(ns, ns) == 0) ns = ng;
+  hit->ng = ng;
+  hit->ns = dot(ns, ng) < 0 ? -ns : ns;
+  hit->front = dot(ray.dir, ng) < 0;
+}
+
+void EmbreeScene::texture_coords(SurfaceHit* hit, float time) const {
+  const Shape& s = shapes_[hit->shape];
+  Vec3 dpdu, dpdv;
+  if (s.sphere) {
     // Object space, +y the pole: u = azimuth / 2 pi from +x toward +z, v = polar angle from -y / pi
     // (v = 0 at -y, 1 at +y), as pbrt-v4's sphere with y in place of z.
-    Vec3 d = s.to_object.vector(x.p - s.center);
+    Vec3 d = s.to_object.vector(hit->p_local - s.center);
     const float len = length(d);
     d = len > 0 ? d / len : Vec3(0, 1, 0);
     float phi = std::atan2(d.z, d.x);
@@ -247,18 +276,12 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
   } else {
     const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
     const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
-    x = triangle_point(a, b, c, u, v);
-    ng = cross(b - a, c - a);  // counter-clockwise winding is the front face
-    if (!s.normals.empty()) {
-      ns = s.normals[tri[0]] * (1 - u - v) + s.normals[tri[1]] * u + s.normals[tri[2]] * v;
-    } else {
-      ns = ng;
-    }
+    const float b1 = hit->bary_u, b2 = hit->bary_v;
     // Without per-vertex uvs, the barycentrics: vertex 0 -> (0, 0), 1 -> (1, 0), 2 -> (0, 1).
     std::array<float, 2> t0{0, 0}, t1{1, 0}, t2{0, 1};
     if (!s.uvs.empty()) t0 = s.uvs[tri[0]], t1 = s.uvs[tri[1]], t2 = s.uvs[tri[2]];
-    hit->u = t0[0] * (1 - u - v) + t1[0] * u + t2[0] * v;
-    hit->v = t0[1] * (1 - u - v) + t1[1] * u + t2[1] * v;
+    hit->u = t0[0] * (1 - b1 - b2) + t1[0] * b1 + t2[0] * b2;
+    hit->v = t0[1] * (1 - b1 - b2) + t1[1] * b1 + t2[1] * b2;
     // pbrt-v4 §6.5.3: solve p_i - p_2 = (u_i - u_2) dp/du + (v_i - v_2) dp/dv.
     const float du02 = t0[0] - t2[0], dv02 = t0[1] - t2[1], du12 = t1[0] - t2[0], dv12 = t1[1] - t2[1];
     const Vec3 dp02 = a - c, dp12 = b - c;
@@ -269,21 +292,13 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
       dpdv = (dp12 * du02 - dp02 * du12) / det;
       ok = is_finite(dpdu) && is_finite(dpdv) && !is_black(cross(dpdu, dpdv));
     }
-    if (!ok) tangents(normalize(ng), &dpdu, &dpdv);
+    if (!ok) tangents(normalize(cross(b - a, c - a)), &dpdu, &dpdv);
   }
-  if (inst) {
-    x = transform_point(m, x);
-    ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
+  if (s.instance) {
+    const Affine m = transform(hit->shape, time);
     dpdu = m.vector(dpdu), dpdv = m.vector(dpdv);
   }
   hit->dpdu = dpdu, hit->dpdv = dpdv;
-  hit->p = x.p;
-  hit->p_error = x.error;
-  ng = normalize(ng), ns = normalize(ns);
-  if (!is_finite(ns) || dot(ns, ns) == 0) ns = ng;
-  hit->ng = ng;
-  hit->ns = dot(ns, ng) < 0 ? -ns : ns;
-  hit->front = dot(ray.dir, ng) < 0;
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

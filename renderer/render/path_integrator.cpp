@@ -66,7 +66,10 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     const int mi = scene_.desc().shapes[hit.shape].material;
     const Material& mat = scene_.desc().materials[mi];
     std::optional<Bsdf> textured;
-    if (!mat.textures.empty()) textured.emplace(textures_.apply(bare_[mi], mat.textures, footprint_.at(hit)));
+    if (!mat.textures.empty()) {
+      scene_.texture_coords(&hit, time);
+      textured.emplace(textures_.apply(bare_[mi], mat.textures, footprint_.at(hit)));
+    }
     const Bsdf& bsdf = textured ? *textured : bsdfs_[mi];
     const Vec3 wo_world = -ray.dir;
     if (depth == 0) {

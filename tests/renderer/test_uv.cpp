@@ -43,6 +43,7 @@ SurfaceHit shoot(const EmbreeScene& scene, Vec3 org, Vec3 to) {
   r.org = org, r.dir = normalize(to - org);
   SurfaceHit h;
   EXPECT_TRUE(scene.intersect(r, &h)) << org.x << " " << org.y << " " << org.z;
+  scene.texture_coords(&h, 0);
   return h;
 }
 

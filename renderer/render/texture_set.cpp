@@ -4,6 +4,7 @@
 #include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pdrt {
@@ -29,6 +30,17 @@ int to_abi(TextureWrap w) {
 }
 
 float unit(float x) { return x >= 0 ? (x <= 1 ? x : 1.0f) : 0.0f; }  // NaN -> 0
+
+// Brings a texture coordinate into one period of its wrap mode before OIIO converts it to an
+// integer texel index (1e30 or inf would overflow int there); NaN and inf become 0.
+float reduce(float x, TextureWrap w) {
+  if (!std::isfinite(x)) return 0;
+  switch (w) {
+    case TextureWrap::Repeat: return std::abs(x) < 1e6f ? x : x - std::floor(x);
+    case TextureWrap::Mirror: return std::abs(x) < 1e6f ? x : x - 2 * std::floor(x / 2);
+    default: return std::clamp(x, -1.0f, 2.0f);
+  }
+}
 
 }  // namespace
 
@@ -61,9 +73,10 @@ TextureSet::~TextureSet() {
 Vec3 TextureSet::lookup_image(const TextureDesc& t, int texture, const TextureCoords& tc) const {
   // Image rows run top to bottom, v bottom to top (OBJ, pbrt-v4): t = 1 - v.
   PdrtTextureLookup l;
-  l.s = tc.u * t.scale_u, l.t = 1 - tc.v * t.scale_v;
-  l.dsdx = tc.dudx * t.scale_u, l.dtdx = -tc.dvdx * t.scale_v;
-  l.dsdy = tc.dudy * t.scale_u, l.dtdy = -tc.dvdy * t.scale_v;
+  l.s = reduce(tc.u * t.scale_u, t.wrap), l.t = reduce(1 - tc.v * t.scale_v, t.wrap);
+  auto d = [](float x) { return std::isfinite(x) ? std::clamp(x, -1e8f, 1e8f) : 0.0f; };
+  l.dsdx = d(tc.dudx * t.scale_u), l.dtdx = d(-tc.dvdx * t.scale_v);
+  l.dsdy = d(tc.dudy * t.scale_u), l.dtdy = d(-tc.dvdy * t.scale_v);
   l.filter = to_abi(t.filter), l.wrap = to_abi(t.wrap);
   float rgb[3];
   image_module().texture_lookup(system_, handles_[size_t(texture)], &l, rgb);

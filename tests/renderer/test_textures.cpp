@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -134,6 +135,23 @@ TEST_F(Textures, PointSamplingHonoursEveryWrapModeExactly) {
       EXPECT_TRUE(same(ts.eval(2, at(u, v + 7)), texel(i, 0))) << "clamp " << i << "," << j;  // above the top row
       EXPECT_TRUE(same(ts.eval(3, at(u + 1.5f, v)), Vec3(0.0f))) << "black " << i << "," << j;
       EXPECT_TRUE(same(ts.eval(3, at(u, v - 2)), Vec3(0.0f))) << "black " << i << "," << j;
+    }
+}
+
+// Coordinates and footprints no scene should produce, but a user's "uvs" can (1e30, and
+// inf/NaN after scaling): every filter and wrap mode returns a finite texel value or black.
+TEST_F(Textures, ExtremeCoordinatesGiveFiniteValues) {
+  fs::path f = write_image(temp_dir() / "t.exr", "exr", kW, kH, texels(), false);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (TextureFilter filter : {TextureFilter::None, TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::Ewa})
+    for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::Mirror, TextureWrap::Clamp, TextureWrap::Black}) {
+      TextureSet ts(with_textures({image_texture(f, filter, wrap)}));
+      for (float x : {1e30f, -1e30f, 3e7f, inf, -inf, nan})
+        for (float d : {0.0f, 1e30f, nan}) {
+          const Vec3 a = ts.eval(0, at(x, 0.3f, d)), b = ts.eval(0, at(0.3f, x, d));
+          EXPECT_TRUE(is_finite(a) && is_finite(b)) << int(filter) << " " << int(wrap) << " " << x << " " << d;
+          EXPECT_LE(std::max(a.x, b.x), 1.0f);
+        }
     }
 }
 

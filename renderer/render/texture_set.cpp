@@ -61,8 +61,11 @@ TextureSet::TextureSet(const SceneDesc& desc) : textures_(desc.textures), handle
     open.encoding = t.encoding == TextureEncoding::Srgb ? PDRT_ENCODING_SRGB
                     : t.encoding == TextureEncoding::Linear ? PDRT_ENCODING_LINEAR
                                                             : PDRT_ENCODING_AUTO;
-    if (m.texture_open(system_, &open, &handles_[i], error, sizeof error))
+    if (m.texture_open(system_, &open, &handles_[i], error, sizeof error)) {
+      m.texture_system_destroy(system_);  // the destructor does not run for a throwing constructor
+      system_ = nullptr;
       throw InputError(t.where + ": cannot use " + path + " as a texture: " + error);
+    }
   }
 }
 

@@ -198,6 +198,16 @@ TEST_F(Textures, EightBitImagesAreDecodedFromSrgb) {
   EXPECT_NEAR(ts.eval(3, at(0.5f, 0.5f, 0.8f)).x, decoded, 2e-4);
 }
 
+// Decoding comes before filtering: the coarsest MIP level of black and white 8-bit texels is
+// the mean of their linear values, 0.5 (filtering the codes first would give 128 -> 0.216).
+TEST_F(Textures, SrgbIsDecodedBeforeMipFiltering) {
+  std::vector<float> px = {0, 0, 0, 1, 1, 1, 0, 0, 0, 1, 1, 1};
+  fs::path f = write_image(temp_dir() / "bw.png", "png", 2, 2, px, true);
+  TextureSet ts(with_textures({image_texture(f, TextureFilter::Trilinear)}));
+  EXPECT_NEAR(ts.eval(0, at(0.5f, 0.5f, 20.0f)).x, 0.5, 1e-3);
+  EXPECT_EQ(ts.eval(0, at(0.5f, 0.5f, 20.0f)).x, ts.eval(0, at(0.1f, 0.8f, 20.0f)).x);
+}
+
 // pbrt-v4's 2-D checkerboard: color0 where floor(u su) + floor(v sv) is even.
 TEST_F(Textures, CheckerboardParityAtKnownUv) {
   TextureDesc red, board;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -249,6 +250,8 @@ TEST_F(Textures, CheckerboardPlaneMeanConvergesToTheMeanOfItsColours) {
   const Image im = render_quietly(s).image;
   double albedo = 0, radiance = 0;
   for (int k = 0; k < W * W; ++k) albedo += im.albedo[3 * k], radiance += im.rgb[3 * k + 1];
+  std::printf("checkerboard plane: albedo AOV mean %.4f, radiance mean %.4f (both 0.5 in the limit)\n", albedo / (W * W),
+              radiance / (W * W));
   EXPECT_NEAR(albedo / (W * W), 0.5, 0.01);
   // Lit by a white environment with one bounce, a diffuse plane shows its albedo (furnace).
   EXPECT_NEAR(radiance / (W * W), 0.5, 0.01);

@@ -8,7 +8,7 @@
 extern "C" {
 
 // Bumped whenever a field or a signature below changes.
-#define PDRT_IMAGE_MODULE_ABI 1
+#define PDRT_IMAGE_MODULE_ABI 2
 
 // One string attribute of the image ("pdrt:sampler", "oiio:ColorSpace", "compression", ...).
 struct PdrtImageAttribute {
@@ -36,12 +36,41 @@ struct PdrtImageRead {
   int integer_format;  // set by read(): 1 when the file stores 8- or 16-bit integers (sRGB-encoded)
 };
 
+// Image textures through OpenImageIO's TextureSystem (MIP-mapped, filtered, thread-safe).
+enum PdrtTextureEncoding { PDRT_ENCODING_AUTO = 0, PDRT_ENCODING_SRGB = 1, PDRT_ENCODING_LINEAR = 2 };
+enum PdrtTextureFilter { PDRT_FILTER_NONE = 0, PDRT_FILTER_BILINEAR = 1, PDRT_FILTER_TRILINEAR = 2, PDRT_FILTER_EWA = 3 };
+enum PdrtTextureWrap { PDRT_WRAP_REPEAT = 0, PDRT_WRAP_CLAMP = 1, PDRT_WRAP_BLACK = 2, PDRT_WRAP_MIRROR = 3 };
+
+struct PdrtTextureOpen {
+  const char* path;       // the source image
+  const char* cache_dir;  // where the linear, MIP-mapped float copy is kept (created if missing)
+  int encoding;           // PdrtTextureEncoding; AUTO: sRGB for 8-bit integer files, else linear
+  // Set by texture_open():
+  int width, height, channels;  // of the source image
+  int srgb;                     // 1 when the texels were decoded from sRGB
+};
+
+// One lookup: (s, t) in texture space (t = 0 at the image's top row) with their screen-space
+// derivatives, which the MIP filters use and PDRT_FILTER_NONE ignores.
+struct PdrtTextureLookup {
+  float s, t, dsdx, dtdx, dsdy, dtdy;
+  int filter;  // PdrtTextureFilter
+  int wrap;    // PdrtTextureWrap
+};
+
 struct PdrtImageModule {
   int abi;  // PDRT_IMAGE_MODULE_ABI
   // Both return 0 on success; otherwise a one-line message goes to `error` (NUL-terminated,
   // at most `error_size` bytes) and they return nonzero. They never throw.
   int (*write)(const PdrtImageWrite* image, char* error, size_t error_size);
   int (*read)(const char* path, PdrtImageRead* image, char* error, size_t error_size);
+  // A private TextureSystem (null on failure, with `error` set); destroy it when done.
+  void* (*texture_system_create)(char* error, size_t error_size);
+  void (*texture_system_destroy)(void* system);
+  // Opens `open->path` as a texture: returns 0 and a handle valid for the system's lifetime.
+  int (*texture_open)(void* system, PdrtTextureOpen* open, void** handle, char* error, size_t error_size);
+  // Thread-safe; writes RGB (one-channel images replicated). Returns 0, or nonzero and black.
+  int (*texture_lookup)(void* system, void* handle, const PdrtTextureLookup* lookup, float rgb[3]);
 };
 
 // The module's one exported symbol.

@@ -2,10 +2,19 @@
 // image_module_abi.h. Built as a CMake MODULE library; the only code in pdrt that links OIIO.
 #include "renderer/image/image_module_abi.h"
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/texture.h>
 
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -55,7 +64,140 @@ int read_image(const char* path, PdrtImageRead* r, char* error, size_t error_siz
   }
 }
 
-const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI, write_image, read_image};
+// ---- textures -------------------------------------------------------------------------------
+
+void* texture_system_create(char* error, size_t error_size) {
+  try {
+    OIIO::TextureSystem* ts = OIIO::TextureSystem::create(/*shared=*/false);
+    if (!ts) return fail(error, error_size, "cannot create an OpenImageIO texture system"), nullptr;
+    ts->attribute("gray_to_rgb", 1);  // one-channel images look up as grey RGB
+    return ts;
+  } catch (const std::exception& e) {
+    return fail(error, error_size, e.what()), nullptr;
+  }
+}
+
+void texture_system_destroy(void* system) {
+  if (system) OIIO::TextureSystem::destroy(static_cast<OIIO::TextureSystem*>(system));
+}
+
+// FNV-1a over the file's bytes: the cache key of its converted copy (with the options).
+bool hash_file(const std::string& path, uint64_t* h) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  uint64_t x = 1469598103934665603ull;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) x = (x ^ uint8_t(buf[i])) * 1099511628211ull;
+    if (!in) break;
+  }
+  *h = x;
+  return true;
+}
+
+// pbrt-v4 and Mitsuba 3 decode sRGB before filtering: a MIP level averages linear radiometric
+// values, not encoded ones. So every image becomes, once, a tiled, MIP-mapped linear-float
+// OpenEXR in the cache (ImageBufAlgo::make_texture), keyed by the file's content and the
+// encoding; the TextureSystem then reads only that copy.
+int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, size_t error_size) {
+  namespace fs = std::filesystem;
+  try {
+    auto* ts = static_cast<OIIO::TextureSystem*>(system);
+    auto in = OIIO::ImageInput::open(o->path);
+    if (!in) return fail(error, error_size, "cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec spec = in->spec();
+    in->close();
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
+      return fail(error, error_size, "has no pixels");
+    const bool integer = spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16 ||
+                         spec.format == OIIO::TypeDesc::INT8 || spec.format == OIIO::TypeDesc::INT16;
+    const bool srgb = o->encoding == PDRT_ENCODING_SRGB || (o->encoding == PDRT_ENCODING_AUTO && integer);
+    o->width = spec.width, o->height = spec.height, o->channels = spec.nchannels, o->srgb = srgb;
+
+    uint64_t h = 0;
+    if (!hash_file(o->path, &h)) return fail(error, error_size, "cannot read the image file");
+    char name[64];
+    std::snprintf(name, sizeof name, "%016llx-%s-v1.exr", static_cast<unsigned long long>(h), srgb ? "srgb" : "linear");
+    const fs::path dir = fs::path(o->cache_dir) / "textures";
+    const fs::path out = dir / name;
+    std::error_code ec;
+    if (!fs::exists(out, ec)) {
+      fs::create_directories(dir, ec);
+      OIIO::ImageBuf src(o->path);
+      if (!src.read(0, 0, /*force=*/true, OIIO::TypeDesc::FLOAT)) return fail(error, error_size, src.geterror());
+      OIIO::ImageBuf lin;
+      if (srgb) {
+        if (!OIIO::ImageBufAlgo::colorconvert(lin, src, "sRGB", "linear", /*unpremult=*/false))
+          return fail(error, error_size, "sRGB decoding failed: " + lin.geterror());
+      } else {
+        lin.copy(src);
+      }
+      OIIO::ImageSpec config;
+      config.format = OIIO::TypeDesc::FLOAT;
+      config.tile_width = config.tile_height = 64;
+      config.attribute("maketx:filtername", "box");  // each level the mean of the one above
+      // A unique temporary name, then an atomic rename: parallel renders share the cache.
+      static std::atomic<unsigned> counter{0};
+      const fs::path tmp = dir / (std::string(name) + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp.exr");
+      if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, lin, tmp.string(), config)) {
+        fs::remove(tmp, ec);
+        return fail(error, error_size, "cannot write its MIP-mapped copy in " + dir.string() + ": " + OIIO::geterror());
+      }
+      fs::rename(tmp, out, ec);
+      if (ec) {
+        fs::remove(tmp, ec);
+        if (!fs::exists(out)) return fail(error, error_size, "cannot place its MIP-mapped copy in " + dir.string());
+      }
+    }
+    OIIO::TextureSystem::TextureHandle* th = ts->get_texture_handle(OIIO::ustring(out.string()));
+    if (!th || !ts->good(th)) return fail(error, error_size, "cannot open its MIP-mapped copy " + out.string() + ": " + ts->geterror());
+    *handle = th;
+    return 0;
+  } catch (const std::exception& e) {
+    return fail(error, error_size, e.what());
+  } catch (...) {
+    return fail(error, error_size, "unknown error in the image module");
+  }
+}
+
+OIIO::TextureOpt::Wrap wrap_mode(int w) {
+  switch (w) {
+    case PDRT_WRAP_CLAMP: return OIIO::TextureOpt::WrapClamp;
+    case PDRT_WRAP_BLACK: return OIIO::TextureOpt::WrapBlack;
+    case PDRT_WRAP_MIRROR: return OIIO::TextureOpt::WrapMirror;
+    default: return OIIO::TextureOpt::WrapPeriodic;
+  }
+}
+
+int texture_lookup(void* system, void* handle, const PdrtTextureLookup* l, float rgb[3]) {
+  auto* ts = static_cast<OIIO::TextureSystem*>(system);
+  OIIO::TextureOpt opt;
+  opt.swrap = opt.twrap = wrap_mode(l->wrap);
+  switch (l->filter) {
+    case PDRT_FILTER_NONE:  // the nearest texel of the full-resolution image: aliasing shows
+      opt.mipmode = OIIO::TextureOpt::MipModeNoMIP, opt.interpmode = OIIO::TextureOpt::InterpClosest;
+      break;
+    case PDRT_FILTER_BILINEAR:
+      opt.mipmode = OIIO::TextureOpt::MipModeNoMIP, opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+      break;
+    case PDRT_FILTER_TRILINEAR:
+      opt.mipmode = OIIO::TextureOpt::MipModeTrilinear, opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+      break;
+    default:
+      opt.mipmode = OIIO::TextureOpt::MipModeAniso, opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+      break;
+  }
+  // The calling thread's own Perthread (OIIO keeps one per thread and frees it at thread exit).
+  OIIO::TextureSystem::Perthread* pt = ts->get_perthread_info();
+  float out[3] = {0, 0, 0};
+  bool ok = ts->texture(static_cast<OIIO::TextureSystem::TextureHandle*>(handle), pt, opt, l->s, l->t, l->dsdx,
+                        l->dtdx, l->dsdy, l->dtdy, 3, out);
+  for (int c = 0; c < 3; ++c) rgb[c] = ok ? out[c] : 0.0f;
+  return ok ? 0 : 1;
+}
+
+const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI, write_image, read_image, texture_system_create,
+                                 texture_system_destroy, texture_open, texture_lookup};
 
 }  // namespace
 

@@ -43,6 +43,15 @@ std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys, float open
   return out;
 }
 
+// An orthonormal pair spanning the plane normal to unit n (Duff et al. 2017), for dp/du and
+// dp/dv where the uv parametrisation is degenerate.
+void tangents(const Vec3& n, Vec3* a, Vec3* b) {
+  const float sign = std::copysign(1.0f, n.z);
+  const float p = -1.0f / (sign + n.z), q = n.x * n.y * p;
+  *a = Vec3(1 + sign * n.x * n.x * p, sign * q, -sign * n.x);
+  *b = Vec3(q, sign + n.y * n.y * p, -n.y);
+}
+
 Affine from_row_major(const float m[12]) {
   Affine a;
   for (int r = 0; r < 3; ++r)
@@ -87,11 +96,13 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
       s.center = m.point(d.center);
       // Spheres stay spheres: a non-uniform scale is replaced by its geometric mean.
       s.radius = d.radius * std::cbrt(std::abs(m.determinant()));
+      s.to_world = m, s.to_object = m.inverse(), s.object_radius = d.radius;
     } else {
       s.positions.reserve(d.mesh.positions.size());
       for (const Vec3& p : d.mesh.positions) s.positions.push_back(m.point(p));
       for (const Vec3& n : d.mesh.normals) s.normals.push_back(normalize(m.normal(n)));
       s.indices = d.mesh.indices;
+      s.uvs = d.mesh.uvs;
       triangles_ += s.indices.size() / 3;
     }
     RTCGeometry g = make_geometry(s);
@@ -228,10 +239,12 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
       ns = ng;
     }
   }
+  hit->p_local = x.p;
   if (inst) {
     x = transform_point(m, x);
     ng = inv.transpose_vector(ng), ns = inv.transpose_vector(ns);
   }
+  hit->bary_u = u, hit->bary_v = v;
   hit->p = x.p;
   hit->p_error = x.error;
   ng = normalize(ng), ns = normalize(ns);
@@ -239,6 +252,53 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
   hit->ng = ng;
   hit->ns = dot(ns, ng) < 0 ? -ns : ns;
   hit->front = dot(ray.dir, ng) < 0;
+}
+
+void EmbreeScene::texture_coords(SurfaceHit* hit, float time) const {
+  const Shape& s = shapes_[hit->shape];
+  Vec3 dpdu, dpdv;
+  if (s.sphere) {
+    // Object space, +y the pole: u = azimuth / 2 pi from +x toward +z, v = polar angle from -y / pi
+    // (v = 0 at -y, 1 at +y), as pbrt-v4's sphere with y in place of z.
+    Vec3 d = s.to_object.vector(hit->p_local - s.center);
+    const float len = length(d);
+    d = len > 0 ? d / len : Vec3(0, 1, 0);
+    float phi = std::atan2(d.z, d.x);
+    if (phi < 0) phi += 2 * kPi;
+    const float theta = std::acos(std::clamp(-d.y, -1.0f, 1.0f));  // from -y
+    hit->u = phi / (2 * kPi);
+    hit->v = theta / kPi;
+    // dp/du = 2 pi (-z, 0, x) r; dp/dv = pi r (sin(theta) direction toward +y along the meridian).
+    const float r = s.object_radius, sin_t = std::sqrt(std::max(0.0f, 1 - d.y * d.y));
+    dpdu = s.to_world.vector(Vec3(-d.z, 0, d.x) * (2 * kPi * r));
+    const Vec3 rho = sin_t > 0 ? Vec3(d.x, 0, d.z) / sin_t : Vec3(1, 0, 0);
+    dpdv = s.to_world.vector((Vec3(0, sin_t, 0) - rho * d.y) * (kPi * r));
+  } else {
+    const uint32_t* tri = &s.indices[3 * std::size_t(hit->prim)];
+    const Vec3 &a = s.positions[tri[0]], &b = s.positions[tri[1]], &c = s.positions[tri[2]];
+    const float b1 = hit->bary_u, b2 = hit->bary_v;
+    // Without per-vertex uvs, the barycentrics: vertex 0 -> (0, 0), 1 -> (1, 0), 2 -> (0, 1).
+    std::array<float, 2> t0{0, 0}, t1{1, 0}, t2{0, 1};
+    if (!s.uvs.empty()) t0 = s.uvs[tri[0]], t1 = s.uvs[tri[1]], t2 = s.uvs[tri[2]];
+    hit->u = t0[0] * (1 - b1 - b2) + t1[0] * b1 + t2[0] * b2;
+    hit->v = t0[1] * (1 - b1 - b2) + t1[1] * b1 + t2[1] * b2;
+    // pbrt-v4 §6.5.3: solve p_i - p_2 = (u_i - u_2) dp/du + (v_i - v_2) dp/dv.
+    const float du02 = t0[0] - t2[0], dv02 = t0[1] - t2[1], du12 = t1[0] - t2[0], dv12 = t1[1] - t2[1];
+    const Vec3 dp02 = a - c, dp12 = b - c;
+    const float det = du02 * dv12 - dv02 * du12;
+    bool ok = std::abs(det) > 1e-12f;
+    if (ok) {
+      dpdu = (dp02 * dv12 - dp12 * dv02) / det;
+      dpdv = (dp12 * du02 - dp02 * du12) / det;
+      ok = is_finite(dpdu) && is_finite(dpdv) && !is_black(cross(dpdu, dpdv));
+    }
+    if (!ok) tangents(normalize(cross(b - a, c - a)), &dpdu, &dpdv);
+  }
+  if (s.instance) {
+    const Affine m = transform(hit->shape, time);
+    dpdu = m.vector(dpdu), dpdv = m.vector(dpdv);
+  }
+  hit->dpdu = dpdu, hit->dpdv = dpdv;
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

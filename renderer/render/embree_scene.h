@@ -10,6 +10,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
 #include <atomic>
 #include <vector>
 
@@ -24,6 +25,13 @@ struct SurfaceHit {
   int shape = -1;
   int prim = -1;
   bool front = true;  // the ray arrived from the side ng points to
+  float bary_u = 0, bary_v = 0;  // Embree's barycentrics (triangles)
+  Vec3 p_local;                  // p before a moving shape's instance transform
+  // Texture coordinates (docs/scene-format.md, "Texture coordinates") and the world-space
+  // surface derivatives dp/du, dp/dv the texture footprint needs (texture_footprint.h): only
+  // set by EmbreeScene::texture_coords, which textured materials call (the rest never pay).
+  float u = 0, v = 0;
+  Vec3 dpdu, dpdv;
   ErrorPoint point() const { return {p, p_error}; }
 };
 
@@ -36,6 +44,8 @@ class EmbreeScene {
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const;
   bool occluded(const Ray& ray) const;
+  // Fills hit->u, v, dpdu, dpdv for a hit this scene returned (`time`: the ray's).
+  void texture_coords(SurfaceHit* hit, float time) const;
   // Four camera rays of one pixel as an Embree packet (much cheaper per ray when they are
   // coherent); lanes with live[k] false are not traced. found[k] says whether hits[k] is set.
   // Packet and single-ray kernels may differ in the last bit of t, u, v, so a caller that
@@ -68,8 +78,12 @@ class EmbreeScene {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::vector<uint32_t> indices;
+    std::vector<std::array<float, 2>> uvs;
     Vec3 center;
     float radius = 0;
+    Affine to_world;   // sphere: the shape's static transform (object to the stored space)
+    Affine to_object;  // its inverse: uv are measured in object space
+    float object_radius = 1;
     bool sphere = false;
     RTCScene child = nullptr;
     RTCGeometry instance = nullptr;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace pdrt {
 
@@ -15,8 +16,18 @@ float power_heuristic(float a, float b) {
 }  // namespace
 
 PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const IntegratorDesc& settings)
-    : scene_(scene), lights_(lights), settings_(settings) {
-  for (const Material& m : scene.desc().materials) bsdfs_.emplace_back(m);
+    : scene_(scene),
+      lights_(lights),
+      settings_(settings),
+      textures_(scene.desc()),
+      footprint_(scene.desc().camera, scene.desc().film.width, scene.desc().film.height,
+                 scene.desc().sampler.adaptive.enabled ? scene.desc().sampler.adaptive.max_spp : scene.desc().sampler.spp) {
+  for (const Material& m : scene.desc().materials) {
+    bsdfs_.emplace_back(m);
+    bare_.push_back(m);
+    bare_.back().name.clear();
+    bare_.back().textures.clear();
+  }
 }
 
 PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps) const { return trace(ray, ps, nullptr, false); }
@@ -52,8 +63,14 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
-    const Material& mat = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
-    const Bsdf& bsdf = bsdfs_[scene_.desc().shapes[hit.shape].material];
+    const int mi = scene_.desc().shapes[hit.shape].material;
+    const Material& mat = scene_.desc().materials[mi];
+    std::optional<Bsdf> textured;
+    if (!mat.textures.empty()) {
+      scene_.texture_coords(&hit, time);
+      textured.emplace(textures_.apply(bare_[mi], mat.textures, footprint_.at(hit)));
+    }
+    const Bsdf& bsdf = textured ? *textured : bsdfs_[mi];
     const Vec3 wo_world = -ray.dir;
     if (depth == 0) {
       res.albedo = bsdf.albedo();

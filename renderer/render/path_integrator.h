@@ -8,6 +8,8 @@
 #include "renderer/render/bsdf.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/light_sampler.h"
+#include "renderer/render/texture_footprint.h"
+#include "renderer/render/texture_set.h"
 #include "sampling/samplers/sampler.h"
 
 #include <vector>
@@ -35,7 +37,12 @@ class PathIntegrator {
   const EmbreeScene& scene_;
   const LightSampler& lights_;
   IntegratorDesc settings_;
-  std::vector<Bsdf> bsdfs_;  // per material
+  std::vector<Bsdf> bsdfs_;  // per material (textured ones: with their constant values, unused)
+  // Textured materials build their Bsdf per hit from `bare_` (the material without name and
+  // bindings) with the textures evaluated at the hit; others use bsdfs_ as before.
+  TextureSet textures_;
+  TextureFootprint footprint_;
+  std::vector<Material> bare_;
 };
 
 // Sampler salts of the 1-D decisions at path vertex `depth` (time family, bounce >= 1;

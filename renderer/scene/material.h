@@ -4,11 +4,22 @@
 #include "renderer/scene/vec3.h"
 
 #include <string>
+#include <vector>
 
 namespace pdrt {
 
 enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Conductor, CoatedDiffuse };
 enum class GlossLobe { GGX, Phong };
+
+// The material parameters a texture may drive (render/texture_set.h writes them per hit).
+// Colours take the texture's RGB; scalars its first channel. A new textured parameter is one
+// entry here, one case in TextureSet::apply and one textured_* call in the loader.
+enum class MaterialParam { Albedo, Roughness, CoatColor };
+struct TextureBinding {
+  MaterialParam param;
+  int texture;  // index into SceneDesc::textures
+  bool operator==(const TextureBinding&) const = default;
+};
 
 struct Material {
   std::string name;
@@ -25,6 +36,7 @@ struct Material {
   Vec3 radiance{0.0f};     // emitted radiance (Emitter)
   bool two_sided = false;  // emitters: emit from both faces (default: front face only)
   bool energy_compensation = true;  // GGX glossy, rough conductor and rough dielectric: add the multiple-scattering lobe
+  std::vector<TextureBinding> textures;  // parameters given by a texture (empty: constant material)
 };
 
 // Measured complex indices of named metals at 650, 550 and 450 nm (R, G, B): material.cpp.

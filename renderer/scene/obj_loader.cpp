@@ -87,13 +87,13 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
     b = e + 1;
   }
   auto keyword = [](const std::vector<std::string_view>& tok) { return tok.empty() ? std::string_view() : tok[0]; };
-  long total_v = 0, total_vn = 0;
+  long total_v = 0, total_vn = 0, total_vt = 0;
   for (std::string_view l : lines) {
     auto tok = split_ws(l);
-    total_v += keyword(tok) == "v", total_vn += keyword(tok) == "vn";
+    total_v += keyword(tok) == "v", total_vn += keyword(tok) == "vn", total_vt += keyword(tok) == "vt";
   }
   std::vector<UseMtl> usemtl;
-  long seen_v = 0, seen_vn = 0;
+  long seen_v = 0, seen_vn = 0, seen_vt = 0;
   for (size_t li = 0; li < lines.size(); ++li) {
     std::string at = name + ":" + std::to_string(li + 1);
     auto tok = split_ws(lines[li]);
@@ -112,6 +112,15 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         if (x == 0 && y == 0 && z == 0) fail(at, "normal has zero length");
       }
       (kw == "v" ? seen_v : seen_vn)++;
+    } else if (kw == "vt") {
+      // u [v [w]]: pdrt uses u and v (a missing v is 0, as tinyobjloader reads it).
+      if (tok.size() < 2) fail(at, "texture coordinate needs u (and v)");
+      for (size_t k = 1; k < tok.size(); ++k) {
+        float x;
+        if (!parse_whole(tok[k], x) || !std::isfinite(x))
+          fail(at, "texture coordinate " + in_quotes(tok[k]) + " is not a finite number");
+      }
+      ++seen_vt;
     } else if (kw == "f") {
       if (tok.size() < 4) ++short_faces;
       for (size_t k = 1; k < tok.size(); ++k) {
@@ -139,9 +148,7 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         };
         check(parts[0], total_v, seen_v, "", "vertices");
         if (parts.size() == 3) check(parts[2], total_vn, seen_vn, "normal ", "normals");
-        // Texture coordinates are not used; tinyobjloader still rejects malformed ones.
-        if (long ti = 0; parts.size() >= 2 && !parts[1].empty() && (!parse_whole(parts[1], ti) || ti == 0))
-          fail(at, "bad face vertex " + in_quotes(t));
+        if (parts.size() >= 2 && !parts[1].empty()) check(parts[1], total_vt, seen_vt, "texture coordinate ", "texture coordinates");
       }
     } else if (kw == "mtllib") {
       // tinyobjloader skips one separator after the keyword, then splits on spaces.
@@ -228,7 +235,7 @@ Material material_from_mtl(const tinyobj::material_t& m, const std::string& stem
 }
 
 struct Corner {
-  int v, n;
+  int v, n, t;  // position, normal and texture coordinate indices (-1: none)
 };
 
 // An OBJ is text: a NUL or other control byte means a binary (or wrong) file, which would
@@ -279,7 +286,8 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
   }
 
   // Group triangles by material (-1 = none), keeping tinyobjloader's material order.
-  const long nv = long(attrib.vertices.size() / 3), nn = long(attrib.normals.size() / 3);
+  const long nv = long(attrib.vertices.size() / 3), nn = long(attrib.normals.size() / 3),
+             nt = long(attrib.texcoords.size() / 2);
   std::map<int, std::vector<Corner>> groups;
   for (const tinyobj::shape_t& s : shapes) {
     size_t offset = 0;
@@ -290,9 +298,9 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
       auto& g = groups[mat];
       for (size_t k = 0; k < 3; ++k) {
         const tinyobj::index_t& ix = s.mesh.indices[offset + k];
-        if (ix.vertex_index < 0 || ix.vertex_index >= nv || ix.normal_index >= nn)
+        if (ix.vertex_index < 0 || ix.vertex_index >= nv || ix.normal_index >= nn || ix.texcoord_index >= nt)
           fail(name, "face index out of range after triangulation");
-        g.push_back({ix.vertex_index, ix.normal_index});
+        g.push_back({ix.vertex_index, ix.normal_index, ix.texcoord_index});
       }
       offset += count;
     }
@@ -301,19 +309,31 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
   auto position = [&](int v) { return Vec3(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]); };
   const std::string stem = file.stem().string();
   for (auto& [mat, corners] : groups) {
-    bool has_normals = true;
-    for (const Corner& c : corners) has_normals &= c.n >= 0;
+    bool has_normals = true, has_uvs = true;
+    for (const Corner& c : corners) has_normals &= c.n >= 0, has_uvs &= c.t >= 0;
     ObjPart part;
-    std::unordered_map<uint64_t, uint32_t> remap;  // (vertex, normal) -> index in part.mesh
+    // (vertex, normal) -> index in part.mesh, per texture coordinate index (most OBJs share one).
+    std::unordered_map<uint64_t, uint32_t> remap;
+    std::map<std::pair<uint64_t, int>, uint32_t> remap_uv;
     auto vertex = [&](const Corner& c) {
       uint64_t key = (uint64_t(uint32_t(c.v)) << 32) | uint32_t(has_normals ? c.n : -1);
-      auto [it, added] = remap.try_emplace(key, uint32_t(part.mesh.positions.size()));
+      const uint32_t next = uint32_t(part.mesh.positions.size());
+      bool added;
+      uint32_t index;
+      if (has_uvs) {
+        auto [it, a] = remap_uv.try_emplace({key, c.t}, next);
+        added = a, index = it->second;
+      } else {
+        auto [it, a] = remap.try_emplace(key, next);
+        added = a, index = it->second;
+      }
       if (added) {
         part.mesh.positions.push_back(position(c.v));
         if (has_normals)
           part.mesh.normals.push_back({attrib.normals[3 * c.n], attrib.normals[3 * c.n + 1], attrib.normals[3 * c.n + 2]});
+        if (has_uvs) part.mesh.uvs.push_back({attrib.texcoords[2 * c.t], attrib.texcoords[2 * c.t + 1]});
       }
-      return it->second;
+      return index;
     };
     for (size_t t = 0; t < corners.size(); t += 3) {
       const Corner *a = &corners[t], *b = a + 1, *c = a + 2;

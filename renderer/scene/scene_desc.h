@@ -3,8 +3,10 @@
 // (docs/scene-format.md) and the renderer consumes. Everything here is already checked:
 // finite numbers, positive sizes, material indices in range, non-degenerate triangles.
 #include "renderer/scene/material.h"
+#include "renderer/scene/texture_desc.h"
 #include "renderer/scene/transform.h"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -89,6 +91,9 @@ struct MeshData {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;        // per vertex, optional (empty = flat shading)
   std::vector<uint32_t> indices;    // triangles, 3 per face
+  // Per vertex, optional (empty: each triangle's barycentric (b1, b2), so vertex 0 is (0, 0),
+  // 1 is (1, 0), 2 is (0, 1)). Quads get (0,0) (1,0) (1,1) (0,1) from corner, edge1, edge2.
+  std::vector<std::array<float, 2>> uvs;
 };
 
 struct ShapeDesc {
@@ -132,6 +137,7 @@ struct SceneDesc {
   SamplerDesc sampler;
   IntegratorDesc integrator;
   std::vector<Material> materials;
+  std::vector<TextureDesc> textures;  // referred to by Material::textures and by each other
   std::vector<ShapeDesc> shapes;    // objects and area lights (lights carry emitter materials)
   EnvironmentDesc environment;
   std::vector<DeltaLightDesc> delta_lights;  // point, spot and distant lights

@@ -34,6 +34,13 @@ class SceneParser {
   void film(const JsonObject& o);
   void sampler(const JsonObject& o);
   void integrator(const JsonObject& o);
+  void textures(const JsonNode& n);
+  TextureInput texture_input(const JsonNode& n, int from);
+  int texture_named(const JsonNode& n) const;
+  // A material parameter that is a value or the name of a texture (docs/scene-format.md,
+  // "textures"): a value goes to `field`, a name to m.textures. One call per parameter.
+  void textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const;
+  void textured_unit(const JsonNode& n, Material& m, MaterialParam p, float& field) const;
   void materials(const JsonNode& n);
   void objects(const JsonNode& n);
   void lights(const JsonNode& n);
@@ -58,6 +65,8 @@ class SceneParser {
   fs::path dir_;
   SceneDesc scene_;
   std::map<std::string, int> material_index_;
+  std::map<std::string, int> texture_index_;
+  std::vector<std::vector<std::pair<int, JsonNode>>> texture_refs_;  // per texture: (texture it uses, where)
 
   struct PendingObj {  // OBJ files load after the whole JSON is validated
     size_t shape_slot;  // where in scene_.shapes its parts go
@@ -71,11 +80,12 @@ class SceneParser {
 
 SceneDesc SceneParser::parse() {
   JsonObject top(root_);
-  top.allow({"camera", "film", "sampler", "integrator", "materials", "objects", "lights"});
+  top.allow({"camera", "film", "sampler", "integrator", "textures", "materials", "objects", "lights"});
   camera(top.require("camera").object());
   film(top.require("film").object());
   if (auto n = top.get("sampler")) sampler(n->object());
   if (auto n = top.get("integrator")) integrator(n->object());
+  if (auto n = top.get("textures")) textures(*n);
   if (auto n = top.get("materials")) materials(*n);
   if (auto n = top.get("objects")) objects(*n);
   if (auto n = top.get("lights")) lights(*n);
@@ -219,6 +229,137 @@ void SceneParser::integrator(const JsonObject& o) {
   if (auto n = o.get("rr_depth")) scene_.integrator.rr_depth = n->int_at_least(1);
 }
 
+int SceneParser::texture_named(const JsonNode& n) const {
+  std::string name = n.string();
+  auto it = texture_index_.find(name);
+  if (it == texture_index_.end()) {
+    std::string known;
+    for (const auto& [k, v] : texture_index_) known += std::string(known.empty() ? "" : ", ") + json_quoted(k);
+    n.fail("unknown texture " + json_quoted(name) + (known.empty() ? " (the scene has no \"textures\")" : " (textures: " + known + ")"));
+  }
+  return it->second;
+}
+
+// A checkerboard's colour: a number (grey), [r, g, b] in [0, 1], or a texture's name.
+TextureInput SceneParser::texture_input(const JsonNode& n, int from) {
+  TextureInput in;
+  if (n.value().is_string()) {
+    in.texture = texture_named(n);
+    texture_refs_[size_t(from)].push_back({in.texture, n});
+  } else if (n.value().is_number()) {
+    in.value = Vec3(n.in_unit_interval());
+  } else {
+    in.value = n.color();
+  }
+  return in;
+}
+
+void SceneParser::textures(const JsonNode& n) {
+  JsonObject all = n.object();
+  // Names first: a texture may use one defined after it.
+  for (auto it = n.value().begin(); it != n.value().end(); ++it) {
+    if (it.key().empty()) all.child(it.key()).fail_key("texture name must not be empty");
+    texture_index_[it.key()] = int(texture_index_.size());
+  }
+  texture_refs_.resize(texture_index_.size());
+  for (auto it = n.value().begin(); it != n.value().end(); ++it) {
+    JsonNode tn = all.child(it.key());
+    JsonObject o = tn.object();
+    TextureDesc t;
+    t.name = it.key();
+    t.where = tn.where();
+    const int self = int(scene_.textures.size());
+    auto uv_scale = [&](const JsonNode& sn) {
+      if (sn.value().is_number()) {
+        t.scale_u = t.scale_v = sn.positive();
+      } else {
+        if (!sn.value().is_array() || sn.value().size() != 2) sn.fail_got("must be a number or [su, sv]");
+        t.scale_u = sn.at(0).positive(), t.scale_v = sn.at(1).positive();
+      }
+    };
+    std::string type = o.require("type").choice({"constant", "checkerboard", "image"});
+    if (type == "constant") {
+      o.allow({"type", "value"});
+      t.kind = TextureDesc::Kind::Constant;
+      JsonNode v = o.require("value");
+      t.value = v.value().is_number() ? Vec3(v.in_unit_interval()) : v.color();
+    } else if (type == "checkerboard") {
+      o.allow({"type", "scale", "color0", "color1"});
+      t.kind = TextureDesc::Kind::Checkerboard;
+      if (auto x = o.get("scale")) uv_scale(*x);
+      t.color0 = texture_input(o.require("color0"), self);
+      t.color1 = texture_input(o.require("color1"), self);
+    } else {
+      o.allow({"type", "file", "filter", "wrap", "encoding", "scale"});
+      t.kind = TextureDesc::Kind::Image;
+      JsonNode file = o.require("file");
+      t.file = dir_ / file.string();
+      t.where = file.where();
+      std::string reason;
+      if (!can_open_file(t.file, reason)) file.fail("cannot open " + json_quoted(file.string()) + ": " + reason);
+      if (auto x = o.get("filter")) {
+        static const std::map<std::string, TextureFilter> k = {{"none", TextureFilter::None},
+                                                              {"bilinear", TextureFilter::Bilinear},
+                                                              {"trilinear", TextureFilter::Trilinear},
+                                                              {"ewa", TextureFilter::Ewa},
+                                                              {"anisotropic", TextureFilter::Ewa}};
+        t.filter = k.at(x->choice({"none", "bilinear", "trilinear", "ewa", "anisotropic"}));
+      }
+      if (auto x = o.get("wrap")) {
+        static const std::map<std::string, TextureWrap> k = {
+            {"repeat", TextureWrap::Repeat}, {"clamp", TextureWrap::Clamp}, {"black", TextureWrap::Black}, {"mirror", TextureWrap::Mirror}};
+        t.wrap = k.at(x->choice({"repeat", "clamp", "black", "mirror"}));
+      }
+      if (auto x = o.get("encoding")) {
+        std::string e = x->choice({"auto", "srgb", "linear"});
+        t.encoding = e == "srgb" ? TextureEncoding::Srgb : e == "linear" ? TextureEncoding::Linear : TextureEncoding::Auto;
+      }
+      if (auto x = o.get("scale")) uv_scale(*x);
+    }
+    scene_.textures.push_back(std::move(t));
+  }
+  // No cycles (a checkerboard of itself would recurse forever while rendering). Iterative
+  // depth-first search: a chain of many textures must not overflow the stack here either.
+  std::vector<int> state(scene_.textures.size(), 0);  // 0 new, 1 on the path, 2 done
+  for (size_t root = 0; root < state.size(); ++root) {
+    if (state[root]) continue;
+    std::vector<std::pair<int, size_t>> stack{{int(root), 0}};  // (texture, next edge)
+    state[root] = 1;
+    while (!stack.empty()) {
+      auto& [t, e] = stack.back();
+      const auto& refs = texture_refs_[size_t(t)];
+      if (e == refs.size()) {
+        state[size_t(t)] = 2;
+        stack.pop_back();
+        continue;
+      }
+      const auto& [to, where] = refs[e++];
+      if (state[size_t(to)] == 1) {
+        std::string path;
+        for (const auto& [k, i] : stack) path += json_quoted(scene_.textures[size_t(k)].name) + " -> ";
+        where.fail("makes a cycle of textures: " + path + json_quoted(scene_.textures[size_t(to)].name));
+      }
+      if (state[size_t(to)] == 0) state[size_t(to)] = 1, stack.push_back({to, 0});
+    }
+  }
+}
+
+void SceneParser::textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const {
+  if (n.value().is_string()) {
+    m.textures.push_back({p, texture_named(n)});
+  } else {
+    field = n.color();
+  }
+}
+
+void SceneParser::textured_unit(const JsonNode& n, Material& m, MaterialParam p, float& field) const {
+  if (n.value().is_string()) {
+    m.textures.push_back({p, texture_named(n)});
+  } else {
+    field = n.in_unit_interval();
+  }
+}
+
 void SceneParser::materials(const JsonNode& n) {
   JsonObject all = n.object();
   for (auto it = n.value().begin(); it != n.value().end(); ++it) {
@@ -249,7 +390,7 @@ void SceneParser::materials(const JsonNode& n) {
       if (!rough && !expo) mn.fail("needs roughness (GGX lobe) or exponent (Phong lobe)");
       if (rough) {
         m.lobe = GlossLobe::GGX;
-        m.roughness = rough->in_unit_interval();
+        textured_unit(*rough, m, MaterialParam::Roughness, m.roughness);
       } else {
         m.lobe = GlossLobe::Phong;
         m.exponent = expo->positive();
@@ -267,7 +408,7 @@ void SceneParser::materials(const JsonNode& n) {
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
       if (auto x = o.get("ior")) m.ior = x->positive();
-      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
     } else if (type == "conductor") {
       o.allow({"type", "eta", "k", "metal", "roughness", "energy_compensation"});
@@ -289,19 +430,19 @@ void SceneParser::materials(const JsonNode& n) {
         for (int c = 0; c < 3; ++c)
           if (!(std::isfinite(m.k[c]) && m.k[c] >= 0)) kk.fail_got("must have finite components >= 0");
       }
-      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
     } else if (type == "coated_diffuse") {
       o.allow({"type", "albedo", "roughness", "ior", "coat_color", "coat_thickness"});
       m.type = MaterialType::CoatedDiffuse;
       m.albedo = Vec3(0.5f);
-      if (auto x = o.get("roughness")) m.roughness = x->in_unit_interval();
+      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
       if (auto x = o.get("ior")) {
         // The coat's albedo tables hold indices 1 to 3 (ggx_albedo_tables.h); 1 is no coat.
         m.ior = x->number();
         if (!(m.ior >= 1 && m.ior <= 3)) x->fail_got("must be in [1,3] (the coat's index relative to the outside)");
       }
-      if (auto x = o.get("coat_color")) m.coat_color = x->color();
+      if (auto x = o.get("coat_color")) textured_color(*x, m, MaterialParam::CoatColor, m.coat_color);
       if (auto x = o.get("coat_thickness")) m.coat_thickness = x->non_negative();
     } else {
       o.allow({"type", "radiance", "two_sided"});
@@ -309,7 +450,7 @@ void SceneParser::materials(const JsonNode& n) {
       m.radiance = o.require("radiance").radiance();
       if (auto x = o.get("two_sided")) m.two_sided = x->boolean();
     }
-    if (auto a = o.get("albedo")) m.albedo = a->color();
+    if (auto a = o.get("albedo")) textured_color(*a, m, MaterialParam::Albedo, m.albedo);
     material_index_[m.name] = int(scene_.materials.size());
     scene_.materials.push_back(std::move(m));
   }
@@ -415,6 +556,7 @@ MeshData SceneParser::quad(const JsonObject& o) {
   MeshData m;
   m.positions = {corner, corner + e1, corner + e1 + e2, corner + e2};
   m.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise about cross(edge1, edge2)
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   keep_triangles(m, e2n);
   return m;
 }
@@ -452,7 +594,7 @@ void SceneParser::objects(const JsonNode& n) {
       o.allow({"type", "material", "transform", "motion", "corner", "edge1", "edge2"});
       s.mesh = quad(o);
     } else if (type == "mesh") {
-      o.allow({"type", "material", "transform", "motion", "vertices", "indices", "normals"});
+      o.allow({"type", "material", "transform", "motion", "vertices", "indices", "normals", "uvs"});
       JsonNode vn = o.require("vertices");
       size_t nv = vn.array_size(1);
       if (nv > UINT32_MAX) vn.fail("has too many vertices");
@@ -471,6 +613,15 @@ void SceneParser::objects(const JsonNode& n) {
       if (auto nn = o.get("normals")) {
         if (nn->array_size(0) != nv) nn->fail("must have one normal per vertex (" + std::to_string(nv) + "), got " + std::to_string(nn->value().size()));
         for (size_t v = 0; v < nv; ++v) s.mesh.normals.push_back(nn->at(v).nonzero_vec3());
+      }
+      if (auto un = o.get("uvs")) {
+        if (un->array_size(0) != nv) un->fail("must have one [u, v] per vertex (" + std::to_string(nv) + "), got " + std::to_string(un->value().size()));
+        s.mesh.uvs.reserve(nv);
+        for (size_t v = 0; v < nv; ++v) {
+          JsonNode e = un->at(v);
+          if (!e.value().is_array() || e.value().size() != 2) e.fail_got("must be [u, v]");
+          s.mesh.uvs.push_back({e.at(0).number(), e.at(1).number()});
+        }
       }
       keep_triangles(s.mesh, in);
     } else {
@@ -615,7 +766,7 @@ bool same_material(const Material& a, const Material& b) {
          is_black(a.eta - b.eta) && is_black(a.k - b.k) && is_black(a.coat_color - b.coat_color) &&
          a.coat_thickness == b.coat_thickness &&
          is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided &&
-         a.energy_compensation == b.energy_compensation;
+         a.energy_compensation == b.energy_compensation && a.textures == b.textures;
 }
 
 void SceneParser::load_objs() {

@@ -59,12 +59,13 @@ inline Material glass(float ior, float roughness = 0) {
   return m;
 }
 
-// A quad corner, corner+e1, corner+e1+e2, corner+e2; its front face is cross(e1, e2).
+// A quad corner, corner+e1, corner+e1+e2, corner+e2; its front face is cross(e1, e2); uv as the loader's.
 inline ShapeDesc quad(Vec3 corner, Vec3 e1, Vec3 e2, int material) {
   ShapeDesc s;
   s.kind = ShapeDesc::Kind::Mesh;
   s.mesh.positions = {corner, corner + e1, corner + e1 + e2, corner + e2};
   s.mesh.indices = {0, 1, 2, 0, 2, 3};
+  s.mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // as the loader's quads
   s.material = material;
   return s;
 }

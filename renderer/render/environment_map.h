@@ -11,8 +11,8 @@
 // centre. The mean, not the texel, because the interpolation spreads a texel over its
 // neighbours' cells: every direction of non-zero radiance then has a non-zero pdf. No
 // uniform blend and no compensation (pbrt-v4's allowIncompletePDF): light sampling alone
-// stays an unbiased estimator, which the integrator needs for its non-MIS paths and the
-// tests rely on. pdf(w) = p(u, v) / (2 pi^2 sin theta), the exact density of sample().
+// stays an unbiased estimator, and a constant map keeps a non-empty distribution
+// (docs/renderer.md). pdf(w) = p(u, v) / (2 pi^2 sin theta), the exact density of sample().
 #include "renderer/scene/vec3.h"
 #include "sampling/core/piecewise_constant.h"
 

@@ -78,21 +78,25 @@ bool EnvironmentMap::sample(std::array<double, 2> u, Vec3* wi, Vec3* radiance, f
   if (empty() || !(irradiance_ > 0)) return false;
   double p_uv;
   const std::array<double, 2> p = distribution_.sample(u, &p_uv);
-  const double sin_theta = std::sin(M_PI * p[1]);
-  if (!(sin_theta > 0 && p_uv > 0)) return false;
+  if (!(p_uv > 0)) return false;
   *wi = direction(p[0], p[1]);
   *radiance = lookup(p[0], p[1]);
-  *pdf = float(p_uv / (2 * M_PI * M_PI * sin_theta));
-  return std::isfinite(*pdf);
+  *pdf = solid_angle_pdf(p_uv, *wi);
+  return *pdf > 0 && std::isfinite(*pdf);
+}
+
+// sin(theta) from the direction itself, as pdf() computes it: sqrt(x^2 + z^2) keeps its
+// relative precision near the poles, where sin(acos(y)) of a float y does not.
+float EnvironmentMap::solid_angle_pdf(double p_uv, const Vec3& w) {
+  const double x = w.x, y = w.y, z = w.z;
+  const double sin_theta = std::sqrt((x * x + z * z) / (x * x + y * y + z * z));
+  return sin_theta > 0 ? float(p_uv / (2 * M_PI * M_PI * sin_theta)) : 0.0f;
 }
 
 float EnvironmentMap::pdf(const Vec3& w) const {
   if (empty() || !(irradiance_ > 0)) return 0;
-  const Vec3 d = normalize(w);
-  const auto [u, v] = uv(d);
-  const double sin_theta = std::sin(M_PI * v);
-  if (!(sin_theta > 0)) return 0;
-  return float(distribution_.pdf(u, v) / (2 * M_PI * M_PI * sin_theta));
+  const auto [u, v] = uv(w);
+  return solid_angle_pdf(distribution_.pdf(u, v), w);
 }
 
 }  // namespace pdrt

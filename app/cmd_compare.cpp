@@ -33,11 +33,12 @@ void add_compare_command(CLI::App& app) {
     double adaptive_threshold = 0;
     int adaptive_target_spp = 64;
     std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
-    bool adaptive = false, quiet = false, no_plots = false, allow_long = false;
+    bool adaptive = false, quiet = false, no_plots = false, allow_long = false, strict = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("compare", "Compare samplers by the error of rendered images against a reference.");
-  cmd->add_option("scene", o->scene, "Scene JSON file")->required();
+  cmd->add_option("scene", o->scene, "Scene file: pdrt JSON, or pbrt-v4 (*.pbrt)")->required();
+  cmd->add_flag("--strict", o->strict, "pbrt scenes: refuse anything pdrt cannot represent instead of listing it");
   cmd->add_option("--out,-o", o->out, "Output directory (report, images, plots)")->required();
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
@@ -99,7 +100,7 @@ void add_compare_command(CLI::App& app) {
     std::string python;
     if (!o->no_plots) python = find_plot_python();
 
-    SceneDesc scene = load_scene(o->scene);
+    SceneDesc scene = load_scene(o->scene, o->strict);
     {
       std::ifstream in = open_for_reading(o->scene);
       std::stringstream ss;

@@ -70,11 +70,12 @@ void add_render_command(CLI::App& app) {
     std::optional<double> threshold;
     std::string metric, variance, decision, reconstruction;
     int threads = 0;
-    bool quiet = false, adaptive = false, allow_long = false;
+    bool quiet = false, adaptive = false, allow_long = false, strict = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
-  cmd->add_option("scene", o->scene, "Scene JSON file")->required();
+  cmd->add_option("scene", o->scene, "Scene file: pdrt JSON, or pbrt-v4 (*.pbrt)")->required();
+  cmd->add_flag("--strict", o->strict, "pbrt scenes: refuse anything pdrt cannot represent instead of listing it");
   cmd->add_option("--out,-o", o->outs,
                   "Output image: .exr (linear + AOVs), .png/.jpg (sRGB), .tif (linear); give -o again for more "
                   "formats of the same render")
@@ -127,7 +128,7 @@ void add_render_command(CLI::App& app) {
           throw UsageError("--out " + o->outs[i] + " is given twice");
     }
 
-    SceneDesc scene = load_scene(o->scene);
+    SceneDesc scene = load_scene(o->scene, o->strict);
     AdaptiveDesc& ad = scene.sampler.adaptive;
     ad.enabled = ad.enabled || o->adaptive || o->min_spp || o->max_spp || o->threshold || !o->metric.empty() ||
                  !o->variance.empty() || !o->decision.empty();

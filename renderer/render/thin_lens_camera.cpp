@@ -41,6 +41,7 @@ ThinLensCamera::Pose ThinLensCamera::pose_at(float time) const {
   p.forward = normalize(look - p.eye);
   p.right = normalize(cross(p.forward, desc_.up));
   p.up = cross(p.right, p.forward);
+  if (desc_.flip_x) p.right = -p.right;
   return p;
 }
 

@@ -25,6 +25,9 @@ struct CameraDesc {
   int aperture_blades = 0;     // 0 = circular aperture, >= 3 = regular polygon
   float aperture_rotation_deg = 0;
   float shutter_open = 0, shutter_close = 1;
+  // The film's x axis runs along up x forward instead of forward x up: the image mirrored left
+  // to right, as pbrt's left-handed camera space gives it (pbrt import, docs/pbrt-import.md).
+  bool flip_x = false;
   std::vector<CameraKey> motion;  // optional; sorted by time; overrides position/look_at when present
 };
 

@@ -1,5 +1,7 @@
 #include "renderer/scene/scene_loader.h"
 
+#include "renderer/scene/pbrt/pbrt_scene_builder.h"
+
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
@@ -86,7 +88,7 @@ SceneDesc SceneParser::parse() {
 
 void SceneParser::camera(const JsonObject& o) {
   o.allow({"position", "look_at", "up", "vfov_deg", "aperture_radius", "focus_distance", "aperture_blades",
-           "aperture_rotation_deg", "shutter", "motion"});
+           "aperture_rotation_deg", "shutter", "motion", "flip_x"});
   CameraDesc& c = scene_.camera;
   JsonNode pos = o.require("position"), look = o.require("look_at");
   c.position = pos.vec3();
@@ -116,6 +118,7 @@ void SceneParser::camera(const JsonObject& o) {
     if (c.aperture_blades == 1 || c.aperture_blades == 2) n->fail_got("must be 0 (circle) or >= 3");
   }
   if (auto n = o.get("aperture_rotation_deg")) c.aperture_rotation_deg = n->number();
+  if (auto n = o.get("flip_x")) c.flip_x = n->boolean();
   if (auto n = o.get("shutter")) {
     if (!n->value().is_array() || n->value().size() != 2) n->fail_got("must be [open, close]");
     c.shutter_open = n->at(0).number();
@@ -682,7 +685,14 @@ void SceneParser::load_objs() {
 
 }  // namespace
 
-SceneDesc load_scene(const fs::path& file) {
+bool is_pbrt_scene(const fs::path& file) { return file.extension() == ".pbrt"; }
+
+SceneDesc load_scene(const fs::path& file, bool strict) {
+  if (is_pbrt_scene(file)) {
+    PbrtImport imported = load_pbrt_scene(file, strict);
+    for (const std::string& line : imported.report) std::cerr << printable(line) << "\n";
+    return std::move(imported.scene);
+  }
   std::string reason;
   auto text = read_text_file(file, reason);
   if (!text) throw InputError(file.string() + ": cannot open: " + reason);

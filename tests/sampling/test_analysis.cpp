@@ -13,6 +13,8 @@
 
 #include "tests/support/cli_runner.h"
 
+#include "tests/support/point_checks.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -38,14 +40,6 @@ PointSet random_points(std::size_t n, int dim, uint64_t seed) {
   Rng rng(seed);
   for (std::size_t i = 0; i < n * dim; ++i) ps.coords.push_back(rng.uniform());
   return ps;
-}
-
-double brute_min_distance(const PointSet& ps, std::size_t n, bool periodic) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      best = std::min(best, distance_sq(ps.point(i), ps.point(j), periodic));
-  return std::sqrt(best);
 }
 
 // Regular k^dim grid at offset `offset` (in cells): points at (i + offset) / k.
@@ -131,7 +125,7 @@ TEST(Analysis, PeriodicDiscrepancySeesAHalfEmptyCircle) {
 TEST(Analysis, MinDistanceMatchesBruteForceBounded) {
   for (int dim : {1, 2, 3, 5}) {
     PointSet ps = random_points(700, dim, 11 + dim);
-    EXPECT_DOUBLE_EQ(min_distance(ps, false), brute_min_distance(ps, ps.size(), false)) << "dim " << dim;
+    EXPECT_DOUBLE_EQ(min_distance(ps, false), test::brute_min_distance(ps, ps.size(), false)) << "dim " << dim;
   }
 }
 
@@ -143,7 +137,7 @@ TEST(Analysis, MinDistanceMatchesBruteForcePeriodic) {
     a[0] = 1e-7, b[0] = 1.0 - 1e-7;
     ps.coords.insert(ps.coords.end(), a.begin(), a.end());
     ps.coords.insert(ps.coords.end(), b.begin(), b.end());
-    double expect = brute_min_distance(ps, ps.size(), true);
+    double expect = test::brute_min_distance(ps, ps.size(), true);
     EXPECT_DOUBLE_EQ(min_distance(ps, true), expect) << "dim " << dim;
     EXPECT_NEAR(expect, 2e-7, 1e-12);
     EXPECT_GT(min_distance(ps, false), expect);
@@ -160,7 +154,7 @@ TEST(Analysis, PrefixRelativeRadiusMatchesBruteForce) {
     std::vector<double> rho = prefix_relative_radius(ps, periodic);
     ASSERT_EQ(rho.size(), ps.size() - 1);
     for (std::size_t n = 2; n <= ps.size(); ++n)
-      EXPECT_DOUBLE_EQ(rho[n - 2], brute_min_distance(ps, n, periodic) / max_packing_distance(int64_t(n), 2))
+      EXPECT_DOUBLE_EQ(rho[n - 2], test::brute_min_distance(ps, n, periodic) / max_packing_distance(int64_t(n), 2))
           << "n " << n << " periodic " << periodic;
     EXPECT_DOUBLE_EQ(rho.back(), relative_radius(min_distance(ps, periodic), ps.size(), 2));
   }

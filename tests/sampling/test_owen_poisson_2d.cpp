@@ -6,6 +6,8 @@
 #include "sampling/generators/generator.h"
 #include "sampling/generators/owen_poisson_2d.h"
 
+#include "tests/support/point_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,24 +31,6 @@ const PointSet& table(uint64_t seed) {
   return it->second;
 }
 
-double torus(double a, double b) {
-  const double d = std::fabs(a - b);
-  return std::min(d, 1.0 - d);
-}
-
-// Minimum toroidal distance of every prefix, brute force: point i against every earlier one.
-std::vector<double> prefix_min_distance(const PointSet& ps) {
-  std::vector<double> out(ps.size(), INFINITY);
-  double running = INFINITY;
-  for (std::size_t i = 1; i < ps.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j)
-      running = std::min(running, std::hypot(torus(ps.coords[2 * i], ps.coords[2 * j]),
-                                             torus(ps.coords[2 * i + 1], ps.coords[2 * j + 1])));
-    out[i] = running;
-  }
-  return out;
-}
-
 TEST(OwenPoisson2D, EveryPowerOfTwoPrefixIsA02Net) {
   for (uint64_t seed : {1u, 2u, 3u, 4u}) {
     const std::vector<bool> nets = net_prefixes(table(seed));
@@ -61,7 +45,7 @@ TEST(OwenPoisson2D, EveryPowerOfTwoPrefixIsA02Net) {
 TEST(OwenPoisson2D, EveryPrefixFromSixteenPointsKeepsRhoAboveTheFamilyBar) {
   double worst_all = INFINITY;
   for (uint64_t seed : {1u, 2u, 3u, 4u}) {
-    const std::vector<double> d = prefix_min_distance(table(seed));
+    const std::vector<double> d = test::brute_prefix_min_distance(table(seed), true);
     double worst = INFINITY;
     for (std::size_t n = 16; n <= d.size(); ++n)
       worst = std::min(worst, d[n - 1] / std::sqrt(2.0 / (std::sqrt(3.0) * double(n))));
@@ -73,7 +57,7 @@ TEST(OwenPoisson2D, EveryPrefixFromSixteenPointsKeepsRhoAboveTheFamilyBar) {
 
 TEST(OwenPoisson2D, RadiusIsThePrefixMinimumDistance) {
   const PointSet& ps = table(1);
-  const std::vector<double> d = prefix_min_distance(ps);
+  const std::vector<double> d = test::brute_prefix_min_distance(ps, true);
   ASSERT_EQ(ps.radius.size(), ps.size());
   EXPECT_TRUE(std::isinf(ps.radius[0]));
   for (std::size_t i = 1; i < ps.size(); ++i) ASSERT_NEAR(ps.radius[i], d[i], 1e-12) << i;

@@ -6,6 +6,8 @@
 #include "sampling/generators/generator.h"
 #include "sampling/generators/stratified_poisson_2d.h"
 
+#include "tests/support/point_checks.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,25 +23,10 @@ PointSet draw(uint64_t seed, int64_t n, double prefix_floor = 0.65, double whole
   return stratified_poisson_2d(p);
 }
 
-// Minimum toroidal distance of every prefix by brute force, O(n^2).
-std::vector<double> brute_prefix_min(const PointSet& ps) {
-  std::vector<double> out(ps.size(), std::numeric_limits<double>::infinity());
-  double run = out[0];
-  for (std::size_t i = 1; i < ps.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      double dx = std::abs(ps.coords[2 * i] - ps.coords[2 * j]), dy = std::abs(ps.coords[2 * i + 1] - ps.coords[2 * j + 1]);
-      dx = std::min(dx, 1 - dx), dy = std::min(dy, 1 - dy);
-      run = std::min(run, std::sqrt(dx * dx + dy * dy));
-    }
-    out[i] = run;
-  }
-  return out;
-}
-
 TEST(StratifiedPoisson2D, EveryPrefixKeepsTheFloorAndTheWholeSetItsBar) {
   for (uint64_t seed : {1u, 2u, 3u}) {
     const PointSet ps = draw(seed, 1024);
-    const auto m = brute_prefix_min(ps);
+    const auto m = test::brute_prefix_min_distance(ps, true);
     for (std::size_t n = 16; n <= ps.size(); ++n)
       ASSERT_GE(m[n - 1] / max_packing_distance(int64_t(n), 2), 0.65) << "seed " << seed << " prefix " << n;
     EXPECT_GE(m.back() / max_packing_distance(1024, 2), 0.72) << seed;

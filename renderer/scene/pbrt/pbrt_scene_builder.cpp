@@ -1,0 +1,858 @@
+#include "renderer/scene/pbrt/pbrt_scene_builder.h"
+
+#include "renderer/scene/pbrt/pbrt_matrix.h"
+#include "renderer/scene/pbrt/pbrt_spectrum.h"
+#include "sampling/core/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace pdrt {
+namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
+
+struct TransformPair {
+  Mat4 t[2];  // at the shutter's start and end (TransformTimes)
+};
+
+struct AreaLight {
+  Vec3 radiance;
+  bool two_sided = false;
+  PbrtLocation at;
+};
+
+struct Attributes {
+  TransformPair ctm;
+  bool active[2] = {true, true};
+  bool reverse = false;
+  int material = -1;  // index into the scene's materials; -1 = pbrt's default (diffuse 0.5)
+  bool interface = false;  // the current material is "interface": shapes bound no surface
+  std::optional<AreaLight> area;
+};
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+class Builder {
+ public:
+  explicit Builder(bool strict) : strict_(strict) {}
+
+  PbrtImport run(const std::vector<PbrtDirective>& ds) {
+    for (const PbrtDirective& d : ds) {
+      directive(d);
+      for (const PbrtParam* p : d.params.unused())
+        note(p->at, "\"" + p->type + " " + p->name + "\" is not used by pdrt (ignored)");
+    }
+    if (!camera_seen_) {
+      // pbrt-v4's default camera: perspective, fov 90, at the origin looking down +z.
+      PbrtDirective d;
+      d.name = "Camera";
+      d.strings = {"perspective"};
+      d.at = last_.value_or(PbrtLocation{});
+      camera(d, TransformPair{}, true);
+    }
+    if (!attr_stack_.empty()) note(attr_stack_.back().first, "AttributeBegin is never closed (ignored)");
+    if (out_.scene.shapes.empty() && out_.scene.delta_lights.empty() && is_black(out_.scene.environment.radiance))
+      throw InputError((last_ ? last_->str() : std::string("<pbrt>")) + ": the scene has no shapes and no lights");
+    return std::move(out_);
+  }
+
+ private:
+  // ---- reporting
+  void note(const PbrtLocation& at, const std::string& what) {
+    std::string line = at.str() + ": " + what;
+    if (strict_) throw InputError(line + " [--strict]");
+    out_.report.push_back(line);
+  }
+  [[noreturn]] static void fail(const PbrtLocation& at, const std::string& what) { throw InputError(at.str() + ": " + what); }
+
+  // ---- transforms
+  void apply(const Mat4& m) {
+    for (int i = 0; i < 2; ++i)
+      if (cur_.active[i]) cur_.ctm.t[i] = cur_.ctm.t[i] * m;
+  }
+  void set(const Mat4& m) {
+    for (int i = 0; i < 2; ++i)
+      if (cur_.active[i]) cur_.ctm.t[i] = m;
+  }
+  bool moving() const { return !(cur_.ctm.t[0] == cur_.ctm.t[1]); }
+
+  // Places a shape or light whose object space the CTM maps to world: a static transform, or
+  // two keyframes at the TransformTimes.
+  void place(const PbrtLocation& at, Affine* transform, std::vector<MotionKey>* motion) {
+    for (const Mat4& m : cur_.ctm.t)
+      if (!m.affine()) fail(at, "the current transform is projective; shapes and lights need an affine one");
+    if (!moving()) {
+      *transform = cur_.ctm.t[0].to_affine();
+      return;
+    }
+    *transform = Affine{};
+    motion->clear();
+    for (int i = 0; i < 2; ++i) {
+      double shear = 0;
+      MotionKey k = decompose(cur_.ctm.t[i], &shear);
+      if (shear > 1e-4) note(at, "the transform at time " + fmt(times_[i]) + " shears (dropped: pdrt's motion keys hold scale, rotation, translation)");
+      k.time = float(times_[i]);
+      motion->push_back(k);
+    }
+  }
+
+  // ---- parameters
+  Vec3 color(const PbrtParams& ps, const std::string& name, Vec3 fallback, bool emission) {
+    const PbrtParam* p = ps.find(name);
+    if (!p) return fallback;
+    const std::string type = pbrt_canonical_type(p->type);
+    p->used = true;
+    if (type == "rgb") {
+      if (p->numbers.size() != 3) fail(p->at, p->where().substr(p->at.str().size() + 2) + " needs 3 values, got " + std::to_string(p->numbers.size()));
+      Vec3 c{float(p->numbers[0]), float(p->numbers[1]), float(p->numbers[2])};
+      for (int i = 0; i < 3; ++i)
+        if (!(c[i] >= 0)) fail(p->at, "\"" + p->type + " " + name + "\" must have components >= 0, got " + fmt(c[i]));
+      return c;
+    }
+    if (type == "blackbody") {
+      if (p->numbers.size() != 1 || !(p->numbers[0] > 0))
+        fail(p->at, "\"blackbody " + name + "\" takes one temperature > 0 (kelvin)");
+      return blackbody_rgb(p->numbers[0]);
+    }
+    if (type == "spectrum") {
+      if (!p->strings.empty()) {
+        note(p->at, "named spectrum \"" + p->strings[0] + "\" for \"" + name + "\" is not supported (default used)");
+        return fallback;
+      }
+      if (p->numbers.size() < 2 || p->numbers.size() % 2)
+        fail(p->at, "\"spectrum " + name + "\" needs (wavelength, value) pairs");
+      return sampled_spectrum_to_rgb(p->numbers, emission);
+    }
+    if (type == "float" && p->numbers.size() == 1) return Vec3(float(p->numbers[0]));
+    if (type == "texture") {
+      note(p->at, "texture \"" + p->strings[0] + "\" for \"" + name + "\" is not supported yet (default used)");
+      return fallback;
+    }
+    fail(p->at, p->where().substr(p->at.str().size() + 2) + " must be rgb, spectrum, blackbody or a texture");
+  }
+
+  float positive(const PbrtParams& ps, const std::string& name, float fallback, bool allow_zero = false) {
+    std::optional<double> v = ps.find_float(name);
+    if (!v) return fallback;
+    if (!(allow_zero ? *v >= 0 : *v > 0) || !std::isfinite(*v))
+      fail(ps.find(name)->at, "\"float " + name + "\" must be " + (allow_zero ? ">= 0" : "> 0") + ", got " + fmt(*v));
+    return float(*v);
+  }
+
+  // pbrt-v4 roughness (alpha when remaproughness is false, else alpha = sqrt(roughness)) as
+  // pdrt's perceptual roughness (alpha = roughness^2).
+  float roughness(const PbrtDirective& d, const PbrtParams& ps) {
+    auto one = [&](const char* n) -> std::optional<double> {
+      const PbrtParam* p = ps.find(n);
+      if (!p) return std::nullopt;
+      if (pbrt_canonical_type(p->type) == "texture") {
+        p->used = true;
+        note(p->at, std::string("texture roughness \"") + n + "\" is not supported yet (0 used)");
+        return 0.0;
+      }
+      double v = *ps.find_float(n);
+      if (!(v >= 0) || !std::isfinite(v)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(v));
+      return v;
+    };
+    std::optional<double> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
+    double ru = u ? *u : r.value_or(0), rv = v ? *v : r.value_or(0);
+    if (ru != rv) note(d.at, "anisotropic roughness (" + fmt(ru) + ", " + fmt(rv) + ") is not supported (their mean used)");
+    double rough = 0.5 * (ru + rv);
+    bool remap = ps.get_bool("remaproughness", true);
+    double alpha = remap ? std::sqrt(rough) : rough;
+    return float(std::min(1.0, std::sqrt(alpha)));
+  }
+
+  // ---- directives
+  void directive(const PbrtDirective& d) {
+    last_ = d.at;
+    const std::string& n = d.name;
+    const auto& a = d.numbers;
+    if (n == "Identity") return set(Mat4{});
+    if (n == "Translate") return apply(Mat4::translate(a[0], a[1], a[2]));
+    if (n == "Scale") return apply(Mat4::scale(a[0], a[1], a[2]));
+    if (n == "Rotate") {
+      if (a[1] == 0 && a[2] == 0 && a[3] == 0) fail(d.at, "Rotate needs a non-zero axis");
+      return apply(Mat4::rotate(a[0], a[1], a[2], a[3]));
+    }
+    if (n == "LookAt") {
+      auto m = Mat4::look_at({float(a[0]), float(a[1]), float(a[2])}, {float(a[3]), float(a[4]), float(a[5])},
+                             {float(a[6]), float(a[7]), float(a[8])});
+      if (!m) fail(d.at, "LookAt needs distinct eye and look points and an up vector not along the view");
+      return apply(*m);
+    }
+    if (n == "Transform") return set(Mat4::from_pbrt(a.data()));
+    if (n == "ConcatTransform") return apply(Mat4::from_pbrt(a.data()));
+    if (n == "CoordinateSystem") {
+      named_[d.strings[0]] = cur_.ctm;
+      return;
+    }
+    if (n == "CoordSysTransform") {
+      auto it = named_.find(d.strings[0]);
+      if (it == named_.end()) fail(d.at, "unknown coordinate system \"" + d.strings[0] + "\"");
+      for (int i = 0; i < 2; ++i)
+        if (cur_.active[i]) cur_.ctm.t[i] = it->second.t[i];
+      return;
+    }
+    if (n == "ActiveTransform") {
+      cur_.active[0] = d.strings[0] != "EndTime";
+      cur_.active[1] = d.strings[0] != "StartTime";
+      return;
+    }
+    if (n == "TransformTimes") {
+      if (in_world_) fail(d.at, "TransformTimes must come before WorldBegin");
+      if (!(a[0] <= a[1])) fail(d.at, "TransformTimes needs start <= end, got " + fmt(a[0]) + " > " + fmt(a[1]));
+      times_[0] = a[0], times_[1] = a[1];
+      return;
+    }
+    if (n == "ReverseOrientation") {
+      cur_.reverse = !cur_.reverse;
+      return;
+    }
+    if (n == "AttributeBegin" || n == "TransformBegin") {
+      attr_stack_.push_back({d.at, cur_});
+      attr_kind_.push_back(n == "TransformBegin");
+      return;
+    }
+    if (n == "AttributeEnd" || n == "TransformEnd") {
+      if (attr_stack_.empty()) fail(d.at, n + " without a matching " + (n == "AttributeEnd" ? "AttributeBegin" : "TransformBegin"));
+      const bool transform_only = attr_kind_.back();
+      if (transform_only != (n == "TransformEnd"))
+        fail(d.at, n + " closes the " + (transform_only ? "TransformBegin" : "AttributeBegin") + " at " + attr_stack_.back().first.str());
+      if (transform_only) {
+        cur_.ctm = attr_stack_.back().second.ctm;
+        std::copy(attr_stack_.back().second.active, attr_stack_.back().second.active + 2, cur_.active);
+      } else {
+        cur_ = attr_stack_.back().second;
+      }
+      attr_stack_.pop_back();
+      attr_kind_.pop_back();
+      return;
+    }
+    if (n == "Camera") return camera(d, cur_.ctm);
+    if (n == "Film") return film(d);
+    if (n == "PixelFilter") return filter(d);
+    if (n == "Sampler") return sampler(d);
+    if (n == "Integrator") return integrator(d);
+    if (n == "Accelerator") return;  // pdrt always builds Embree's BVH; its parameters are reported unused
+    if (n == "ColorSpace") {
+      if (d.strings[0] != "srgb") note(d.at, "ColorSpace \"" + d.strings[0] + "\" is not supported (pdrt renders linear sRGB)");
+      return;
+    }
+    if (n == "Option") return;  // reported as unused parameters
+    if (n == "WorldBegin") {
+      if (in_world_) fail(d.at, "a second WorldBegin");
+      in_world_ = true;
+      named_["world"] = TransformPair{};
+      cur_.ctm = TransformPair{};
+      return;
+    }
+    if (n == "WorldEnd") return;  // pbrt-v3
+    if (n == "MakeNamedMedium" || n == "MediumInterface") {
+      note(d.at, n + " is not supported: pdrt has no participating media (ignored)");
+      for (const PbrtParam& p : d.params.list) p.used = true;
+      return;
+    }
+    if (n == "Attribute") {
+      note(d.at, "Attribute is not supported (ignored)");
+      for (const PbrtParam& p : d.params.list) p.used = true;
+      return;
+    }
+    if (n == "Texture") {
+      note(d.at, "Texture \"" + d.strings[0] + "\" (" + d.strings[2] + ") is not supported yet (ignored)");
+      for (const PbrtParam& p : d.params.list) p.used = true;
+      return;
+    }
+    if (!in_world_ && (n == "Material" || n == "MakeNamedMaterial" || n == "NamedMaterial" || n == "Shape" ||
+                       n == "LightSource" || n == "AreaLightSource" || n == "ObjectBegin" || n == "ObjectInstance"))
+      fail(d.at, n + " must come after WorldBegin");
+    if (n == "Material") {
+      int m = material(d, d.strings[0], d.params, "material at " + d.at.str());
+      cur_.interface = m == -2;
+      cur_.material = m == -2 ? -1 : m;
+      return;
+    }
+    if (n == "MakeNamedMaterial") {
+      std::optional<std::string> type = d.params.find_string("type");
+      if (!type) fail(d.at, "MakeNamedMaterial \"" + d.strings[0] + "\" needs \"string type\"");
+      named_materials_[d.strings[0]] = material(d, *type, d.params, d.strings[0]);
+      return;
+    }
+    if (n == "NamedMaterial") {
+      auto it = named_materials_.find(d.strings[0]);
+      if (it == named_materials_.end()) fail(d.at, "unknown named material \"" + d.strings[0] + "\"");
+      cur_.interface = it->second == -2;
+      cur_.material = it->second == -2 ? -1 : it->second;
+      return;
+    }
+    if (n == "AreaLightSource") {
+      if (d.strings[0] != "diffuse") {
+        note(d.at, "AreaLightSource \"" + d.strings[0] + "\" is not supported (no emission)");
+        for (const PbrtParam& p : d.params.list) p.used = true;
+        cur_.area.reset();
+        return;
+      }
+      AreaLight l;
+      l.at = d.at;
+      Vec3 L = color(d.params, "L", Vec3(1.0f), true);
+      float scale = float(d.params.get_float("scale", 1));
+      if (!(scale >= 0)) fail(d.at, "\"float scale\" must be >= 0");
+      if (d.params.find_float("power")) note(d.params.find("power")->at, "\"power\" of an area light is not supported (ignored)");
+      l.radiance = L * scale;
+      l.two_sided = d.params.get_bool("twosided", false);
+      cur_.area = l;
+      return;
+    }
+    if (n == "LightSource") return light(d);
+    if (n == "Shape") return shape(d);
+    if (n == "ObjectBegin") {
+      if (object_) fail(d.at, "ObjectBegin inside the ObjectBegin at " + object_at_.str());
+      attr_stack_.push_back({d.at, cur_});
+      attr_kind_.push_back(false);
+      object_ = d.strings[0];
+      object_at_ = d.at;
+      if (objects_.count(*object_)) fail(d.at, "object \"" + *object_ + "\" is defined twice");
+      objects_[*object_] = {};
+      object_ctm_ = cur_.ctm;
+      return;
+    }
+    if (n == "ObjectEnd") {
+      if (!object_) fail(d.at, "ObjectEnd without ObjectBegin");
+      object_.reset();
+      cur_ = attr_stack_.back().second;
+      attr_stack_.pop_back();
+      attr_kind_.pop_back();
+      return;
+    }
+    if (n == "ObjectInstance") {
+      if (object_) fail(d.at, "ObjectInstance inside an object definition");
+      auto it = objects_.find(d.strings[0]);
+      if (it == objects_.end()) fail(d.at, "unknown object \"" + d.strings[0] + "\"");
+      // Instances are copied (pdrt's scene has no instancing yet): instance(t) * object shapes.
+      for (const ShapeDesc& s0 : it->second) {
+        ShapeDesc s = s0;
+        Affine t;
+        std::vector<MotionKey> motion;
+        place(d.at, &t, &motion);
+        if (!s.motion.empty() && !motion.empty()) {
+          note(d.at, "a moving instance of a moving object is not supported (the instance's motion is dropped)");
+          motion.clear();
+        }
+        s.transform = t * s.transform;
+        if (!motion.empty()) s.motion = motion;
+        s.where = d.at.str();
+        out_.scene.shapes.push_back(std::move(s));
+      }
+      return;
+    }
+    fail(d.at, "directive " + n + " is not handled");  // the parser knows no other names
+  }
+
+  void camera(const PbrtDirective& d, const TransformPair& camera_from_world, bool implicit = false) {
+    if (camera_seen_) fail(d.at, "a second Camera");
+    if (in_world_ && !implicit) fail(d.at, "Camera must come before WorldBegin");
+    camera_seen_ = true;
+    named_["camera"] = camera_from_world;
+    CameraDesc& c = out_.scene.camera;
+    const PbrtParams& ps = d.params;
+    if (d.strings[0] != "perspective") {
+      note(d.at, "Camera \"" + d.strings[0] + "\" is not supported (a perspective camera is used)");
+      for (const PbrtParam& p : ps.list) p.used = true;
+    }
+    Mat4 world_from_camera[2];
+    for (int i = 0; i < 2; ++i) {
+      auto inv = camera_from_world.t[i].inverse();
+      if (!inv || !inv->affine()) fail(d.at, "the camera transform is singular or projective");
+      world_from_camera[i] = *inv;
+    }
+    auto pose = [&](const Mat4& w, Vec3* pos, Vec3* fwd, Vec3* up, Vec3* right) {
+      *pos = w.point({0, 0, 0});
+      *fwd = normalize(w.vector({0, 0, 1}));
+      *up = normalize(w.vector({0, 1, 0}));
+      *right = w.vector({1, 0, 0});
+    };
+    Vec3 pos, fwd, up, right;
+    pose(world_from_camera[0], &pos, &fwd, &up, &right);
+    c.position = pos;
+    c.up = up;
+    // pbrt's raster x follows camera +x; pdrt's follows forward x up unless flipped.
+    c.flip_x = dot(right, cross(fwd, up)) < 0;
+    const float focal = positive(ps, "focaldistance", 1e6f);
+    c.look_at = pos + fwd;
+    c.focus_distance = focal;
+    c.aperture_radius = positive(ps, "lensradius", 0, true);
+    float open = float(ps.get_float("shutteropen", 0)), close = float(ps.get_float("shutterclose", 1));
+    if (!(open <= close)) fail(d.at, "shutteropen must be <= shutterclose");
+    c.shutter_open = open, c.shutter_close = close;
+    if (!(camera_from_world.t[0] == camera_from_world.t[1])) {
+      Vec3 p1, f1, u1, r1;
+      pose(world_from_camera[1], &p1, &f1, &u1, &r1);
+      if (length(u1 - up) > 1e-4f) note(d.at, "the camera's up vector turns during the shutter (pdrt keeps the start's)");
+      c.motion = {{float(times_[0]), pos, pos + fwd}, {float(times_[1]), p1, p1 + f1}};
+      if (!(times_[0] >= open && times_[1] <= close) || times_[0] == times_[1]) {
+        note(d.at, "camera motion keys at TransformTimes " + fmt(times_[0]) + ", " + fmt(times_[1]) +
+                       " outside the shutter or at one time (camera motion dropped)");
+        c.motion.clear();
+      }
+    }
+    fov_ = float(ps.get_float("fov", 90));
+    if (!(fov_ > 0 && fov_ < 180)) fail(ps.find("fov")->at, "\"float fov\" must be in (0, 180), got " + fmt(fov_));
+    if (const PbrtParam* p = ps.find("screenwindow")) {
+      p->used = true;
+      note(p->at, "\"screenwindow\" is not supported (the default window is used)");
+    }
+    if (const PbrtParam* p = ps.find("frameaspectratio")) {
+      p->used = true;
+      note(p->at, "\"frameaspectratio\" is not supported (the film's aspect is used)");
+    }
+    camera_at_ = d.at;
+  }
+
+  void film(const PbrtDirective& d) {
+    if (d.strings[0] != "rgb" && d.strings[0] != "gbuffer")
+      note(d.at, "Film \"" + d.strings[0] + "\" is not supported (rgb used)");
+    const PbrtParams& ps = d.params;
+    auto res = [&](const char* name, int fallback) {
+      std::optional<int64_t> v = ps.find_int(name);
+      if (!v) return fallback;
+      if (*v < 1 || *v > 65536) fail(ps.find(name)->at, std::string("\"integer ") + name + "\" must be in [1, 65536], got " + std::to_string(*v));
+      return int(*v);
+    };
+    out_.scene.film.width = res("xresolution", 1280);
+    out_.scene.film.height = res("yresolution", 720);
+    if (const PbrtParam* p = ps.find("filename")) p->used = true;  // pdrt render -o names the output
+    if (const PbrtParam* p = ps.find("cropwindow")) {
+      p->used = true;
+      note(p->at, "\"cropwindow\" is not supported (the whole film is rendered)");
+    }
+    for (const char* k : {"iso", "exposuretime", "whitebalance"})
+      if (const PbrtParam* p = ps.find(k)) {
+        p->used = true;
+        note(p->at, std::string("\"") + k + "\" is not supported (ignored)");
+      }
+  }
+
+  void filter(const PbrtDirective& d) {
+    FilterDesc& f = out_.scene.film.filter;
+    const std::string& t = d.strings[0];
+    float def = 0.5f;
+    if (t == "box") f.type = FilterType::Box, def = 0.5f;
+    else if (t == "gaussian") f.type = FilterType::Gaussian, def = 1.5f;
+    else if (t == "mitchell") f.type = FilterType::Mitchell, def = 2;
+    else if (t == "triangle") f.type = FilterType::Tent, def = 2;
+    else {
+      note(d.at, "PixelFilter \"" + t + "\" is not supported (gaussian used)");
+      f.type = FilterType::Gaussian, def = 1.5f;
+      for (const PbrtParam& p : d.params.list) p.used = true;
+    }
+    const float rx = positive(d.params, "xradius", def), ry = positive(d.params, "yradius", def);
+    if (rx != ry) note(d.at, "different x and y filter radii are not supported (their mean used)");
+    f.radius = 0.5f * (rx + ry);
+    if (t == "gaussian" && d.params.has("sigma"))
+      note(d.params.find("sigma")->at, "\"sigma\" is not supported: pdrt's Gaussian is Cook's exp(-d^2) (ignored)");
+    if (t == "mitchell")
+      for (const char* k : {"B", "C"})
+        if (auto v = d.params.find_float(k); v && std::abs(*v - 1.0 / 3) > 1e-6)
+          note(d.params.find(k)->at, std::string("Mitchell ") + k + " other than 1/3 is not supported (1/3 used)");
+  }
+
+  void sampler(const PbrtDirective& d) {
+    const std::string& t = d.strings[0];
+    SamplerDesc& s = out_.scene.sampler;
+    if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = "sobol";
+    else if (t == "pmj02bn") s.type = "poisson-02";
+    else if (t == "stratified") s.type = "jitter";
+    else if (t == "independent") s.type = "random";
+    else note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");
+    int64_t spp = 16;
+    if (t == "stratified") {
+      spp = d.params.get_int("xsamples", 4) * d.params.get_int("ysamples", 4);
+      d.params.find_bool("jitter");
+    } else {
+      spp = d.params.get_int("pixelsamples", 16);
+    }
+    if (spp < 1 || spp > (int64_t(1) << 24)) fail(d.at, "the sample count must be in [1, 2^24], got " + std::to_string(spp));
+    s.spp = int(spp);
+    if (auto seed = d.params.find_int("seed")) s.seed = uint64_t(*seed);
+    d.params.find_string("randomization");
+  }
+
+  void integrator(const PbrtDirective& d) {
+    const std::string& t = d.strings[0];
+    if (t != "path" && t != "volpath")
+      fail(d.at, "Integrator \"" + t + "\" is not supported: pdrt is a unidirectional path tracer (use \"path\" or \"volpath\")");
+    int64_t depth = d.params.get_int("maxdepth", 5);
+    if (depth < 1 || depth > 100000) fail(d.at, "\"integer maxdepth\" must be in [1, 100000], got " + std::to_string(depth));
+    out_.scene.integrator.max_depth = int(depth);
+    if (auto v = d.params.find_string("lightsampler"); v && *v != "bvh")
+      note(d.params.find("lightsampler")->at, "light sampler \"" + *v + "\" is not supported (pdrt's BVH light sampler used)");
+    d.params.find_bool("regularize");
+  }
+
+  // Returns the material's index, or -2 for "interface" (a medium boundary, no surface).
+  int material(const PbrtDirective& d, const std::string& type, const PbrtParams& ps, const std::string& name) {
+    Material m;
+    m.name = name;
+    for (const char* k : {"displacement", "normalmap"})
+      if (const PbrtParam* p = ps.find(k)) {
+        p->used = true;
+        note(p->at, std::string("\"") + k + "\" is not supported (ignored)");
+      }
+    if (type == "" || type == "none" || type == "interface") return -2;
+    if (type == "diffuse") {
+      m.type = MaterialType::Diffuse;
+      m.albedo = color(ps, "reflectance", Vec3(0.5f), false);
+    } else if (type == "conductor" || type == "coatedconductor") {
+      if (type == "coatedconductor") note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
+      m.type = MaterialType::Conductor;
+      m.roughness = roughness(d, ps);
+      const std::string pre = type == "coatedconductor" ? "conductor." : "";
+      const PbrtParam* refl = ps.find(pre + "reflectance");
+      if (refl) {
+        // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same).
+        Vec3 r = color(ps, pre + "reflectance", Vec3(0.0f), false);
+        m.eta = Vec3(1.0f);
+        for (int c = 0; c < 3; ++c) {
+          float rc = std::clamp(r[c], 0.0f, 0.9999f);
+          m.k[c] = 2 * std::sqrt(rc) / std::sqrt(1 - rc);
+        }
+      } else {
+        m.eta = metal_param(ps, pre + "eta", true);
+        m.k = metal_param(ps, pre + "k", false);
+      }
+    } else if (type == "dielectric" || type == "thindielectric") {
+      if (type == "thindielectric") note(d.at, "thindielectric is not supported (a solid dielectric is used)");
+      m.type = MaterialType::Dielectric;
+      m.albedo = Vec3(1.0f);
+      const PbrtParam* e = ps.find("eta");
+      if (e && pbrt_canonical_type(e->type) == "spectrum") {
+        e->used = true;
+        m.ior = named_glass_ior(*e);
+      } else {
+        m.ior = positive(ps, "eta", 1.5f);
+      }
+      m.roughness = roughness(d, ps);
+    } else {
+      note(d.at, "material \"" + type + "\" is not supported (diffuse 0.5 used)");
+      for (const PbrtParam& p : ps.list) p.used = true;
+      m.type = MaterialType::Diffuse;
+      m.albedo = Vec3(0.5f);
+    }
+    out_.scene.materials.push_back(m);
+    return int(out_.scene.materials.size()) - 1;
+  }
+
+  // A conductor's eta or k: rgb, or pbrt-v4's named metal spectra for the metals pdrt has.
+  Vec3 metal_param(const PbrtParams& ps, const std::string& name, bool eta) {
+    const PbrtParam* p = ps.find(name);
+    const NamedMetal* cu = find_named_metal("Cu");  // pbrt-v4's default conductor is copper
+    if (!p) return eta ? cu->eta : cu->k;
+    p->used = true;
+    if (pbrt_canonical_type(p->type) == "spectrum" && !p->strings.empty()) {
+      const std::string& s = p->strings[0];
+      for (const char* metal : {"Au", "Ag", "Cu", "Al"})
+        if (s == std::string("metal-") + metal + (eta ? "-eta" : "-k")) return eta ? find_named_metal(metal)->eta : find_named_metal(metal)->k;
+      note(p->at, "named spectrum \"" + s + "\" is not supported (copper used)");
+      return eta ? cu->eta : cu->k;
+    }
+    if (pbrt_canonical_type(p->type) == "float" && p->numbers.size() == 1) return Vec3(float(p->numbers[0]));
+    p->used = false;
+    return color(ps, name, eta ? cu->eta : cu->k, false);
+  }
+
+  // pbrt-v4's named glasses at the sodium d line (587.6 nm): pdrt's dielectric takes one index.
+  float named_glass_ior(const PbrtParam& p) {
+    static const std::map<std::string, float> kGlass = {{"glass-BK7", 1.5168f}, {"glass-BAF10", 1.6700f},
+                                                        {"glass-FK51A", 1.4866f}, {"glass-LASF9", 1.8503f},
+                                                        {"glass-F5", 1.6034f}, {"glass-F10", 1.6200f},
+                                                        {"glass-F11", 1.6209f}};
+    if (!p.strings.empty()) {
+      auto it = kGlass.find(p.strings[0]);
+      if (it != kGlass.end()) return it->second;
+      note(p.at, "named spectrum \"" + p.strings[0] + "\" is not supported (1.5 used)");
+      return 1.5f;
+    }
+    note(p.at, "a spectrally varying index is not supported (its value nearest 550 nm used)");
+    double best = 1.5, dist = 1e30;
+    for (size_t i = 0; i + 1 < p.numbers.size(); i += 2)
+      if (std::abs(p.numbers[i] - 550) < dist) dist = std::abs(p.numbers[i] - 550), best = p.numbers[i + 1];
+    if (!(best > 0)) fail(p.at, "the index of refraction must be > 0");
+    return float(best);
+  }
+
+  int current_material() {
+    if (cur_.material >= 0) return cur_.material;
+    if (default_material_ < 0) {
+      Material m;
+      m.name = "pbrt default";
+      m.type = MaterialType::Diffuse;
+      m.albedo = Vec3(0.5f);
+      out_.scene.materials.push_back(m);
+      default_material_ = int(out_.scene.materials.size()) - 1;
+    }
+    return default_material_;
+  }
+
+  void light(const PbrtDirective& d) {
+    const PbrtParams& ps = d.params;
+    const std::string& t = d.strings[0];
+    const float scale = float(ps.get_float("scale", 1));
+    if (!(scale >= 0) || !std::isfinite(scale)) fail(d.at, "\"float scale\" must be >= 0");
+    if (t == "point" || t == "spot") {
+      DeltaLightDesc l;
+      l.kind = t == "point" ? DeltaLightDesc::Kind::Point : DeltaLightDesc::Kind::Spot;
+      Vec3 I = color(ps, "I", Vec3(1.0f), true) * scale;
+      std::vector<Vec3> from = ps.point3s("from");
+      l.position = from.empty() ? Vec3(0.0f) : from[0];
+      if (t == "spot") {
+        std::vector<Vec3> to = ps.point3s("to");
+        const Vec3 target = to.empty() ? Vec3(0, 0, 1) : to[0];
+        if (length(target - l.position) == 0) fail(d.at, "a spot light needs \"to\" different from \"from\"");
+        l.direction = normalize(target - l.position);
+        const double cone = ps.get_float("coneangle", 30), delta = ps.get_float("conedeltaangle", 5);
+        if (!(cone > 0 && cone <= 180)) fail(d.at, "\"float coneangle\" must be in (0, 180], got " + fmt(cone));
+        l.cos_cone = float(std::cos(cone * kPiD / 180));
+        l.cos_falloff_start = float(std::cos(std::clamp(cone - delta, 0.0, cone) * kPiD / 180));
+      }
+      if (auto power = ps.find_float("power")) {
+        // pbrt-v4: the intensity that radiates `power` watts (4 pi I for a point light; a spot
+        // light's cone integral), by luminance.
+        const double solid = t == "point" ? 4 * kPiD : 2 * kPiD * (1 - 0.5 * (l.cos_cone + l.cos_falloff_start));
+        const double lum = luminance(I);
+        if (lum > 0) I = I * float(*power / (solid * lum));
+      }
+      l.intensity = I;
+      place(d.at, &l.transform, &l.motion);
+      out_.scene.delta_lights.push_back(l);
+      return;
+    }
+    if (t == "distant") {
+      DeltaLightDesc l;
+      l.kind = DeltaLightDesc::Kind::Distant;
+      Vec3 L = color(ps, "L", Vec3(1.0f), true) * scale;
+      std::vector<Vec3> from = ps.point3s("from"), to = ps.point3s("to");
+      const Vec3 f = from.empty() ? Vec3(0.0f) : from[0], g = to.empty() ? Vec3(0, 0, 1) : to[0];
+      if (length(g - f) == 0) fail(d.at, "a distant light needs \"to\" different from \"from\"");
+      if (moving()) note(d.at, "a moving distant light is not supported (its start direction is used)");
+      if (!cur_.ctm.t[0].affine()) fail(d.at, "the current transform is projective");
+      const Vec3 travel = cur_.ctm.t[0].vector(g - f);
+      if (!(length(travel) > 0)) fail(d.at, "the current transform collapses the light's direction");
+      l.direction = normalize(travel);
+      if (auto e = ps.find_float("illuminance")) {
+        const double lum = luminance(L);
+        if (lum > 0) L = L * float(*e / lum);
+      }
+      l.irradiance = L;
+      out_.scene.delta_lights.push_back(l);
+      return;
+    }
+    if (t == "infinite") {
+      if (const PbrtParam* f = ps.find("filename")) {
+        f->used = true;
+        note(f->at, "environment images are not supported yet (the light is skipped)");
+        return;
+      }
+      if (!is_black(out_.scene.environment.radiance)) {
+        note(d.at, "a second infinite light is not supported (skipped)");
+        for (const PbrtParam& p : ps.list) p.used = true;
+        return;
+      }
+      Vec3 L = color(ps, "L", Vec3(1.0f), true) * scale;
+      if (auto e = ps.find_float("illuminance")) {
+        // Illuminance of the upper hemisphere: pi L (by luminance).
+        const double lum = luminance(L);
+        if (lum > 0) L = L * float(*e / (kPiD * lum));
+      }
+      out_.scene.environment.radiance = L;
+      return;
+    }
+    note(d.at, "LightSource \"" + t + "\" is not supported (skipped)");
+    for (const PbrtParam& p : ps.list) p.used = true;
+  }
+
+  void shape(const PbrtDirective& d) {
+    const PbrtParams& ps = d.params;
+    const std::string& t = d.strings[0];
+    if (cur_.interface) {
+      for (const PbrtParam& p : ps.list) p.used = true;
+      return;  // an interface bounds media only: nothing to see
+    }
+    if (const PbrtParam* p = ps.find("alpha")) {
+      p->used = true;
+      note(p->at, "\"alpha\" cut-outs are not supported (the shape is opaque)");
+    }
+    ShapeDesc s;
+    s.where = d.at.str();
+    const bool flip = cur_.reverse != (cur_.ctm.t[0].det3() < 0);
+    if (t == "sphere") {
+      s.kind = ShapeDesc::Kind::Sphere;
+      s.radius = positive(ps, "radius", 1);
+      const double zmin = ps.get_float("zmin", -s.radius), zmax = ps.get_float("zmax", s.radius), phimax = ps.get_float("phimax", 360);
+      if (zmin > -s.radius || zmax < s.radius || phimax < 360) note(d.at, "partial spheres are not supported (the whole sphere is used)");
+      if (flip && cur_.area) note(d.at, "an inward-facing emitting sphere is not supported (it emits outward)");
+    } else if (t == "trianglemesh" || t == "loopsubdiv" || t == "bilinearmesh") {
+      std::vector<Vec3> P = ps.point3s("P");
+      std::vector<int64_t> idx = ps.ints("indices");
+      if (P.empty()) fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
+      if (t == "trianglemesh" && idx.empty()) {
+        if (P.size() != 3) fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
+        idx = {0, 1, 2};
+      }
+      if (t == "bilinearmesh") {
+        if (idx.empty() && P.size() == 4) idx = {0, 1, 2, 3};
+        if (idx.size() % 4) fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
+        std::vector<int64_t> tri;
+        for (size_t i = 0; i < idx.size(); i += 4) {
+          // Vertices p00 p10 p01 p11: two triangles (exact for planar patches).
+          tri.insert(tri.end(), {idx[i], idx[i + 1], idx[i + 3], idx[i], idx[i + 3], idx[i + 2]});
+        }
+        idx = tri;
+        note(d.at, "bilinear patches are split into two triangles each (exact only where they are planar)");
+      }
+      if (t == "loopsubdiv") {
+        note(d.at, "Loop subdivision is not supported yet (the control mesh is used)");
+        ps.find_int("levels");
+      }
+      if (idx.size() % 3) fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
+      for (int64_t i : idx)
+        if (i < 0 || uint64_t(i) >= P.size())
+          fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
+      for (const Vec3& p : P)
+        if (!is_finite(p)) fail(ps.find("P")->at, "\"P\" holds a non-finite coordinate");
+      std::vector<Vec3> N = ps.normal3s("N");
+      if (!N.empty() && N.size() != P.size())
+        fail(ps.find("N")->at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
+      for (Vec3& n : N)
+        if (!(length(n) > 0) || !is_finite(n)) fail(ps.find("N")->at, "\"N\" holds a zero or non-finite normal");
+      ps.point2s("uv");  // texture coordinates wait for textures
+      if (const PbrtParam* p = ps.find("uv")) note(p->at, "texture coordinates are not used yet (ignored)");
+      for (const char* k : {"S", "faceIndices"})
+        if (const PbrtParam* p = ps.find(k)) p->used = true;
+      s.mesh.positions = std::move(P);
+      s.mesh.normals = std::move(N);
+      s.mesh.indices.reserve(idx.size());
+      for (size_t i = 0; i < idx.size(); i += 3) {
+        uint32_t a = uint32_t(idx[i]), b = uint32_t(idx[i + 1]), c = uint32_t(idx[i + 2]);
+        const Vec3 &pa = s.mesh.positions[a], &pb = s.mesh.positions[b], &pc = s.mesh.positions[c];
+        const Vec3 ng = cross(pb - pa, pc - pa);
+        if (!(length(ng) > 0)) continue;  // degenerate
+        // pbrt's geometric normal follows the shading normals when there are some, else the
+        // winding, reversed by ReverseOrientation and by a handedness-swapping transform.
+        bool swap = flip;
+        if (!s.mesh.normals.empty()) {
+          const Vec3 ns = s.mesh.normals[a] + s.mesh.normals[b] + s.mesh.normals[c];
+          swap = dot(ng, ns) < 0;
+          if (cur_.ctm.t[0].det3() < 0) swap = !swap;
+        }
+        if (swap) std::swap(b, c);
+        s.mesh.indices.insert(s.mesh.indices.end(), {a, b, c});
+      }
+      if (s.mesh.indices.empty()) {
+        note(d.at, "the mesh has only degenerate triangles (skipped)");
+        return;
+      }
+    } else if (t == "disk") {
+      const double h = ps.get_float("height", 0), r = positive(ps, "radius", 1), ri = positive(ps, "innerradius", 0, true);
+      if (ps.get_float("phimax", 360) < 360) note(d.at, "partial disks are not supported (the whole disk is used)");
+      if (!(ri < r)) fail(d.at, "\"innerradius\" must be < \"radius\"");
+      // A fan (or ring) of 256 triangles; the polygon's area is 0.01 % below the disk's.
+      const int n = 256;
+      for (int i = 0; i < n; ++i) {
+        const double phi = 2 * kPiD * i / n;
+        s.mesh.positions.push_back({float(r * std::cos(phi)), float(r * std::sin(phi)), float(h)});
+        if (ri > 0) s.mesh.positions.push_back({float(ri * std::cos(phi)), float(ri * std::sin(phi)), float(h)});
+      }
+      if (ri == 0) s.mesh.positions.push_back({0, 0, float(h)});
+      for (uint32_t i = 0; i < uint32_t(n); ++i) {
+        const uint32_t j = (i + 1) % n;
+        // Counter-clockwise seen from +z: pbrt's disk faces +z.
+        if (ri == 0) {
+          s.mesh.indices.insert(s.mesh.indices.end(), {uint32_t(n), i, j});
+        } else {
+          s.mesh.indices.insert(s.mesh.indices.end(), {2 * i + 1, 2 * i, 2 * j, 2 * i + 1, 2 * j, 2 * j + 1});
+        }
+      }
+      if (flip)
+        for (size_t i = 0; i < s.mesh.indices.size(); i += 3) std::swap(s.mesh.indices[i + 1], s.mesh.indices[i + 2]);
+    } else {
+      note(d.at, "Shape \"" + t + "\" is not supported (skipped)");
+      for (const PbrtParam& p : ps.list) p.used = true;
+      return;
+    }
+    if (cur_.area && !object_) {
+      Material m;
+      m.name = "area light at " + cur_.area->at.str();
+      m.type = MaterialType::Emitter;
+      m.radiance = cur_.area->radiance;
+      m.two_sided = cur_.area->two_sided;
+      out_.scene.materials.push_back(m);
+      s.material = int(out_.scene.materials.size()) - 1;
+    } else {
+      if (cur_.area && object_) note(d.at, "area lights inside object definitions are not supported (no emission)");
+      s.material = current_material();
+    }
+    if (object_) {
+      // Object space of an instance: the shape relative to the CTM at ObjectBegin.
+      auto inv = object_ctm_.t[0].inverse();
+      if (!inv) fail(d.at, "the transform at ObjectBegin is singular");
+      Mat4 rel = *inv * cur_.ctm.t[0];
+      s.transform = rel.to_affine();
+      objects_[*object_].push_back(std::move(s));
+      return;
+    }
+    place(d.at, &s.transform, &s.motion);
+    if (!s.motion.empty() && !(times_[0] >= out_.scene.camera.shutter_open && times_[1] <= out_.scene.camera.shutter_close)) {
+      note(d.at, "motion keys at TransformTimes outside the camera's shutter (the shape's motion is clamped to the shutter)");
+    }
+    out_.scene.shapes.push_back(std::move(s));
+  }
+
+  bool strict_;
+  PbrtImport out_;
+  Attributes cur_;
+  std::vector<std::pair<PbrtLocation, Attributes>> attr_stack_;
+  std::vector<bool> attr_kind_;  // true: TransformBegin
+  std::map<std::string, TransformPair> named_;
+  std::map<std::string, int> named_materials_;
+  std::map<std::string, std::vector<ShapeDesc>> objects_;
+  std::optional<std::string> object_;
+  PbrtLocation object_at_, camera_at_;
+  std::optional<PbrtLocation> last_;
+  TransformPair object_ctm_;
+  double times_[2] = {0, 1};
+  bool in_world_ = false, camera_seen_ = false;
+  float fov_ = 90;
+  int default_material_ = -1;
+
+ public:
+  float fov() const { return fov_; }
+};
+
+}  // namespace
+
+PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict) {
+  Builder b(strict);
+  PbrtImport out = b.run(directives);
+  // pbrt's fov spans the film's shorter side; pdrt's is vertical.
+  FilmDesc& f = out.scene.film;
+  const double half = std::tan(0.5 * b.fov() * kPiD / 180);
+  out.scene.camera.vfov_deg =
+      f.width >= f.height ? b.fov() : float(2 * std::atan(half * double(f.height) / f.width) * 180 / kPiD);
+  return out;
+}
+
+PbrtImport load_pbrt_scene(const std::filesystem::path& file, bool strict) {
+  PbrtImport out = build_pbrt_scene(parse_pbrt_file(file), strict);
+  out.scene.file = file;
+  return out;
+}
+
+}  // namespace pdrt

@@ -1,0 +1,28 @@
+#pragma once
+// Turns pbrt-v4 directives (pbrt_parser.h) into pdrt's SceneDesc: the graphics state (current
+// transform at the shutter's start and end, attributes, named coordinate systems, materials,
+// area lights, object instances) as pbrt-v4's BasicSceneBuilder keeps it, and the mapping of
+// each camera, film, filter, sampler, integrator, shape, material and light onto pdrt's
+// (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one line each,
+// "file:line:col: what (what pdrt does instead)"; with `strict` the first such line is an error.
+#include "renderer/scene/pbrt/pbrt_parser.h"
+#include "renderer/scene/scene_desc.h"
+
+#include <string>
+#include <vector>
+
+namespace pdrt {
+
+struct PbrtImport {
+  SceneDesc scene;
+  std::vector<std::string> report;  // unsupported features and unused parameters, in file order
+};
+
+// Throws InputError for malformed or contradictory input (and, when strict, for the first
+// report line).
+PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict);
+
+// parse_pbrt_file + build_pbrt_scene; scene.file is set.
+PbrtImport load_pbrt_scene(const std::filesystem::path& file, bool strict);
+
+}  // namespace pdrt

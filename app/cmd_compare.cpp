@@ -6,6 +6,7 @@
 #include "renderer/scene/scene_limits.h"
 #include "renderer/compare/compare.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/hash.h"
 #include "sampling/core/input_file.h"
 #include "app/python_plots.h"
 #include "renderer/render/image_output.h"
@@ -105,6 +106,14 @@ void add_compare_command(CLI::App& app) {
       std::stringstream ss;
       ss << in.rdbuf();
       c.scene_content = ss.str();
+    }
+    // An environment image is part of the scene's content too: a regenerated sky must not
+    // reuse a reference cached for the old one.
+    if (scene.environment.has_map()) {
+      const EnvironmentDesc& e = scene.environment;
+      const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));
+      c.scene_content += "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " +
+                         std::to_string(fnv1a(px));
     }
     if (!o->reconstruction.empty()) scene.film.filter.reconstruction = recon;
     const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;

@@ -68,11 +68,18 @@ LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
   bounds.reserve(entries_.size());
   for (const Entry& e : entries_) bounds.push_back(bounds_of(e));
   bvh_ = LightBvh(bounds);
-  env_ = d.environment.radiance;
   // The environment's estimated contribution in the BVH's units (irradiance): a constant
-  // radiance L over the hemisphere on either side of n delivers E = pi L. No scene-size
-  // term: the lights' importance falls with distance, the environment's does not.
-  if (!is_black(env_)) env_irradiance_ = kPi * std::max(luminance(env_), 1e-6f);
+  // radiance L over the hemisphere on either side of n delivers E = pi L; an image, pi
+  // times its mean luminance over the sphere. No scene-size term: the lights' importance
+  // falls with distance, the environment's does not.
+  if (d.environment.has_map()) {
+    const EnvironmentDesc& e = d.environment;
+    map_ = EnvironmentMap(e.width, e.height, e.rgb, e.scale, e.rotation_deg);
+    env_irradiance_ = map_.irradiance_estimate();
+  } else {
+    env_ = d.environment.radiance;
+    if (!is_black(env_)) env_irradiance_ = kPi * std::max(luminance(env_), 1e-6f);
+  }
 }
 
 void LightSampler::delta_light_at(int delta, float time, Vec3* p, Vec3* axis) const {
@@ -248,7 +255,11 @@ bool LightSampler::sample(const Vec3& ref, const Vec3& n, float time, float u_pi
   float pick;
   if (!select(ref, n, u_pick, &e, &pick)) return false;
   bool ok;
-  if (e == environment_id()) {
+  if (e == environment_id() && !map_.empty()) {
+    out->dist = 1e30f;
+    out->at_infinity = true;
+    ok = map_.sample(u, &out->wi, &out->radiance, &out->pdf);
+  } else if (e == environment_id()) {
     // Uniform over the sphere of directions.
     float z = float(1 - 2 * u[0]), r = std::sqrt(std::max(0.0f, 1 - z * z)), phi = float(2 * kPi * u[1]);
     out->wi = {r * std::cos(phi), r * std::sin(phi), z};
@@ -405,8 +416,9 @@ float LightSampler::pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, f
   return select_pmf(ref, n, e) * d2 / (cos_l * area);
 }
 
-float LightSampler::environment_pdf(const Vec3& ref, const Vec3& n) const {
-  return env_irradiance_ > 0 ? select_pmf(ref, n, environment_id()) / (4 * kPi) : 0.0f;
+float LightSampler::environment_pdf(const Vec3& ref, const Vec3& n, const Vec3& w) const {
+  if (!(env_irradiance_ > 0)) return 0.0f;
+  return select_pmf(ref, n, environment_id()) * (map_.empty() ? 1.0f / (4 * kPi) : map_.pdf(w));
 }
 
 Vec3 LightSampler::emitted(const SurfaceHit& hit) const {

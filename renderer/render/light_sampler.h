@@ -1,13 +1,17 @@
 #pragma once
 // Next-event estimation targets (Cook §5.3 "light area" dimension): every emissive triangle,
 // every emissive sphere, every point and spot light (in the light BVH, light_bvh.h), and the
-// distant lights and the constant environment (outside it, on the same footing), chosen by
-// their estimated contribution at the shading point. Triangles are sampled uniformly by area,
-// spheres by the cone they subtend, the environment uniformly over the sphere of directions;
-// point, spot and distant lights are delta lights: one direction, weight 1, no MIS. Moving
+// distant lights and the environment (outside it, on the same footing), chosen by their
+// estimated contribution at the shading point. Triangles are sampled uniformly by area,
+// spheres by the cone they subtend, a constant environment uniformly over the sphere of
+// directions, an environment image by its luminance x sin(theta) (environment_map.h; its
+// selection importance is pi x its solid-angle mean luminance, the irradiance a constant
+// environment of that luminance delivers); point, spot and distant lights are delta
+// lights: one direction, weight 1, no MIS. Moving
 // emitters are sampled where they are at the ray's time, using the same transform Embree
 // intersects.
 #include "renderer/render/embree_scene.h"
+#include "renderer/render/environment_map.h"
 #include "renderer/render/light_bvh.h"
 
 #include <array>
@@ -38,9 +42,10 @@ class LightSampler {
               LightSample* out) const;
 
   // Solid-angle pdf that sample() at (ref, n) would have produced the emitter point `hit`
-  // (for MIS after BSDF sampling hit an emitter), and the direction pdf of the environment.
+  // (for MIS after BSDF sampling hit an emitter), and the pdf of the environment in the
+  // unit direction w (after a BSDF-sampled ray escaped).
   float pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, float time) const;
-  float environment_pdf(const Vec3& ref, const Vec3& n) const;
+  float environment_pdf(const Vec3& ref, const Vec3& n, const Vec3& w) const;
 
   // Light selection alone. Light ids: 0 .. light_count() - 1, one per emissive triangle or
   // sphere in shape order, then the point and spot lights (the BVH's), then the distant
@@ -53,7 +58,10 @@ class LightSampler {
   // Radiance leaving an emitter at `hit` toward the ray that found it (0 for non-emitters and
   // back faces of one-sided emitters).
   Vec3 emitted(const SurfaceHit& hit) const;
-  const Vec3& environment() const { return env_; }
+  // Whether rays that escape see any environment, and its radiance from the direction w.
+  bool has_environment() const { return !map_.empty() || !is_black(env_); }
+  Vec3 environment(const Vec3& w) const { return map_.empty() ? env_ : map_.radiance(w); }
+  const EnvironmentMap& environment_map() const { return map_; }
 
  private:
   struct Entry {
@@ -91,8 +99,9 @@ class LightSampler {
   LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1
   std::vector<Distant> distant_;      // distant lights of non-zero irradiance
-  float env_irradiance_ = 0;          // pi x luminance of the environment, 0 if none
-  Vec3 env_;
+  float env_irradiance_ = 0;          // pi x (mean) luminance of the environment, 0 if none
+  Vec3 env_;                          // the constant environment
+  EnvironmentMap map_;                // or the image (then env_ is black)
 };
 
 }  // namespace pdrt

@@ -56,9 +56,10 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       found = scene_.intersect(ray, &hit);
     }
     if (!found) {
-      const Vec3& env = lights_.environment();
+      const Vec3 env = lights_.has_environment() ? lights_.environment(ray.dir) : Vec3(0.0f);
       if (!is_black(env)) {
-        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf(prev_p, prev_n));
+        // A BSDF-sampled ray that escapes: weighted against the environment's light pdf.
+        float w = prev_delta ? 1.0f : power_heuristic(prev_pdf, lights_.environment_pdf(prev_p, prev_n, ray.dir));
         res.radiance += beta * env * w;
       }
       break;

@@ -107,8 +107,17 @@ struct ShapeDesc {
   std::string where;                // "scene.json: objects[2]" for messages
 };
 
+// The environment light (docs/scene-format.md, "environment"): a constant radiance, or an
+// equirectangular image (renderer/render/equirect.h: row 0 is +y, the image centre -z)
+// times `scale`, turned by rotation_deg about +y.
 struct EnvironmentDesc {
-  Vec3 radiance{0.0f};              // constant radiance from every direction
+  Vec3 radiance{0.0f};              // constant radiance from every direction (no image)
+  std::string file;                 // the image as found (for messages); empty = constant
+  int width = 0, height = 0;        // texels of the image; 0 = constant
+  std::vector<float> rgb;           // width * height linear RGB, top row first; finite, >= 0
+  Vec3 scale{1.0f};                 // multiplies the image, per channel, >= 0
+  float rotation_deg = 0;           // about +y, counter-clockwise seen from above
+  bool has_map() const { return width > 0 && height > 0; }
 };
 
 // A light without area (docs/scene-format.md, "lights"): next-event estimation reaches it,

@@ -5,6 +5,8 @@
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
+#include "renderer/scene/asset_path.h"
+#include "renderer/scene/environment_image.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/obj_loader.h"
 #include "renderer/scene/scene_limits.h"
@@ -45,6 +47,7 @@ class SceneParser {
   void objects(const JsonNode& n);
   void lights(const JsonNode& n);
   void delta_light(const JsonNode& ln, const JsonObject& o, const std::string& type);
+  void environment_light(const JsonNode& ln, const JsonObject& o);
   void load_objs();
 
   std::pair<float, float> shutter() const { return {scene_.camera.shutter_open, scene_.camera.shutter_close}; }
@@ -654,10 +657,10 @@ void SceneParser::lights(const JsonNode& n) {
       continue;
     }
     if (type == "environment") {
-      o.allow({"type", "radiance"});
+      o.allow({"type", "radiance", "file", "scale", "rotation_deg"});
       if (environment) ln.fail("is a second environment light (at most one; the first is " + environment->path() + ")");
       environment = ln;
-      scene_.environment.radiance = o.require("radiance").radiance();
+      environment_light(ln, o);
       continue;
     }
     ShapeDesc s;
@@ -680,6 +683,49 @@ void SceneParser::lights(const JsonNode& n) {
     place(s, o, ln.path());
     scene_.shapes.push_back(std::move(s));
   }
+}
+
+// A constant environment (`radiance`) or an equirectangular image (`file`, with `scale` and
+// `rotation_deg`), read and checked here so that a bad image stops the load, not the render.
+void SceneParser::environment_light(const JsonNode& ln, const JsonObject& o) {
+  EnvironmentDesc& e = scene_.environment;
+  auto radiance = o.get("radiance"), file = o.get("file");
+  if (radiance && file) file->fail_key("cannot be combined with radiance: give radiance (constant) or file (an image)");
+  if (!radiance && !file) ln.fail("needs radiance (a constant environment) or file (an equirectangular image)");
+  if (radiance) {
+    for (const char* k : {"scale", "rotation_deg"})
+      if (auto x = o.get(k)) x->fail_key("applies to an image (file) only; scale the radiance instead");
+    e.radiance = radiance->radiance();
+    return;
+  }
+  if (auto x = o.get("scale")) e.scale = x->value().is_number() ? Vec3(x->non_negative()) : x->radiance();
+  if (auto x = o.get("rotation_deg")) e.rotation_deg = x->number();
+  const std::string name = file->string();
+  if (name.empty()) file->fail_got("must name an image file");
+  std::optional<fs::path> path = find_scene_asset(dir_, name);
+  if (!path) {
+    const fs::path assets = generated_asset_dir();
+    file->fail("cannot open " + json_quoted(name) + ": no such file in the scene's directory" +
+               (assets.empty() || fs::path(name).is_absolute() ? std::string()
+                                                              : " or the generated assets " + json_quoted(assets.string())));
+  }
+  EnvironmentImage image;
+  std::string reason;
+  if (!read_environment_image(*path, &image, &reason))
+    file->fail("cannot read " + json_quoted(name) + ": " + printable(reason));
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    const float v = image.rgb[i];
+    if (std::isfinite(v) && v >= 0) continue;
+    const std::size_t t = i / 3;
+    std::ostringstream m;
+    m << json_quoted(name) << " has " << (std::isfinite(v) ? "a negative value " : "a non-finite value ") << v
+      << " at texel (" << t % std::size_t(image.width) << ", " << t / std::size_t(image.width) << ") channel "
+      << i % 3 << ": an environment image must be finite and >= 0";
+    file->fail(m.str());
+  }
+  e.file = path->string();
+  e.width = image.width, e.height = image.height;
+  e.rgb = std::move(image.rgb);
 }
 
 // v / |v|, refused at `at` when |v| is 0 or not finite in float (a direction written as

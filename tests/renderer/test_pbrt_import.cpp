@@ -380,3 +380,44 @@ TEST(PbrtImport, PlyMeshesLoadAsciiAndBinaryWithQuadsAndNormals) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
+  const std::filesystem::path dir = ply_dir();
+  struct Case {
+    const char* name;
+    std::string bytes;
+    std::string what;  // after "<s.pbrt>:4:17: <dir>/<name>"
+  };
+  const std::string tri = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string full = binary_triangles(4, false);
+  const Case cases[] = {
+      {"keyword.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_heade\n", ":5:1: unknown PLY header keyword \"end_heade\""},
+      {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", ":4:1: the PLY header has no end_header"},
+      {"magic.ply", "plx\n", ":1:1: not a PLY file (the first line must be \"ply\")"},
+      {"format.ply", "ply\nformat binary 1.0\nend_header\n", ":2:8: unknown PLY format \"binary\" (ascii, binary_little_endian, binary_big_endian)"},
+      {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n", ":4:10: unknown PLY type \"real\""},
+      {"ascii_short.ply", tri + "0 0 0\n1 0 0\n", ":12:1: the body ends at vertex 2 of 3 (truncated)"},
+      {"ascii_nan.ply", tri + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", ":11:3: \"x\" is not a number"},
+      {"ascii_long.ply", tri + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n", ":13:9: face 0 has more values than its properties"},
+      {"short.ply", binary_triangles(4, true), ": byte " + std::to_string(full.size() - 7) + ": the body ends inside face 3 of 4 (truncated)"},
+      {"trailing.ply", full + "xyz", ": byte " + std::to_string(full.size()) + ": 3 bytes after the last element"},
+  };
+  for (const Case& c : cases) {
+    write_file(dir / c.name, c.bytes);
+    write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"" + c.name + "\"\n");
+    try {
+      load_pbrt_scene(dir / "s.pbrt", false);
+      ADD_FAILURE() << c.name << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), (dir / "s.pbrt").string() + ":4:17: " + (dir / c.name).string() + c.what);
+    }
+  }
+  write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"missing.ply\"\n");
+  try {
+    load_pbrt_scene(dir / "s.pbrt", false);
+    ADD_FAILURE() << "missing file accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "s.pbrt").string() + ":4:17: " + (dir / "missing.ply").string() + ": cannot open: No such file or directory");
+  }
+  std::filesystem::remove_all(dir);
+}

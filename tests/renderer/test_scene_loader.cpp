@@ -2,6 +2,7 @@
 // that the message names file:line:col and the JSON path. Expected positions are counted by
 // hand from the scene text in each test (lines from 1 at the opening brace, columns from 1).
 #include "sampling/core/errors.h"
+#include "renderer/render/image_module.h"
 #include "renderer/scene/json_locations.h"
 #include "renderer/scene/scene_loader.h"
 
@@ -138,7 +139,11 @@ TEST_F(SceneLoader, ExampleShapesMaterialsAndLights) {
   EXPECT_EQ(material_of(s, light).name, "lights[0]");
   EXPECT_EQ(material_of(s, light).type, MaterialType::Emitter);
   expect_vec(material_of(s, light).radiance, 10, 10, 10);
-  expect_vec(s.environment.radiance, 0.05f, 0.05f, 0.08f);
+  // The generated sky (found in the build's assets), dimmed and turned.
+  EXPECT_EQ(s.environment.width, 512);
+  EXPECT_EQ(fs::path(s.environment.file).filename(), "sky.exr");
+  expect_vec(s.environment.scale, 0.1f, 0.1f, 0.12f);
+  EXPECT_FLOAT_EQ(s.environment.rotation_deg, 30);
   EXPECT_EQ(s.shapes[11].where, (kExamples / "all-features.json").string() + ": lights[1]");
   EXPECT_EQ(s.degenerate_triangles, 0);
 }
@@ -1049,4 +1054,134 @@ TEST_F(SceneLoader, SppAboveTheSharedLimitIsRefused) {
 TEST_F(SceneLoader, NegativeSeedIsRefusedWithTheRange) {
   fs::path f = scene(kHead + "  \"sampler\": {\"seed\": -1}\n}\n");
   EXPECT_ERROR(f, "s.json:4:23: sampler.seed must be an integer in [0, 18446744073709551615], got -1");
+}
+
+// --- environment images -------------------------------------------------------------------
+
+namespace {
+
+// Writes a tiny float EXR through the image module (w x h RGB, top row first).
+void write_exr(const fs::path& file, int w, int h, const std::vector<float>& rgb) {
+  PdrtImageWrite im{};
+  im.path = file.c_str(), im.format = "exr";
+  im.width = w, im.height = h, im.channels = 3, im.z_channel = -1;
+  im.pixels = rgb.data();
+  char error[512] = "";
+  ASSERT_EQ(image_module().write(&im, error, sizeof error), 0) << error;
+}
+
+std::vector<float> ramp(int n) {
+  std::vector<float> v;
+  for (int i = 0; i < 3 * n; ++i) v.push_back(0.25f * float(i));
+  return v;
+}
+
+// A scene with one light on line 4 (column 14 is its opening brace).
+fs::path light_scene(const std::string& light) { return scene(kHead + "  \"lights\": [" + light + "]\n}\n"); }
+
+struct ScopedAssets {
+  explicit ScopedAssets(const fs::path& dir) { ::setenv("PDRT_ASSETS", dir.c_str(), 1); }
+  ~ScopedAssets() { ::unsetenv("PDRT_ASSETS"); }
+};
+
+}  // namespace
+
+TEST_F(SceneLoader, EnvironmentImageIsReadWithScaleAndRotation) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "e.exr", "scale": [1, 2, 0.5], "rotation_deg": -45})");
+  write_exr(f.parent_path() / "e.exr", 4, 2, ramp(8));
+  SceneDesc s = load_scene(f);
+  ASSERT_TRUE(s.environment.has_map());
+  EXPECT_EQ(s.environment.width, 4);
+  EXPECT_EQ(s.environment.height, 2);
+  EXPECT_EQ(s.environment.rgb, ramp(8));
+  expect_vec(s.environment.scale, 1, 2, 0.5f);
+  EXPECT_FLOAT_EQ(s.environment.rotation_deg, -45);
+  EXPECT_EQ(s.environment.file, (f.parent_path() / "e.exr").string());
+  expect_vec(s.environment.radiance, 0, 0, 0);
+}
+
+TEST_F(SceneLoader, EnvironmentScaleDefaultsToOneAndTakesANumber) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "e.exr"})");
+  write_exr(f.parent_path() / "e.exr", 2, 1, ramp(2));
+  expect_vec(load_scene(f).environment.scale, 1, 1, 1);
+  EXPECT_FLOAT_EQ(load_scene(f).environment.rotation_deg, 0);
+  write(f, kHead + R"(  "lights": [{"type": "environment", "file": "e.exr", "scale": 3}]})");
+  expect_vec(load_scene(f).environment.scale, 3, 3, 3);
+}
+
+TEST_F(SceneLoader, EnvironmentRadianceAndFileTogetherIsRefused) {
+  fs::path f = light_scene(R"({"type": "environment", "radiance": [1, 1, 1], "file": "e.exr"})");
+  EXPECT_ERROR(f, "s.json:4:61: lights[0].file cannot be combined with radiance");
+}
+
+TEST_F(SceneLoader, EnvironmentWithoutRadianceOrFileIsRefused) {
+  EXPECT_ERROR(light_scene(R"({"type": "environment"})"), "s.json:4:14: lights[0] needs radiance");
+}
+
+TEST_F(SceneLoader, EnvironmentMissingImageNamesTheFileAndKey) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "nope.exr"})");
+  EXPECT_ERROR(f, "s.json:4:46: lights[0].file cannot open \"nope.exr\": no such file in the scene's directory");
+  EXPECT_ERROR(light_scene(R"({"type": "environment", "file": ""})"), "lights[0].file must name an image file");
+}
+
+TEST_F(SceneLoader, EnvironmentUnreadableImageNamesTheFileAndKey) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "bad.exr"})");
+  write(f.parent_path() / "bad.exr", "not an image at all");
+  EXPECT_ERROR(f, "s.json:4:46: lights[0].file cannot read \"bad.exr\": ");
+}
+
+TEST_F(SceneLoader, EnvironmentNonFiniteOrNegativeTexelIsRefused) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "e.exr"})");
+  std::vector<float> rgb = ramp(6);
+  rgb[3 * 4 + 2] = std::nanf("");
+  write_exr(f.parent_path() / "e.exr", 3, 2, rgb);
+  EXPECT_ERROR(f, "lights[0].file \"e.exr\" has a non-finite value nan at texel (1, 1) channel 2");
+  rgb[3 * 4 + 2] = INFINITY;
+  write_exr(f.parent_path() / "e.exr", 3, 2, rgb);
+  EXPECT_ERROR(f, "lights[0].file \"e.exr\" has a non-finite value inf at texel (1, 1) channel 2");
+  rgb[3 * 4 + 2] = 1;
+  rgb[1] = -0.5f;
+  write_exr(f.parent_path() / "e.exr", 3, 2, rgb);
+  EXPECT_ERROR(f, "lights[0].file \"e.exr\" has a negative value -0.5 at texel (0, 0) channel 1");
+}
+
+TEST_F(SceneLoader, EnvironmentBadScaleOrRotationIsRefused) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "e.exr", "scale": -1})");
+  write_exr(f.parent_path() / "e.exr", 2, 1, ramp(2));
+  EXPECT_ERROR(f, "s.json:4:64: lights[0].scale must be >= 0, got -1");
+  write(f, kHead + R"(  "lights": [{"type": "environment", "file": "e.exr", "scale": [1, -2, 1]}]})");
+  EXPECT_ERROR(f, "lights[0].scale must have components >= 0");
+  write(f, kHead + R"(  "lights": [{"type": "environment", "file": "e.exr", "rotation_deg": "north"}]})");
+  EXPECT_ERROR(f, "lights[0].rotation_deg must be a number");
+  write(f, kHead + R"(  "lights": [{"type": "environment", "file": "e.exr", "rotation": 90}]})");
+  EXPECT_ERROR(f, "rotation");
+  write(f, kHead + R"(  "lights": [{"type": "environment", "radiance": [1, 1, 1], "rotation_deg": 90}]})");
+  EXPECT_ERROR(f, "lights[0].rotation_deg applies to an image (file) only");
+  write(f, kHead + R"(  "lights": [{"type": "environment", "radiance": [1, 1, 1], "scale": 2}]})");
+  EXPECT_ERROR(f, "lights[0].scale applies to an image (file) only");
+}
+
+// Search order: the scene's directory first, then $PDRT_ASSETS (else the build's assets).
+TEST_F(SceneLoader, EnvironmentImageIsFoundInTheGeneratedAssets) {
+  fs::path f = light_scene(R"({"type": "environment", "file": "sky_test.exr"})");
+  const fs::path assets = f.parent_path() / "assets";
+  fs::create_directories(assets);
+  write_exr(assets / "sky_test.exr", 2, 1, ramp(2));
+  {
+    ScopedAssets env(assets);
+    SceneDesc s = load_scene(f);
+    EXPECT_EQ(s.environment.width, 2);
+    EXPECT_EQ(s.environment.file, (assets / "sky_test.exr").string());
+    write_exr(f.parent_path() / "sky_test.exr", 3, 1, ramp(3));  // the scene's own copy wins
+    EXPECT_EQ(load_scene(f).environment.width, 3);
+  }
+  fs::remove(f.parent_path() / "sky_test.exr");
+  EXPECT_ERROR(f, "cannot open \"sky_test.exr\": no such file in the scene's directory or the generated assets");
+}
+
+// The build generates the sky every example may use.
+TEST_F(SceneLoader, GeneratedSkyIsFoundFromAnyScene) {
+  SceneDesc s = load_scene(light_scene(R"({"type": "environment", "file": "sky.exr"})"));
+  EXPECT_EQ(s.environment.width, 512);
+  EXPECT_EQ(s.environment.height, 256);
 }

@@ -1,5 +1,7 @@
 #include "renderer/scene/pbrt/ply_mesh.h"
 
+#include "renderer/scene/pbrt/ply_check.h"
+
 #include "sampling/core/errors.h"
 
 #include <assimp/Importer.hpp>
@@ -11,6 +13,7 @@
 namespace pdrt {
 
 PlyMesh load_ply(const std::filesystem::path& file, const std::string& shown) {
+  check_ply(file, shown);  // Assimp 5.2 hangs on some malformed headers and accepts truncated bodies
   Assimp::Importer importer;
   // Only triangulation: the vertices stay as the file has them (no joining, no generated
   // normals), so indices and attributes match pbrt's reading of the same file.

@@ -1,0 +1,199 @@
+#include "renderer/scene/pbrt/ply_check.h"
+
+#include "renderer/scene/text_file.h"
+#include "sampling/core/errors.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+// Bytes of a PLY scalar type, or 0 for an unknown name (PLY 1.0 names and their sized aliases).
+int scalar_size(const std::string& t) {
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+struct Property {
+  bool list = false;
+  std::string count_type, type;
+};
+struct Element {
+  std::string name;
+  uint64_t count = 0;
+  std::vector<Property> props;
+  int line = 0;
+};
+
+constexpr size_t kMaxHeader = 1 << 16;  // bytes: a header is a few hundred
+
+}  // namespace
+
+void check_ply(const std::filesystem::path& file, const std::string& shown) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    std::string reason;
+    can_open_file(file, reason);
+    throw InputError(shown + ": cannot open: " + reason);
+  }
+  auto fail = [&](int line, int col, const std::string& what) {
+    throw InputError(shown + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
+  };
+  // Header: lines up to "end_header".
+  std::vector<Element> elements;
+  std::string format;
+  int line_no = 0;
+  size_t header_bytes = 0;
+  bool ended = false;
+  std::string line;
+  while (!ended && std::getline(in, line)) {
+    ++line_no;
+    header_bytes += line.size() + 1;
+    if (header_bytes > kMaxHeader) fail(line_no, 1, "the PLY header has no end_header in its first 64 KiB");
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::string w;
+    words >> w;
+    if (line_no == 1) {
+      if (w != "ply") fail(1, 1, "not a PLY file (the first line must be \"ply\")");
+      continue;
+    }
+    if (w.empty() || w == "comment" || w == "obj_info") continue;
+    if (w == "format") {
+      std::string version;
+      words >> format >> version;
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+        fail(line_no, 8, "unknown PLY format \"" + format + "\" (ascii, binary_little_endian, binary_big_endian)");
+      if (version != "1.0") fail(line_no, 1, "unsupported PLY version \"" + version + "\" (1.0)");
+    } else if (w == "element") {
+      Element e;
+      e.line = line_no;
+      std::string count;
+      words >> e.name >> count;
+      char* end = nullptr;
+      e.count = std::strtoull(count.c_str(), &end, 10);
+      if (e.name.empty() || count.empty() || *end || count[0] == '-') fail(line_no, 1, "an element line is \"element <name> <count>\"");
+      elements.push_back(e);
+    } else if (w == "property") {
+      if (elements.empty()) fail(line_no, 1, "a property before any element");
+      Property p;
+      std::string t, name;
+      words >> t;
+      if (t == "list") {
+        p.list = true;
+        words >> p.count_type >> p.type >> name;
+        if (!scalar_size(p.count_type) || p.count_type == "float" || p.count_type == "double" || p.count_type == "float32" ||
+            p.count_type == "float64")
+          fail(line_no, 15, "a list's count type must be an integer type, got \"" + p.count_type + "\"");
+      } else {
+        p.type = t;
+        words >> name;
+      }
+      if (!scalar_size(p.type)) fail(line_no, 10, "unknown PLY type \"" + p.type + "\"");
+      if (name.empty()) fail(line_no, 1, "a property needs a name");
+      elements.back().props.push_back(p);
+    } else if (w == "end_header") {
+      ended = true;
+    } else {
+      fail(line_no, 1, "unknown PLY header keyword \"" + w + "\"");
+    }
+  }
+  if (!ended) fail(line_no, 1, "the PLY header has no end_header");
+  if (format.empty()) fail(line_no, 1, "the PLY header has no format line");
+
+  if (format == "ascii") {
+    // One line per element instance; a list's count says how many values follow it.
+    for (const Element& e : elements)
+      for (uint64_t i = 0; i < e.count; ++i) {
+        std::string body;
+        do {
+          if (!std::getline(in, body))
+            fail(line_no + 1, 1, "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) + " (truncated)");
+          ++line_no;
+          if (!body.empty() && body.back() == '\r') body.pop_back();
+        } while (body.find_first_not_of(" \t") == std::string::npos);
+        std::istringstream v(body);
+        size_t col = 0;
+        auto next = [&](bool integer) {
+          std::string tok;
+          if (!(v >> tok)) fail(line_no, int(body.size() + 1), e.name + " " + std::to_string(i) + " has too few values");
+          col = size_t(v.tellg() == -1 ? body.size() : size_t(v.tellg())) - tok.size() + 1;
+          char* end = nullptr;
+          double x = std::strtod(tok.c_str(), &end);
+          if (*end) fail(line_no, int(col), "\"" + tok + "\" is not a number");
+          if (integer && (x < 0 || x != double(uint64_t(x)))) fail(line_no, int(col), "a list count must be a non-negative integer, got \"" + tok + "\"");
+          return x;
+        };
+        for (const Property& p : e.props) {
+          if (!p.list) {
+            next(false);
+            continue;
+          }
+          const double n = next(true);
+          if (n > 1e6) fail(line_no, int(col), "a list of " + std::to_string(uint64_t(n)) + " values");
+          for (uint64_t k = 0; k < uint64_t(n); ++k) next(false);
+        }
+        std::string extra;
+        if (v >> extra) fail(line_no, int(body.size() - extra.size() + 1), e.name + " " + std::to_string(i) + " has more values than its properties");
+      }
+    return;
+  }
+  // Binary: walk the body, reading only the list counts.
+  const bool swap = (format == "binary_big_endian") != (std::endian::native == std::endian::big);
+  const uint64_t body_start = uint64_t(in.tellg());
+  in.seekg(0, std::ios::end);
+  const uint64_t size = uint64_t(in.tellg());
+  uint64_t pos = body_start;
+  auto truncated = [&](const Element& e, uint64_t i) {
+    throw InputError(shown + ": byte " + std::to_string(size) + ": the body ends inside " + e.name + " " + std::to_string(i) +
+                     " of " + std::to_string(e.count) + " (truncated)");
+  };
+  for (const Element& e : elements) {
+    bool fixed = true;
+    uint64_t stride = 0;
+    for (const Property& p : e.props) {
+      if (p.list) fixed = false;
+      stride += uint64_t(scalar_size(p.type));
+    }
+    if (fixed) {
+      if (stride && e.count > (size - pos) / stride) truncated(e, (size - pos) / stride);
+      pos += stride * e.count;
+      continue;
+    }
+    for (uint64_t i = 0; i < e.count; ++i)
+      for (const Property& p : e.props) {
+        const int s = scalar_size(p.type);
+        if (!p.list) {
+          if (pos + uint64_t(s) > size) truncated(e, i);
+          pos += uint64_t(s);
+          continue;
+        }
+        const int cs = scalar_size(p.count_type);
+        if (pos + uint64_t(cs) > size) truncated(e, i);
+        unsigned char b[8] = {};
+        in.seekg(std::streamoff(pos));
+        in.read(reinterpret_cast<char*>(b), cs);
+        if (swap) std::reverse(b, b + cs);
+        uint64_t n = 0;
+        std::memcpy(&n, b, size_t(cs));  // little-endian host: low bytes first
+        if ((p.count_type[0] != 'u') && cs < 8 && (b[cs - 1] & 0x80))
+          throw InputError(shown + ": byte " + std::to_string(pos) + ": " + e.name + " " + std::to_string(i) + " has a negative list count");
+        pos += uint64_t(cs);
+        if (n > (size - pos) / uint64_t(s)) truncated(e, i);
+        pos += n * uint64_t(s);
+      }
+  }
+  if (pos != size)
+    throw InputError(shown + ": byte " + std::to_string(pos) + ": " + std::to_string(size - pos) + " bytes after the last element");
+}
+
+}  // namespace pdrt

@@ -82,7 +82,7 @@ void add_render_command(CLI::App& app) {
       ->required()
       ->allow_extra_args(false);
   add_integer_option(cmd, "--spp", o->spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
-  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | sobol (overrides sampler.type)");
+  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | poisson-02 | sobol | regular (overrides sampler.type)");
   add_integer_option(cmd, "--seed", o->seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)");
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
@@ -110,8 +110,8 @@ void add_render_command(CLI::App& app) {
     for (const auto& out : o->outs) require_output_path("-o/--out", out);
     if (!o->sampler.empty()) {
       bool known = false;
-      for (const auto& n : sampler_names()) known = known || n == o->sampler;
-      if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (random, jitter, poisson, sobol)");
+      for (const auto& n : all_sampler_names()) known = known || n == o->sampler;
+      if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (" + sampler_name_list() + ")");
     }
     if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
       throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));

@@ -135,9 +135,9 @@ void validate_compare_options(const CompareOptions& o) {
   if (o.samplers.empty()) throw UsageError("--samplers: give at least one sampler");
   std::set<std::string> seen;
   for (const auto& s : o.samplers) {
-    const auto& names = sampler_names();
+    const auto& names = all_sampler_names();
     if (std::find(names.begin(), names.end(), s) == names.end())
-      throw UsageError("--samplers: unknown sampler \"" + s + "\" (random, jitter, poisson, sobol)");
+      throw UsageError("--samplers: unknown sampler \"" + s + "\" (" + sampler_name_list() + ")");
     if (!seen.insert(s).second) throw UsageError("--samplers: \"" + s + "\" given twice");
   }
   if (o.spp.empty()) throw UsageError("--spp: give at least one sample count");

@@ -12,6 +12,7 @@
 namespace pdrt {
 
 std::unique_ptr<Sampler> make_random_sampler(uint64_t seed);
+std::unique_ptr<Sampler> make_regular_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_progressive_jitter_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_sobol_sampler(uint64_t seed);
 
@@ -34,18 +35,29 @@ const std::vector<std::string>& sampler_names() {
   return names;
 }
 
+const std::vector<std::string>& all_sampler_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = sampler_names();
+    n.push_back("regular");
+    return n;
+  }();
+  return names;
+}
+
+std::string sampler_name_list() {
+  std::string known;
+  for (const auto& n : all_sampler_names()) known += (known.empty() ? "" : ", ") + n;
+  return known;
+}
+
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "random") return make_random_sampler(seed);
+  if (name == "regular") return make_regular_sampler(seed);
   if (name == "jitter") return make_progressive_jitter_sampler(seed);
   if (name == "sobol") return make_sobol_sampler(seed);
   if (name == "poisson") return make_poisson_sampler(seed, default_tables());
   if (name == "poisson-02") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson02));
-  std::string known;
-  for (const auto& n : sampler_names()) {
-    if (!known.empty()) known += ", ";
-    known += n;
-  }
-  throw UsageError("sampler: unknown sampler '" + name + "' (known: " + known + ")");
+  throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
 }
 
 uint64_t sample_seed_hash(uint64_t seed) { return mix64(seed ^ 0x70647274ull); }

@@ -200,8 +200,13 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The sampler names `make_sampler` accepts.
+// The Monte Carlo samplers (random, jitter, poisson, poisson-02, sobol): unbiased over seeds,
+// the ones every sampler test and `compare`'s defaults cover.
 const std::vector<std::string>& sampler_names();
+// Every name `make_sampler` accepts: sampler_names() and the `regular` baseline (the same
+// deterministic pattern in every pixel, Cook's regular sampling; biased, for aliasing demos).
+const std::vector<std::string>& all_sampler_names();
+std::string sampler_name_list();  // "random, jitter, ..., regular"
 
 // Throws UsageError naming the sampler for an unknown name.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed);

@@ -300,3 +300,33 @@ TEST(Poisson02Sampler, TimeStreamsOfAPixelDoNotMoveInLockstep) {
 
 }  // namespace
 }  // namespace pdrt
+
+namespace pdrt {
+
+// `regular` (Cook's baseline): the same points in every pixel, bounce and seed; sample 0 at the
+// pixel centre; the first 4^k samples a lattice of 2^k x 2^k points one per cell (a (0,2)-net
+// shifted by 1/2 keeps one point per square of side 2^-k); prepare() matches get_2d bit for bit.
+TEST(RegularSampler, SamePointsEverywhereCentreFirstAndEachPowerOfFourPrefixOnePerCell) {
+  auto a = make_sampler("regular", 1), b = make_sampler("regular", 99);
+  EXPECT_EQ(a->get_2d(3, 4, 0, Family::Pixel, 0), (Vec2{0.5, 0.5}));
+  for (int64_t i = 0; i < 64; ++i) {
+    EXPECT_EQ(a->get_2d(3, 4, i, Family::Pixel, 0), b->get_2d(1000, -7, i, Family::Gloss, 15)) << i;
+    EXPECT_EQ(a->get_1d(0, 0, i, Family::Time, 0), a->get_2d(5, 5, i, Family::Lens, 2)[0]) << i;
+  }
+  for (int k = 0; k <= 4; ++k) {
+    const int side = 1 << k;
+    std::vector<int> cells(std::size_t(side) * side, 0);
+    for (int64_t i = 0; i < int64_t(side) * side; ++i) {
+      Vec2 p = a->get_2d(0, 0, i, Family::Pixel, 0);
+      ++cells[std::size_t(int(p[1] * side)) * side + int(p[0] * side)];
+    }
+    for (int c : cells) EXPECT_EQ(c, 1) << "prefix 4^" << k;
+  }
+  PreparedStream s;
+  s.want = 64;
+  a->prepare(2, 2, Family::Pixel, 0, &s);
+  ASSERT_NE(s.coords, nullptr);
+  for (int64_t i = 0; i < 64; ++i) EXPECT_EQ(s.value(i, 1), a->get_2d(2, 2, i, Family::Pixel, 0)[1]) << i;
+}
+
+}  // namespace pdrt

@@ -421,3 +421,24 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\n"
+                         "Material \"coateddiffuse\" \"rgb reflectance\" [0.2 0.4 0.6] \"float roughness\" 0.04 \"float eta\" 1.4 \"float thickness\" 0.1\n"
+                         "Shape \"sphere\"\n"
+                         "Material \"coateddiffuse\"\n"
+                         "Shape \"sphere\"\n");
+  const Material& a = im.scene.materials[im.scene.shapes[0].material];
+  EXPECT_EQ(a.type, MaterialType::CoatedDiffuse);
+  expect_near(a.albedo, {0.2f, 0.4f, 0.6f}, 0, "reflectance");
+  EXPECT_NEAR(a.roughness, std::sqrt(0.2), 1e-6);  // alpha = sqrt(0.04) = 0.2
+  EXPECT_FLOAT_EQ(a.ior, 1.4f);
+  expect_near(a.coat_color, Vec3(float(std::exp(-0.1))), 1e-7f, "an absorbing coat of thickness 0.1");
+  const Material& b = im.scene.materials[im.scene.shapes[1].material];  // pbrt-v4's defaults
+  expect_near(b.albedo, Vec3(0.5f), 0, "default reflectance");
+  EXPECT_EQ(b.roughness, 0);
+  EXPECT_FLOAT_EQ(b.ior, 1.5f);
+  expect_near(b.coat_color, Vec3(float(std::exp(-0.01))), 1e-7f, "default thickness 0.01");
+  EXPECT_TRUE(im.report.empty()) << im.report[0];
+}

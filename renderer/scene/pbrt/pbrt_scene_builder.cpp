@@ -529,6 +529,32 @@ class Builder {
         m.eta = metal_param(ps, pre + "eta", true);
         m.k = metal_param(ps, pre + "k", false);
       }
+    } else if (type == "coateddiffuse") {
+      // pbrt-v4's random-walk layers as pdrt's analytic coat: the same base reflectance, coat
+      // roughness and index; the medium between the layers, absorbing by default (albedo 0),
+      // becomes the coat's Beer-Lambert transmittance exp(-thickness) per pass.
+      m.type = MaterialType::CoatedDiffuse;
+      m.albedo = color(ps, "reflectance", Vec3(0.5f), false);
+      for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
+      m.roughness = roughness(d, ps);
+      float eta = 1.5f;
+      if (const PbrtParam* e = ps.find("eta"); e && pbrt_canonical_type(e->type) == "spectrum") {
+        e->used = true;
+        eta = named_glass_ior(*e);
+      } else {
+        eta = positive(ps, "eta", 1.5f);
+      }
+      if (eta < 1 || eta > 3) {
+        note(d.at, "a coat index of " + fmt(eta) + " is outside pdrt's [1, 3] (clamped)");
+        eta = std::clamp(eta, 1.0f, 3.0f);
+      }
+      m.ior = eta;
+      const float thickness = positive(ps, "thickness", 0.01f, true);
+      const Vec3 medium = color(ps, "albedo", Vec3(0.0f), false);
+      if (!is_black(medium)) note(d.at, "a scattering medium in the coat (\"albedo\") is not supported (it only absorbs)");
+      m.coat_color = Vec3(std::exp(-thickness));
+      m.coat_thickness = 1;
+      for (const char* k : {"g", "maxdepth", "nsamples"}) ps.find(k) && (ps.find(k)->used = true);
     } else if (type == "dielectric" || type == "thindielectric") {
       if (type == "thindielectric") note(d.at, "thindielectric is not supported (a solid dielectric is used)");
       m.type = MaterialType::Dielectric;

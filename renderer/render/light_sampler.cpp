@@ -24,6 +24,16 @@ float smoothstep(float x, float a, float b) {
   return t * t * (3 - 2 * t);
 }
 
+// A world point p of sphere light `shape` as the hit texture_coords() reads: p_local is in the
+// space its geometry is stored in (instance space for a moving sphere, world space else).
+SurfaceHit sphere_hit(const EmbreeScene& s, int shape, const Affine& m, const Vec3& p) {
+  SurfaceHit h;
+  h.shape = shape;
+  h.p = p;
+  h.p_local = s.moving(shape) ? m.inverse().point(p) : p;
+  return h;
+}
+
 // The point of a sphere light nearest to `near`, with the error of its (transformed) centre.
 ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, const Vec3& c, float r, const Vec3& near) {
   ErrorPoint x = sphere_point(c, r, near);
@@ -40,8 +50,46 @@ ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, 
 // a contributing light's importance zero.
 constexpr int kTimeSamples = 65;
 
+namespace {
+
+int radiance_texture(const Material& m) {
+  for (const TextureBinding& b : m.textures)
+    if (b.param == MaterialParam::Radiance) return b.texture;
+  return -1;
+}
+
+}  // namespace
+
+Vec3 LightSampler::emitter_radiance(const Material& m, SurfaceHit h) const {
+  const int t = radiance_texture(m);
+  if (t < 0 || !textures_) return m.radiance;
+  scene_.texture_coords(&h, 0);  // u, v do not depend on the time
+  TextureCoords tc;
+  tc.u = h.u, tc.v = h.v;  // a point lookup: a light sample is a point, not a pixel's footprint
+  return emission(m.radiance, textures_->eval(t, tc));
+}
+
+float LightSampler::emitter_luminance(const Material& m) const {
+  const int t = radiance_texture(m);
+  if (t < 0 || !textures_) return luminance(m.radiance);
+  double sum = 0;
+  constexpr int n = 32;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      TextureCoords tc;
+      tc.u = (i + 0.5f) / n, tc.v = (j + 0.5f) / n;
+      sum += luminance(emission(m.radiance, textures_->eval(t, tc)));
+    }
+  return float(sum / (n * n));
+}
+
 LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
   const SceneDesc& d = scene.desc();
+  for (const Material& m : d.materials)
+    if (m.type == MaterialType::Emitter && radiance_texture(m) >= 0) {
+      textures_ = std::make_unique<TextureSet>(d);
+      break;
+    }
   first_entry_.assign(d.shapes.size(), -1);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     const ShapeDesc& s = d.shapes[i];
@@ -135,7 +183,7 @@ LightBounds LightSampler::delta_bounds(int delta) const {
 LightBounds LightSampler::bounds_of(const Entry& e) const {
   if (e.delta >= 0) return delta_bounds(e.delta);
   const Material& m = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
-  const float lum = std::max(luminance(m.radiance), 1e-6f);
+  const float lum = std::max(emitter_luminance(m), 1e-6f);
   const bool moving = scene_.moving(e.shape);
   LightBounds b;
   b.cos_e = 0;  // diffuse emission: pi/2 past the normal
@@ -335,7 +383,9 @@ bool LightSampler::sample_triangle(const Entry& e, const Vec3& ref, float time, 
   float cos_l = -dot(n, out->wi);
   const Material& m = scene_.desc().materials[scene_.desc().shapes[e.shape].material];
   if (std::abs(cos_l) < 1e-7f) return false;
-  out->radiance = (cos_l > 0 || m.two_sided) ? m.radiance : Vec3(0.0f);
+  SurfaceHit h;
+  h.shape = e.shape, h.prim = e.prim, h.bary_u = b1, h.bary_v = 1 - b0 - b1;
+  out->radiance = (cos_l > 0 || m.two_sided) ? emitter_radiance(m, h) : Vec3(0.0f);
   out->pdf = d2 / (std::abs(cos_l) * area);
   return true;
 }
@@ -360,7 +410,7 @@ bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, st
     out->wi = d / dist, out->dist = dist;
     float cos_l = -dot(n, out->wi);
     if (std::abs(cos_l) < 1e-7f) return false;
-    out->radiance = (cos_l > 0 || mat.two_sided) ? mat.radiance : Vec3(0.0f);
+    out->radiance = (cos_l > 0 || mat.two_sided) ? emitter_radiance(mat, sphere_hit(scene_, e.shape, m, p)) : Vec3(0.0f);
     out->pdf = d2 / (std::abs(cos_l) * 4 * kPi * r * r);
     return true;
   }
@@ -379,7 +429,7 @@ bool LightSampler::sample_sphere(const Entry& e, const Vec3& ref, float time, st
   out->wi = wi, out->dist = dist;
   out->x = sphere_light_point(scene_, e.shape, m, c, r, ref + wi * dist);
   out->n = normalize(out->x.p - c);
-  out->radiance = mat.radiance;
+  out->radiance = emitter_radiance(mat, sphere_hit(scene_, e.shape, m, out->x.p));
   out->pdf = 1.0f / (2 * kPi * one_minus_cos_max);
   return dist > 0;
 }
@@ -424,7 +474,7 @@ float LightSampler::environment_pdf(const Vec3& ref, const Vec3& n, const Vec3& 
 Vec3 LightSampler::emitted(const SurfaceHit& hit) const {
   const Material& m = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
   if (m.type != MaterialType::Emitter) return Vec3(0.0f);
-  return (hit.front || m.two_sided) ? m.radiance : Vec3(0.0f);
+  return (hit.front || m.two_sided) ? emitter_radiance(m, hit) : Vec3(0.0f);
 }
 
 }  // namespace pdrt

@@ -13,8 +13,10 @@
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/environment_map.h"
 #include "renderer/render/light_bvh.h"
+#include "renderer/render/texture_set.h"
 
 #include <array>
+#include <memory>
 #include <cmath>
 #include <vector>
 
@@ -94,7 +96,14 @@ class LightSampler {
   bool sample_sphere(const Entry& e, const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const;
   float sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const Vec3& n, float time) const;
 
+  // An emitter's radiance at a point of shape `h.shape` (triangles: h.prim and Embree's
+  // barycentrics; spheres: h.p_local), its texture evaluated there when `radiance` is textured.
+  Vec3 emitter_radiance(const Material& m, SurfaceHit h) const;
+  // Luminance of an emitter's radiance for light selection: a textured one's mean over uv.
+  float emitter_luminance(const Material& m) const;
+
   const EmbreeScene& scene_;
+  std::unique_ptr<TextureSet> textures_;  // only when some emitter's radiance is textured
   std::vector<Entry> entries_;
   LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1

@@ -30,6 +30,7 @@ int to_abi(TextureWrap w) {
 }
 
 float unit(float x) { return x >= 0 ? (x <= 1 ? x : 1.0f) : 0.0f; }  // NaN -> 0
+float non_negative(float x) { return x >= 0 && x < 3.0e38f ? x : 0.0f; }  // NaN, inf -> 0
 
 // Brings a texture coordinate into one period of its wrap mode before OIIO converts it to an
 // integer texel index (1e30 or inf would overflow int there); NaN and inf become 0.
@@ -122,9 +123,16 @@ Material TextureSet::apply(Material out, const std::vector<TextureBinding>& bind
       case MaterialParam::CoatColor:
         out.coat_color = Vec3(unit(x.x), unit(x.y), unit(x.z));
         break;
+      case MaterialParam::Radiance:
+        out.radiance = emission(out.radiance, x);
+        break;
     }
   }
   return out;
+}
+
+Vec3 emission(const Vec3& scale, const Vec3& texel) {
+  return {scale.x * non_negative(texel.x), scale.y * non_negative(texel.y), scale.z * non_negative(texel.z)};
 }
 
 }  // namespace pdrt

@@ -15,6 +15,11 @@
 
 namespace pdrt {
 
+// An emitter's radiance where `radiance` is bound to a texture: the texel (each channel >= 0,
+// unbounded: an EXR may hold HDR values; NaN and inf become 0) times the material's `radiance`,
+// which then holds the scene's `scale`.
+Vec3 emission(const Vec3& scale, const Vec3& texel);
+
 class TextureSet {
  public:
   // Opens every image texture (throws InputError naming the texture's `file` key when an

@@ -14,7 +14,7 @@ enum class GlossLobe { GGX, Phong };
 // The material parameters a texture may drive (render/texture_set.h writes them per hit).
 // Colours take the texture's RGB; scalars its first channel. A new textured parameter is one
 // entry here, one case in TextureSet::apply and one textured_* call in the loader.
-enum class MaterialParam { Albedo, Roughness, CoatColor };
+enum class MaterialParam { Albedo, Roughness, CoatColor, Radiance };
 struct TextureBinding {
   MaterialParam param;
   int texture;  // index into SceneDesc::textures

@@ -448,9 +448,20 @@ void SceneParser::materials(const JsonNode& n) {
       if (auto x = o.get("coat_color")) textured_color(*x, m, MaterialParam::CoatColor, m.coat_color);
       if (auto x = o.get("coat_thickness")) m.coat_thickness = x->non_negative();
     } else {
-      o.allow({"type", "radiance", "two_sided"});
+      o.allow({"type", "radiance", "two_sided", "scale"});
       m.type = MaterialType::Emitter;
-      m.radiance = o.require("radiance").radiance();
+      JsonNode r = o.require("radiance");
+      if (r.value().is_string()) {
+        // A textured emitter: radiance = texel x scale (texture_set.h, emission()).
+        m.textures.push_back({MaterialParam::Radiance, texture_named(r)});
+        m.radiance = Vec3(1.0f);
+      } else {
+        m.radiance = r.radiance();
+      }
+      if (auto x = o.get("scale")) {
+        const Vec3 k = x->value().is_number() ? Vec3(float(x->non_negative())) : x->radiance();
+        m.radiance = Vec3(m.radiance.x * k.x, m.radiance.y * k.y, m.radiance.z * k.z);
+      }
       if (auto x = o.get("two_sided")) m.two_sided = x->boolean();
     }
     if (auto a = o.get("albedo")) textured_color(*a, m, MaterialParam::Albedo, m.albedo);

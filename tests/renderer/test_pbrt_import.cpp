@@ -442,3 +442,52 @@ TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
   expect_near(b.coat_color, Vec3(float(std::exp(-0.01))), 1e-7f, "default thickness 0.01");
   EXPECT_TRUE(im.report.empty()) << im.report[0];
 }
+
+TEST(PbrtImport, TexturesMapOntoPdrtsAndBindToReflectance) {
+  const std::filesystem::path dir = ply_dir();
+  write_file(dir / "wood.png", "not read while loading");
+  write_file(dir / "s.pbrt", std::string(kCamera) +
+                                 "WorldBegin\n"
+                                 "Texture \"grain\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"string filter\" \"point\""
+                                 " \"string wrap\" \"clamp\" \"string encoding\" \"linear\" \"float uscale\" 4\n"
+                                 "Texture \"checks\" \"spectrum\" \"checkerboard\" \"texture tex1\" \"grain\" \"rgb tex2\" [0.1 0.2 0.3]"
+                                 " \"float uscale\" 8 \"float vscale\" 2\n"
+                                 "Texture \"noise\" \"float\" \"fbm\"\n"
+                                 "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
+                                 "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n"
+                                 "Material \"coateddiffuse\" \"texture reflectance\" \"noise\"\n"
+                                 "Shape \"sphere\"\n");
+  PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
+  const auto& tx = im.scene.textures;
+  ASSERT_EQ(tx.size(), 2u);
+  EXPECT_EQ(tx[0].kind, TextureDesc::Kind::Image);
+  EXPECT_EQ(tx[0].file, dir / "wood.png");
+  EXPECT_EQ(tx[0].filter, TextureFilter::None);
+  EXPECT_EQ(tx[0].wrap, TextureWrap::Clamp);
+  EXPECT_EQ(tx[0].encoding, TextureEncoding::Linear);
+  EXPECT_EQ(tx[0].scale_u, 4);
+  EXPECT_EQ(tx[1].kind, TextureDesc::Kind::Checkerboard);
+  EXPECT_EQ(tx[1].color0.texture, 0);
+  expect_near(tx[1].color1.value, {0.1f, 0.2f, 0.3f}, 0, "tex2");
+  EXPECT_EQ(tx[1].scale_u, 8);
+  EXPECT_EQ(tx[1].scale_v, 2);
+  const Material& m = im.scene.materials[im.scene.shapes[0].material];
+  ASSERT_EQ(m.textures.size(), 1u);
+  EXPECT_EQ(m.textures[0].param, MaterialParam::Albedo);
+  EXPECT_EQ(m.textures[0].texture, 1);
+  ASSERT_EQ(im.scene.shapes[0].mesh.uvs.size(), 3u);
+  EXPECT_EQ(im.scene.shapes[0].mesh.uvs[1][0], 1);
+  // The unsupported fbm texture is reported where it is defined and where it is used.
+  ASSERT_EQ(im.report.size(), 2u);
+  EXPECT_NE(im.report[0].find(":6:1: Texture class \"fbm\" is not supported"), std::string::npos) << im.report[0];
+  EXPECT_NE(im.report[1].find(":9:26: texture \"noise\" is not supported"), std::string::npos) << im.report[1];
+  EXPECT_TRUE(im.scene.materials[im.scene.shapes[1].material].textures.empty());
+  write_file(dir / "t.pbrt", std::string(kCamera) + "WorldBegin\nMaterial \"diffuse\" \"texture reflectance\" \"nope\"\nShape \"sphere\"\n");
+  try {
+    load_pbrt_scene(dir / "t.pbrt", false);
+    ADD_FAILURE() << "unknown texture accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "t.pbrt").string() + ":4:20: unknown texture \"nope\"");
+  }
+  std::filesystem::remove_all(dir);
+}

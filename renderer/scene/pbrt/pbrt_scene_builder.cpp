@@ -3,6 +3,7 @@
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "renderer/scene/pbrt/ply_mesh.h"
+#include "renderer/scene/text_file.h"
 #include "sampling/core/errors.h"
 
 #include <algorithm>
@@ -134,10 +135,22 @@ class Builder {
     }
     if (type == "float" && p->numbers.size() == 1) return Vec3(float(p->numbers[0]));
     if (type == "texture") {
-      note(p->at, "texture \"" + p->strings[0] + "\" for \"" + name + "\" is not supported yet (default used)");
+      if (!bind_to_) {
+        note(p->at, "a texture for \"" + name + "\" is not supported here (default used)");
+        return fallback;
+      }
+      if (auto t = texture_ref(*p, "spectrum")) bind_to_->push_back({bind_param_, *t});
       return fallback;
     }
     fail(p->at, p->where().substr(p->at.str().size() + 2) + " must be rgb, spectrum, blackbody or a texture");
+  }
+
+  // "reflectance": an rgb/spectrum, or a texture bound to the material's albedo.
+  Vec3 albedo(const PbrtParams& ps, Material& m) {
+    bind_to_ = &m.textures, bind_param_ = MaterialParam::Albedo;
+    Vec3 a = color(ps, "reflectance", Vec3(0.5f), false);
+    bind_to_ = nullptr;
+    return a;
   }
 
   float positive(const PbrtParams& ps, const std::string& name, float fallback, bool allow_zero = false) {
@@ -267,11 +280,7 @@ class Builder {
       for (const PbrtParam& p : d.params.list) p.used = true;
       return;
     }
-    if (n == "Texture") {
-      note(d.at, "Texture \"" + d.strings[0] + "\" (" + d.strings[2] + ") is not supported yet (ignored)");
-      for (const PbrtParam& p : d.params.list) p.used = true;
-      return;
-    }
+    if (n == "Texture") return texture(d);
     if (!in_world_ && (n == "Material" || n == "MakeNamedMaterial" || n == "NamedMaterial" || n == "Shape" ||
                        n == "LightSource" || n == "AreaLightSource" || n == "ObjectBegin" || n == "ObjectInstance"))
       fail(d.at, n + " must come after WorldBegin");
@@ -355,6 +364,102 @@ class Builder {
       return;
     }
     fail(d.at, "directive " + n + " is not handled");  // the parser knows no other names
+  }
+
+  // A texture parameter's texture, or nullopt when it names none we have (reported).
+  std::optional<int> texture_ref(const PbrtParam& p, const std::string& kind) {
+    auto it = textures_.find(kind + ":" + p.strings[0]);
+    if (it == textures_.end()) it = textures_.find((kind == "float" ? "spectrum:" : "float:") + p.strings[0]);
+    if (it == textures_.end()) fail(p.at, "unknown texture \"" + p.strings[0] + "\"");
+    if (it->second < 0) {
+      note(p.at, "texture \"" + p.strings[0] + "\" is not supported (the default value is used)");
+      return std::nullopt;
+    }
+    return it->second;
+  }
+
+  // A texture input of a checkerboard: a number, an rgb or a texture.
+  TextureInput texture_input(const PbrtParams& ps, const std::string& name, float fallback, const std::string& kind) {
+    TextureInput in;
+    in.value = Vec3(fallback);
+    const PbrtParam* p = ps.find(name);
+    if (!p) return in;
+    if (pbrt_canonical_type(p->type) == "texture") {
+      p->used = true;
+      if (auto t = texture_ref(*p, kind)) in.texture = *t;
+      return in;
+    }
+    in.value = color(ps, name, Vec3(fallback), false);
+    return in;
+  }
+
+  void texture(const PbrtDirective& d) {
+    const PbrtParams& ps = d.params;
+    const std::string& kind = d.strings[1], &cls = d.strings[2];
+    if (kind != "float" && kind != "spectrum") fail(d.at, "a texture's type must be \"float\" or \"spectrum\", got \"" + kind + "\"");
+    const std::string key = kind + ":" + d.strings[0];
+    TextureDesc t;
+    t.name = d.strings[0];
+    t.where = d.at.str();
+    bool supported = true;
+    if (const std::optional<std::string> mapping = ps.find_string("mapping"); mapping && *mapping != "uv") {
+      note(ps.find("mapping")->at, "texture mapping \"" + *mapping + "\" is not supported (skipped)");
+      supported = false;
+    }
+    t.scale_u = float(ps.get_float("uscale", 1)), t.scale_v = float(ps.get_float("vscale", 1));
+    if (!(t.scale_u > 0 && t.scale_v > 0)) fail(d.at, "\"uscale\" and \"vscale\" must be > 0");
+    for (const char* k : {"udelta", "vdelta"})
+      if (ps.get_float(k, 0) != 0) note(ps.find(k)->at, std::string("\"") + k + "\" is not supported (0 used)");
+    if (cls == "constant") {
+      t.kind = TextureDesc::Kind::Constant;
+      t.value = color(ps, "value", Vec3(1.0f), false);
+    } else if (cls == "checkerboard") {
+      t.kind = TextureDesc::Kind::Checkerboard;
+      if (ps.get_int("dimension", 2) != 2) {
+        note(d.at, "3-D checkerboards are not supported (skipped)");
+        supported = false;
+      }
+      t.color0 = texture_input(ps, "tex1", 1, kind);
+      t.color1 = texture_input(ps, "tex2", 0, kind);
+    } else if (cls == "imagemap") {
+      t.kind = TextureDesc::Kind::Image;
+      std::optional<std::string> name = ps.find_string("filename");
+      if (!name) fail(d.at, "Texture \"imagemap\" needs \"string filename\"");
+      const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+      t.file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
+      std::string reason;
+      if (!can_open_file(t.file, reason)) fail(ps.find("filename")->at, "cannot open \"" + t.file.string() + "\": " + reason);
+      const std::string filter = ps.get_string("filter", "bilinear");
+      if (filter == "point") t.filter = TextureFilter::None;
+      else if (filter == "bilinear") t.filter = TextureFilter::Bilinear;
+      else if (filter == "trilinear") t.filter = TextureFilter::Trilinear;
+      else if (filter == "ewa") t.filter = TextureFilter::Ewa;
+      else fail(ps.find("filter")->at, "unknown filter \"" + filter + "\" (point, bilinear, trilinear, ewa)");
+      const std::string wrap = ps.get_string("wrap", "repeat");
+      if (wrap == "repeat") t.wrap = TextureWrap::Repeat;
+      else if (wrap == "black") t.wrap = TextureWrap::Black;
+      else if (wrap == "clamp") t.wrap = TextureWrap::Clamp;
+      else {
+        note(ps.find("wrap")->at, "wrap \"" + wrap + "\" is not supported (repeat used)");
+      }
+      if (std::optional<std::string> enc = ps.find_string("encoding")) {
+        if (*enc == "sRGB") t.encoding = TextureEncoding::Srgb;
+        else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
+        else note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
+      }
+      if (ps.get_float("scale", 1) != 1) note(ps.find("scale")->at, "an image texture's \"scale\" is not supported (1 used)");
+      if (ps.get_bool("invert", false)) note(ps.find("invert")->at, "\"invert\" is not supported (ignored)");
+    } else {
+      note(d.at, "Texture class \"" + cls + "\" is not supported (materials using it get their default value)");
+      supported = false;
+    }
+    if (!supported) {
+      for (const PbrtParam& p : ps.list) p.used = true;
+      textures_[key] = -1;
+      return;
+    }
+    out_.scene.textures.push_back(std::move(t));
+    textures_[key] = int(out_.scene.textures.size()) - 1;
   }
 
   void camera(const PbrtDirective& d, const TransformPair& camera_from_world, bool implicit = false) {
@@ -510,7 +615,7 @@ class Builder {
     if (type == "" || type == "none" || type == "interface") return -2;
     if (type == "diffuse") {
       m.type = MaterialType::Diffuse;
-      m.albedo = color(ps, "reflectance", Vec3(0.5f), false);
+      m.albedo = albedo(ps, m);
     } else if (type == "conductor" || type == "coatedconductor") {
       if (type == "coatedconductor") note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
       m.type = MaterialType::Conductor;
@@ -534,7 +639,7 @@ class Builder {
       // roughness and index; the medium between the layers, absorbing by default (albedo 0),
       // becomes the coat's Beer-Lambert transmittance exp(-thickness) per pass.
       m.type = MaterialType::CoatedDiffuse;
-      m.albedo = color(ps, "reflectance", Vec3(0.5f), false);
+      m.albedo = albedo(ps, m);
       for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
       m.roughness = roughness(d, ps);
       float eta = 1.5f;
@@ -727,6 +832,7 @@ class Builder {
       if (flip && cur_.area) note(d.at, "an inward-facing emitting sphere is not supported (it emits outward)");
     } else if (t == "trianglemesh" || t == "loopsubdiv" || t == "bilinearmesh" || t == "plymesh") {
       std::vector<Vec3> P, N;
+      std::vector<std::array<float, 2>> uvs;
       std::vector<int64_t> idx;
       if (t == "plymesh") {
         std::optional<std::string> name = ps.find_string("filename");
@@ -742,6 +848,7 @@ class Builder {
         if (ply.dropped_faces) note(ps.find("filename")->at, std::to_string(ply.dropped_faces) + " points or lines in the PLY file are not surfaces (skipped)");
         P = std::move(ply.mesh.positions);
         N = std::move(ply.mesh.normals);
+        uvs = std::move(ply.uvs);
         idx.assign(ply.mesh.indices.begin(), ply.mesh.indices.end());
         for (const char* k : {"displacement", "edgelength"})
           if (const PbrtParam* p = ps.find(k)) {
@@ -784,12 +891,14 @@ class Builder {
         fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
       for (Vec3& n : N)
         if (!(length(n) > 0) || !is_finite(n)) fail(n_at, "\"N\" holds a zero or non-finite normal");
-      ps.point2s("uv");  // texture coordinates wait for textures
-      if (const PbrtParam* p = ps.find("uv")) note(p->at, "texture coordinates are not used yet (ignored)");
+      if (t != "plymesh") uvs = ps.point2s("uv");
+      if (!uvs.empty() && uvs.size() != P.size())
+        fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(uvs.size()));
       for (const char* k : {"S", "faceIndices"})
         if (const PbrtParam* p = ps.find(k)) p->used = true;
       s.mesh.positions = std::move(P);
       s.mesh.normals = std::move(N);
+      s.mesh.uvs = std::move(uvs);
       s.mesh.indices.reserve(idx.size());
       const bool swaps = cur_.ctm.t[0].det3() < 0;
       for (size_t i = 0; i < idx.size(); i += 3) {
@@ -880,6 +989,9 @@ class Builder {
   bool in_world_ = false, camera_seen_ = false;
   float fov_ = 90;
   int default_material_ = -1;
+  std::map<std::string, int> textures_;  // "float:name" / "spectrum:name" -> index, -1 unsupported
+  std::vector<TextureBinding>* bind_to_ = nullptr;  // where color() binds a texture parameter
+  MaterialParam bind_param_ = MaterialParam::Albedo;
 
  public:
   float fov() const { return fov_; }

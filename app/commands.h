@@ -10,5 +10,6 @@ void add_analyze_command(CLI::App& app);
 void add_tables_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
 
 }  // namespace pdrt::cli

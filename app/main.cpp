@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   pdrt::cli::add_tables_command(app);
   pdrt::cli::add_render_command(app);
   pdrt::cli::add_compare_command(app);
+  pdrt::cli::add_convert_command(app);
   try {
     check_subcommand(app, argc, argv);
     app.parse(argc, argv);

@@ -642,13 +642,7 @@ class Builder {
       m.albedo = albedo(ps, m);
       for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
       m.roughness = roughness(d, ps);
-      float eta = 1.5f;
-      if (const PbrtParam* e = ps.find("eta"); e && pbrt_canonical_type(e->type) == "spectrum") {
-        e->used = true;
-        eta = named_glass_ior(*e);
-      } else {
-        eta = positive(ps, "eta", 1.5f);
-      }
+      float eta = index_of_refraction(ps);
       if (eta < 1 || eta > 3) {
         note(d.at, "a coat index of " + fmt(eta) + " is outside pdrt's [1, 3] (clamped)");
         eta = std::clamp(eta, 1.0f, 3.0f);
@@ -664,13 +658,7 @@ class Builder {
       if (type == "thindielectric") note(d.at, "thindielectric is not supported (a solid dielectric is used)");
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
-      const PbrtParam* e = ps.find("eta");
-      if (e && pbrt_canonical_type(e->type) == "spectrum") {
-        e->used = true;
-        m.ior = named_glass_ior(*e);
-      } else {
-        m.ior = positive(ps, "eta", 1.5f);
-      }
+      m.ior = index_of_refraction(ps);
       m.roughness = roughness(d, ps);
     } else {
       note(d.at, "material \"" + type + "\" is not supported (diffuse 0.5 used)");
@@ -701,6 +689,14 @@ class Builder {
   }
 
   // pbrt-v4's named glasses at the sodium d line (587.6 nm): pdrt's dielectric takes one index.
+  // "eta" of a dielectric or a coat: a number (default 1.5), a named glass or a spectrum.
+  float index_of_refraction(const PbrtParams& ps) {
+    const PbrtParam* e = ps.find("eta");
+    if (!e || pbrt_canonical_type(e->type) != "spectrum") return positive(ps, "eta", 1.5f);
+    e->used = true;
+    return named_glass_ior(*e);
+  }
+
   float named_glass_ior(const PbrtParam& p) {
     static const std::map<std::string, float> kGlass = {{"glass-BK7", 1.5168f}, {"glass-BAF10", 1.6700f},
                                                         {"glass-FK51A", 1.4866f}, {"glass-LASF9", 1.8503f},

@@ -56,15 +56,17 @@ double PixelAccum::half_variance_of_mean() const {
   return d * d / 4;
 }
 
-Image Film::image(float exposure_stops) const {
+Image Film::image(float exposure_stops) const { return image(exposure_stops, 0, 0, width_, height_); }
+
+Image Film::image(float exposure_stops, int x0, int y0, int width, int height) const {
   Image img;
-  img.width = width_, img.height = height_;
-  std::size_t n = px_.size();
+  img.width = width, img.height = height;
+  std::size_t n = std::size_t(width) * height;
   img.rgb.resize(3 * n), img.albedo.resize(3 * n), img.normal.resize(3 * n);
   img.samples.resize(n), img.variance.resize(n), img.depth.resize(n);
   const float scale = std::exp2(exposure_stops);
   for (std::size_t i = 0; i < n; ++i) {
-    const PixelAccum& p = px_[i];
+    const PixelAccum& p = at(x0 + int(i % std::size_t(width)), y0 + int(i / std::size_t(width)));
     Vec3 v = p.value() * scale;
     img.rgb[3 * i] = v.x, img.rgb[3 * i + 1] = v.y, img.rgb[3 * i + 2] = v.z;
     img.samples[i] = float(p.traced);

@@ -57,6 +57,7 @@ class Film {
   int width() const { return width_; }
   int height() const { return height_; }
   Image image(float exposure_stops) const;  // the samples plane holds the traced counts
+  Image image(float exposure_stops, int x0, int y0, int width, int height) const;  // of a rectangle of the film
 
   // Bytes the film and its output image need per pixel (for the memory check).
   static constexpr std::size_t kBytesPerPixel = sizeof(PixelAccum) + 12 * sizeof(float);

@@ -12,6 +12,7 @@
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
 #include "renderer/render/thin_lens_camera.h"
+#include "renderer/scene/crop_window.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
@@ -53,6 +54,7 @@ struct PixelRenderer {
   const PathIntegrator& integrator;
   const Filter& filter;
   Reconstruction mode;
+  int ox = 0, oy = 0;  // the film's pixel (0, 0) in image pixels (crop window)
 
   // Pixels beyond its own that a splatted sample can reach (film point in [x, x + 1)).
   int splat_margin() const { return int(std::ceil(filter.radius())) + 1; }
@@ -107,7 +109,7 @@ struct PixelRenderer {
         rays += pr.rays;
         Film& dst = decide && (i & 1) ? *decide : film;
         const int half = int(index(i) & 1);
-        PixelAccum& own = dst.at(x, y);
+        PixelAccum& own = dst.at(x - ox, y - oy);
         ++own.traced;
         if (mode != Reconstruction::Splat) {
           own.add(pr.radiance, cs[k].weight, pr.albedo, pr.normal, pr.depth, half);  // drops NaN / inf
@@ -118,20 +120,21 @@ struct PixelRenderer {
         }
       }
     }
-    film.at(x, y).prefix = end;
-    if (mode == Reconstruction::Rank) film.at(x, y).norm = rule.rank_candidates * filter.mean_value();
+    film.at(x - ox, y - oy).prefix = end;
+    if (mode == Reconstruction::Rank) film.at(x - ox, y - oy).norm = rule.rank_candidates * filter.mean_value();
     return rays;
   }
 
-  // Cook §4.2: the sample at film point (fx, fy) adds to every pixel whose filter covers it.
+  // Cook §4.2: the sample at film point (fx, fy) adds to every pixel whose filter covers it
+  // (of those the film holds: under a crop window, none beyond the rendered rectangle).
   void splat(Film& film, float fx, float fy, const PathResult& pr, int half) const {
     const float r = filter.radius();
-    const int x0 = std::max(0, int(std::ceil(fx - 0.5f - r))), x1 = std::min(film.width() - 1, int(std::floor(fx - 0.5f + r)));
-    const int y0 = std::max(0, int(std::ceil(fy - 0.5f - r))), y1 = std::min(film.height() - 1, int(std::floor(fy - 0.5f + r)));
+    const int x0 = std::max(ox, int(std::ceil(fx - 0.5f - r))), x1 = std::min(ox + film.width() - 1, int(std::floor(fx - 0.5f + r)));
+    const int y0 = std::max(oy, int(std::ceil(fy - 0.5f - r))), y1 = std::min(oy + film.height() - 1, int(std::floor(fy - 0.5f + r)));
     for (int qy = y0; qy <= y1; ++qy)
       for (int qx = x0; qx <= x1; ++qx) {
         const float w = filter.eval(fx - (float(qx) + 0.5f), fy - (float(qy) + 0.5f));
-        if (w != 0) film.at(qx, qy).add(pr.radiance, w, pr.albedo, pr.normal, pr.depth, half);
+        if (w != 0) film.at(qx - ox, qy - oy).add(pr.radiance, w, pr.albedo, pr.normal, pr.depth, half);
       }
   }
 };
@@ -143,7 +146,25 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const bool split = ad.enabled && ad.decision == "split";
   if (split && desc.film.filter.reconstruction == Reconstruction::Rank)
     throw InputError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
-  check_film_memory(desc.film.width, desc.film.height, desc.film.size_where, split ? 2 : 1);
+  const int W = desc.film.width, H = desc.film.height;
+  const Reconstruction mode = desc.film.filter.reconstruction;
+  // pbrt-v4 §5.4.2 crop window: only `crop` is output, but the pixels that can change it are
+  // rendered too (docs/renderer.md, "Crop window"): a splatted sample reaches splat_margin
+  // pixels, and each adaptive round lets a pixel's neighbours decide it refines.
+  const PixelRect crop = crop_pixels(desc.film.crop_window, W, H);
+  if (crop.empty())
+    throw InputError(desc.film.size_where + ": film.crop_window covers no pixel of the " + std::to_string(W) + "x" +
+                     std::to_string(H) + " film");
+  const int reach = mode == Reconstruction::Splat ? int(std::ceil(desc.film.filter.radius)) + 1 : 0;
+  int margin = reach;
+  if (ad.enabled) {
+    int doublings = 0;
+    for (int64_t p = ad.min_spp; p < ad.max_spp; p *= 2) ++doublings;
+    margin = reach + (doublings + 1) * (1 + reach);
+  }
+  const PixelRect region{std::max(0, crop.x0 - margin), std::min(W, crop.x1 + margin), std::max(0, crop.y0 - margin),
+                         std::min(H, crop.y1 + margin)};
+  check_film_memory(region.width(), region.height(), desc.film.size_where, split ? 2 : 1);
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
   auto t0 = std::chrono::steady_clock::now();
@@ -155,10 +176,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   PathIntegrator integrator(scene, lights, desc.integrator);
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);
-  Film film(desc.film.width, desc.film.height);
+  Film film(region.width(), region.height());  // pixel (x, y) of the image is film.at(x - region.x0, y - region.y0)
   // Kirk & Arvo (1991): samples that chose when a pixel stops bias its estimate, so with
   // "split" they are kept apart from the image and only decide.
-  Film decision(split ? desc.film.width : 0, split ? desc.film.height : 0);
+  Film decision(split ? region.width() : 0, split ? region.height() : 0);
   std::unique_ptr<Sampler> decider;
   if (split) {
     SamplerDesc d = desc.sampler;
@@ -166,27 +187,33 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     decider = make_scene_sampler(d);
   }
   const Film& judged = split ? decision : film;
-  const Reconstruction mode = desc.film.filter.reconstruction;
-  PixelRenderer pr{camera, scene, integrator, filter, mode};
+  PixelRenderer pr{camera, scene, integrator, filter, mode, region.x0, region.y0};
 
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double build_cpu_seconds = process_cpu_seconds() - cpu0;
-  const int W = desc.film.width, H = desc.film.height;
   const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
   tbb::enumerable_thread_specific<int64_t> rays(0);
   bool stopped = false;
 
   // Splatting writes into neighbouring tiles, so tiles run in waves whose footprints (tile
   // plus margin) are disjoint: no locks, and every pixel receives its contributions in the
-  // same order at any thread count (wave order, then the tile's pixel order).
+  // same order at any thread count (wave order, then the tile's pixel order). Tiles and waves
+  // are the full image's under a crop window too, so a pixel's contributions come in the same
+  // order as in the full render.
   const int period = mode == Reconstruction::Splat ? 1 + (2 * pr.splat_margin() + kTile - 1) / kTile : 1;
   std::vector<std::vector<int>> waves(std::size_t(period) * period);
-  for (int t = 0; t < tx * ty; ++t) waves[std::size_t((t / tx) % period) * period + (t % tx) % period].push_back(t);
+  int tiles = 0;
+  for (int t = 0; t < tx * ty; ++t) {
+    const int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
+    if (x0 + kTile <= region.x0 || x0 >= region.x1 || y0 + kTile <= region.y0 || y0 >= region.y1) continue;
+    waves[std::size_t((t / tx) % period) * period + (t % tx) % period].push_back(t), ++tiles;
+  }
+  const int RW = region.width(), RH = region.height();
 
   // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
   auto pass = [&](const char* label, auto&& end_of) {
     std::atomic<bool> cancelled{false};
-    Progress progress(label, double(tx) * ty, opt.quiet);
+    Progress progress(label, double(tiles), opt.quiet);
     for (const std::vector<int>& wave : waves) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, wave.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t j = r.begin(); j != r.end(); ++j) {
@@ -195,15 +222,15 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
             return;
           }
           const int t = wave[j];
-          int x0 = (t % tx) * kTile, y0 = (t / tx) * kTile;
-          int x1 = std::min(x0 + kTile, W), y1 = std::min(y0 + kTile, H);
+          int x0 = std::max((t % tx) * kTile, region.x0), y0 = std::max((t / tx) * kTile, region.y0);
+          int x1 = std::min((t % tx) * kTile + kTile, region.x1), y1 = std::min((t / tx) * kTile + kTile, region.y1);
           int64_t& local = rays.local();
           PixelSampleState ps(sampler);
           std::optional<PixelSampleState> pd;
           if (decider) pd.emplace(*decider);
           for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-              int64_t begin = film.at(x, y).prefix, end = end_of(x, y);
+              int64_t begin = film.at(x - region.x0, y - region.y0).prefix, end = end_of(x - region.x0, y - region.y0);
               if (end > begin) local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps, pd ? &*pd : nullptr);
             }
           progress.advance();
@@ -224,34 +251,36 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     // the threshold doubles its sample count; its 3x3 neighbours refine with it, so edges
     // are not left blocky. Samples already taken are never moved or discarded.
     AdaptiveMetric metric(ad);
-    std::vector<uint8_t> bad(std::size_t(W) * H), active(std::size_t(W) * H);
-    std::vector<double> row_mean(H);
+    // In film coordinates (the rendered rectangle); the image mean is the crop's.
+    std::vector<uint8_t> bad(std::size_t(RW) * RH), active(std::size_t(RW) * RH);
+    const int cx0 = crop.x0 - region.x0, cy0 = crop.y0 - region.y0, CW = crop.width(), CH = crop.height();
+    std::vector<double> row_mean(CH);
     for (;;) {
       if (metric.needs_image_mean()) {
         // Rows in parallel, then summed in order: the same mean at any thread count.
-        tbb::parallel_for(0, H, [&](int y) {
+        tbb::parallel_for(0, CH, [&](int y) {
           double s = 0;
-          for (int x = 0; x < W; ++x) s += judged.at(x, y).mean_luminance();
-          row_mean[y] = s / W;
+          for (int x = 0; x < CW; ++x) s += judged.at(cx0 + x, cy0 + y).mean_luminance();
+          row_mean[y] = s / CW;
         });
         double s = 0;
         for (double r : row_mean) s += r;
-        metric.set_image_mean(s / H);
+        metric.set_image_mean(s / CH);
       }
-      tbb::parallel_for(0, H, [&](int y) {
-        for (int x = 0; x < W; ++x) bad[std::size_t(y) * W + x] = !metric.converged(judged.at(x, y));
+      tbb::parallel_for(0, RH, [&](int y) {
+        for (int x = 0; x < RW; ++x) bad[std::size_t(y) * RW + x] = !metric.converged(judged.at(x, y));
       });
       int64_t n_active = 0;
-      for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
+      for (int y = 0; y < RH; ++y)
+        for (int x = 0; x < RW; ++x) {
           bool a = false;
           for (int dy = -1; dy <= 1 && !a; ++dy)
             for (int dx = -1; dx <= 1 && !a; ++dx) {
               int xx = x + dx, yy = y + dy;
-              a = xx >= 0 && yy >= 0 && xx < W && yy < H && bad[std::size_t(yy) * W + xx];
+              a = xx >= 0 && yy >= 0 && xx < RW && yy < RH && bad[std::size_t(yy) * RW + xx];
             }
           a = a && film.at(x, y).prefix < ad.max_spp;
-          active[std::size_t(y) * W + x] = a;
+          active[std::size_t(y) * RW + x] = a;
           n_active += a;
         }
       if (n_active == 0) break;
@@ -259,7 +288,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
       std::string label = "render (adaptive, round " + std::to_string(rounds) + ")";
       if (!pass(label.c_str(), [&](int x, int y) {
             int64_t p = film.at(x, y).prefix;
-            return active[std::size_t(y) * W + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
+            return active[std::size_t(y) * RW + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
           }))
         break;
     }
@@ -268,22 +297,26 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.sampler_profile = profiler.result();
   device.check();
 
-  res.image = film.image(desc.film.exposure);
+  res.image = film.image(desc.film.exposure, crop.x0 - region.x0, crop.y0 - region.y0, crop.width(), crop.height());
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.build_seconds = build_seconds;
   res.stats.cpu_seconds = process_cpu_seconds() - cpu0;
   res.stats.build_cpu_seconds = build_cpu_seconds;
   for (int64_t r : rays) res.stats.rays += r;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      res.stats.samples += film.at(x, y).traced;  // whether or not they counted
+  int64_t crop_samples = 0;  // the margin's samples are work done, but not the image's spp
+  for (int y = 0; y < RH; ++y)
+    for (int x = 0; x < RW; ++x) {
+      int64_t n = film.at(x, y).traced;  // whether or not they counted
       res.stats.nonfinite_samples += film.at(x, y).dropped;
-      if (split) res.stats.nonfinite_samples += decision.at(x, y).dropped, res.stats.samples += decision.at(x, y).traced;
+      if (split) res.stats.nonfinite_samples += decision.at(x, y).dropped, n += decision.at(x, y).traced;
+      res.stats.samples += n;
+      const int ix = x + region.x0, iy = y + region.y0;
+      if (ix >= crop.x0 && ix < crop.x1 && iy >= crop.y0 && iy < crop.y1) crop_samples += n;
     }
   if (res.stats.nonfinite_samples > 0 && !opt.quiet)
     std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",
                  (long long)res.stats.nonfinite_samples);
-  res.stats.spp_mean = double(res.stats.samples) / (double(desc.film.width) * desc.film.height);
+  res.stats.spp_mean = double(crop_samples) / (double(crop.width()) * crop.height());
   res.stats.partial = stopped;
   res.stats.adaptive_rounds = rounds;
   res.stats.triangles = scene.triangle_count();

@@ -1,6 +1,7 @@
 #include "renderer/render/thin_lens_camera.h"
 
 #include "renderer/render/concentric_disk.h"
+#include "renderer/render/screen_window.h"
 
 #include <cmath>
 
@@ -26,9 +27,11 @@ Vec3 eye_at(const CameraDesc& d, float shutter_time, Vec3* look_at) {
 }  // namespace
 
 ThinLensCamera::ThinLensCamera(const CameraDesc& desc, int width, int height)
-    : desc_(desc), width_(width), height_(height) {
-  tan_half_ = std::tan(0.5f * desc.vfov_deg * kPi / 180.0f);
-  aspect_ = float(width) / float(height);
+    : desc_(desc) {
+  ortho_ = desc.projection == CameraDesc::Projection::Orthographic;
+  const std::array<float, 4> w = screen_window(desc, width, height);
+  x0_ = w[0], y1_ = w[3];
+  sx_scale_ = (w[1] - w[0]) / float(width), sy_scale_ = (w[3] - w[2]) / float(height);
   if (desc_.focus_distance <= 0) desc_.focus_distance = length(desc.look_at - desc.position);
   static_pose_ = pose_at(0.0f);
 }
@@ -64,11 +67,11 @@ std::array<float, 2> ThinLensCamera::aperture_point(std::array<double, 2> u, int
 
 Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> lens_u, float time) const {
   const Pose p = desc_.motion.empty() ? static_pose_ : pose_at(time);
-  float sx = (2 * film_x / width_ - 1) * tan_half_ * aspect_;
-  float sy = (1 - 2 * film_y / height_) * tan_half_;
-  Vec3 d = p.forward + p.right * sx + p.up * sy;  // direction through the pixel, forward component 1
+  const float sx = x0_ + film_x * sx_scale_, sy = y1_ - film_y * sy_scale_;
   Ray ray;
   ray.time = time;
+  if (ortho_) return generate_parallel(p, sx, sy, lens_u, ray);
+  Vec3 d = p.forward + p.right * sx + p.up * sy;  // direction through the pixel, forward component 1
   if (desc_.aperture_radius <= 0) {
     ray.org = p.eye;
     ray.dir = normalize(d);
@@ -81,12 +84,31 @@ Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> l
   return ray;
 }
 
+// pbrt-v4 OrthographicCamera::GenerateRay: the pixel's point on the screen window, moved by
+// the lens offset, aimed at where the unmoved ray meets the plane of focus.
+Ray ThinLensCamera::generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, Ray ray) const {
+  const Vec3 o = p.eye + p.right * sx + p.up * sy;
+  if (desc_.aperture_radius <= 0) {
+    ray.org = o;
+    ray.dir = p.forward;
+    return ray;
+  }
+  const Vec3 focus = o + p.forward * desc_.focus_distance;
+  auto a = aperture_point(lens_u, desc_.aperture_blades, desc_.aperture_rotation_deg * kPi / 180.0f);
+  ray.org = o + p.right * (a[0] * desc_.aperture_radius) + p.up * (a[1] * desc_.aperture_radius);
+  ray.dir = normalize(focus - ray.org);
+  return ray;
+}
+
 std::array<float, 2> ThinLensCamera::project(const Vec3& w) const {
   const Pose& p = static_pose_;
   Vec3 v = w - p.eye;
-  float z = dot(v, p.forward);
-  float sx = dot(v, p.right) / z, sy = dot(v, p.up) / z;
-  return {(sx / (tan_half_ * aspect_) + 1) * 0.5f * width_, (1 - sy / tan_half_) * 0.5f * height_};
+  float sx = dot(v, p.right), sy = dot(v, p.up);
+  if (!ortho_) {
+    const float z = dot(v, p.forward);
+    sx /= z, sy /= z;
+  }
+  return {(sx - x0_) / sx_scale_, (y1_ - sy) / sy_scale_};
 }
 
 }  // namespace pdrt

@@ -4,6 +4,9 @@
 // point; rays from every lens point pass through it, so points at the focus distance stay
 // sharp and others spread over the circle of confusion. Polygonal apertures (blades) give
 // polygonal bokeh. Camera motion interpolates keyframed position / look-at over the shutter.
+// Both of pbrt-v4's projective cameras (§5.2): perspective (rays from the eye through the
+// screen window at distance 1) and orthographic (parallel rays from the screen window, lens
+// offsets aimed at the point on the plane of focus, as pbrt-v4's OrthographicCamera).
 #include "renderer/render/ray.h"
 #include "renderer/scene/scene_desc.h"
 
@@ -23,7 +26,7 @@ class ThinLensCamera {
   // uniformly by area.
   static std::array<float, 2> aperture_point(std::array<double, 2> u, int blades, float rotation_rad);
 
-  // Pinhole projection at time 0: world point -> film pixel coordinates (for tests).
+  // Pinhole (or parallel) projection at time 0: world point -> film pixel coordinates (for tests).
   std::array<float, 2> project(const Vec3& p) const;
 
  private:
@@ -31,11 +34,12 @@ class ThinLensCamera {
     Vec3 eye, right, up, forward;  // right-handed: forward = look direction
   };
   Pose pose_at(float time) const;
+  Ray generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, Ray ray) const;
 
   CameraDesc desc_;
-  int width_, height_;
-  float tan_half_;   // tan(vfov/2)
-  float aspect_;
+  bool ortho_;
+  // Film point -> screen window: sx = x0 + film_x * sx_scale, sy = y1 - film_y * sy_scale.
+  float x0_, y1_, sx_scale_, sy_scale_;
   Pose static_pose_;
 };
 

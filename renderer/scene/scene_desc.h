@@ -31,6 +31,15 @@ struct CameraDesc {
   // to right, as pbrt's left-handed camera space gives it (pbrt import, docs/pbrt-import.md).
   bool flip_x = false;
   std::vector<CameraKey> motion;  // optional; sorted by time; overrides position/look_at when present
+  // pbrt-v4 §5.2: parallel rays along the view direction instead of rays from the eye.
+  enum class Projection { Perspective, Orthographic } projection = Projection::Perspective;
+  float ortho_height = 2;  // orthographic: the film's vertical extent in scene units (default window)
+  // pbrt-v4's screen window [x0, x1, y0, y1]: the film's extent on the plane at distance 1
+  // (perspective) or in scene units (orthographic), along right and up; x0 < x1, y0 < y1.
+  // Off-centre windows give shifted (sheared) frusta. Unset: centred, from vfov_deg or
+  // ortho_height and the film's aspect (renderer/render/screen_window.h).
+  bool has_screen_window = false;
+  std::array<float, 4> screen_window{-1, 1, -1, 1};
 };
 
 enum class FilterType { Box, Tent, Gaussian, Mitchell };
@@ -62,6 +71,10 @@ struct FilmDesc {
   FilterDesc filter;
   float exposure = 0;  // stops: pixel values are scaled by 2^exposure
   std::string size_where = "film";  // "scene.json:3:21: film.width" for messages about the size
+  // pbrt-v4's crop window [x0, x1, y0, y1] in [0, 1] of the film (y down): pixels
+  // ceil(width x0) .. ceil(width x1) - 1 etc. are rendered, with the full film's camera and
+  // sample coordinates, and the image has the cropped size (renderer/render/crop_window.h).
+  std::array<float, 4> crop_window{0, 1, 0, 1};
 };
 
 struct AdaptiveDesc {

@@ -6,6 +6,7 @@
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
 #include "renderer/scene/asset_path.h"
+#include "renderer/scene/crop_window.h"
 #include "renderer/scene/environment_image.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/obj_loader.h"
@@ -34,6 +35,8 @@ class SceneParser {
  private:
   void camera(const JsonObject& o);
   void film(const JsonObject& o);
+  void projection(const JsonObject& camera);  // type, ortho_height, screen_window
+  void crop_window(const JsonNode& n);
   void sampler(const JsonObject& o);
   void integrator(const JsonObject& o);
   void textures(const JsonNode& n);
@@ -98,7 +101,7 @@ SceneDesc SceneParser::parse() {
 
 void SceneParser::camera(const JsonObject& o) {
   o.allow({"position", "look_at", "up", "vfov_deg", "aperture_radius", "focus_distance", "aperture_blades",
-           "aperture_rotation_deg", "shutter", "motion", "flip_x"});
+           "aperture_rotation_deg", "shutter", "motion", "flip_x", "type", "ortho_height", "screen_window"});
   CameraDesc& c = scene_.camera;
   JsonNode pos = o.require("position"), look = o.require("look_at");
   c.position = pos.vec3();
@@ -129,6 +132,7 @@ void SceneParser::camera(const JsonObject& o) {
   }
   if (auto n = o.get("aperture_rotation_deg")) c.aperture_rotation_deg = n->number();
   if (auto n = o.get("flip_x")) c.flip_x = n->boolean();
+  projection(o);
   if (auto n = o.get("shutter")) {
     if (!n->value().is_array() || n->value().size() != 2) n->fail_got("must be [open, close]");
     c.shutter_open = n->at(0).number();
@@ -153,6 +157,54 @@ void SceneParser::camera(const JsonObject& o) {
   }
 }
 
+namespace {
+
+// [x0, x1, y0, y1] of finite numbers with x0 < x1 and y0 < y1.
+std::array<float, 4> window(const JsonNode& n) {
+  if (!n.value().is_array() || n.value().size() != 4) n.fail_got("must be [x0, x1, y0, y1]");
+  std::array<float, 4> w;
+  for (int i = 0; i < 4; ++i) w[i] = n.at(i).number();
+  if (!(w[0] < w[1])) n.fail_got("must have x0 < x1");
+  if (!(w[2] < w[3])) n.fail_got("must have y0 < y1");
+  return w;
+}
+
+}  // namespace
+
+void SceneParser::projection(const JsonObject& o) {
+  CameraDesc& c = scene_.camera;
+  std::optional<JsonNode> type = o.get("type"), height = o.get("ortho_height");
+  if (type && type->choice({"perspective", "orthographic"}) == "orthographic")
+    c.projection = CameraDesc::Projection::Orthographic;
+  if (height) {
+    if (c.projection != CameraDesc::Projection::Orthographic)
+      height->fail_key("needs \"type\": \"orthographic\" (the perspective camera's extent is vfov_deg)");
+    c.ortho_height = height->positive();
+  }
+  if (auto n = o.get("screen_window")) {
+    c.screen_window = window(*n);
+    c.has_screen_window = true;
+    // Past this a ray's direction (or its extent) overflows float arithmetic.
+    for (float v : c.screen_window)
+      if (!(std::abs(v) <= 1e6f)) n->fail_got("must have every bound within [-1e6, 1e6]");
+  }
+}
+
+void SceneParser::crop_window(const JsonNode& n) {
+  FilmDesc& f = scene_.film;
+  std::array<float, 4> w = window(n);
+  for (float v : w)
+    if (!(v >= 0 && v <= 1)) n.fail_got("must lie within [0, 1] (fractions of the film, y down)");
+  PixelRect px = crop_pixels(w, f.width, f.height);
+  if (px.empty()) {
+    std::ostringstream s;
+    s << "covers no pixel of the " << f.width << "x" << f.height << " film (pixels ceil(size * bound) are ["
+      << px.x0 << ", " << px.x1 << ") x [" << px.y0 << ", " << px.y1 << "))";
+    n.fail_got(s.str());
+  }
+  f.crop_window = w;
+}
+
 void SceneParser::check_time(const JsonNode& t, float previous, bool first) const {
   float time = t.number();
   auto [open, close] = shutter();
@@ -169,13 +221,14 @@ void SceneParser::check_time(const JsonNode& t, float previous, bool first) cons
 }
 
 void SceneParser::film(const JsonObject& o) {
-  o.allow({"width", "height", "filter", "exposure"});
+  o.allow({"width", "height", "filter", "exposure", "crop_window"});
   FilmDesc& f = scene_.film;
   JsonNode width = o.require("width");
   f.width = int(width.integer_in(kFilmSizeRange));
   f.size_where = width.where() + "/height";
   f.height = int(o.require("height").integer_in(kFilmSizeRange));
   if (auto n = o.get("exposure")) f.exposure = n->number();
+  if (auto n = o.get("crop_window")) crop_window(*n);
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
     if (auto old = fo.get("selection"))

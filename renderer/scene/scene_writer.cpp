@@ -187,6 +187,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
   if (c.aperture_blades) cam["aperture_blades"] = c.aperture_blades, cam["aperture_rotation_deg"] = c.aperture_rotation_deg;
   cam["shutter"] = ojson::array({c.shutter_open, c.shutter_close});
   if (c.flip_x) cam["flip_x"] = true;
+  if (c.projection == CameraDesc::Projection::Orthographic) cam["type"] = "orthographic", cam["ortho_height"] = c.ortho_height;
+  if (c.has_screen_window) cam["screen_window"] = ojson::array({c.screen_window[0], c.screen_window[1], c.screen_window[2], c.screen_window[3]});
   if (!c.motion.empty()) {
     cam["motion"] = ojson::array();
     for (const CameraKey& k : c.motion)
@@ -198,6 +200,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
                {"filter", {{"type", kFilters[int(s.film.filter.type)]}, {"radius", s.film.filter.radius},
                            {"reconstruction", reconstruction_name(s.film.filter.reconstruction)}}},
                {"exposure", s.film.exposure}};
+  if (s.film.crop_window != std::array<float, 4>{0, 1, 0, 1})
+    j["film"]["crop_window"] = ojson::array({s.film.crop_window[0], s.film.crop_window[1], s.film.crop_window[2], s.film.crop_window[3]});
   ojson sampler = {{"type", s.sampler.type}, {"spp", s.sampler.spp}, {"seed", s.sampler.seed}};
   if (s.sampler.adaptive.enabled) {
     const AdaptiveDesc& a = s.sampler.adaptive;

@@ -3,6 +3,7 @@
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "renderer/scene/pbrt/ply_mesh.h"
+#include "renderer/scene/crop_window.h"
 #include "renderer/scene/text_file.h"
 #include "sampling/core/errors.h"
 
@@ -469,7 +470,9 @@ class Builder {
     named_["camera"] = camera_from_world;
     CameraDesc& c = out_.scene.camera;
     const PbrtParams& ps = d.params;
-    if (d.strings[0] != "perspective") {
+    if (d.strings[0] == "orthographic") {
+      c.projection = CameraDesc::Projection::Orthographic;
+    } else if (d.strings[0] != "perspective") {
       note(d.at, "Camera \"" + d.strings[0] + "\" is not supported (a perspective camera is used)");
       for (const PbrtParam& p : ps.list) p.used = true;
     }
@@ -487,6 +490,8 @@ class Builder {
     };
     Vec3 pos, fwd, up, right;
     pose(world_from_camera[0], &pos, &fwd, &up, &right);
+    // Camera-space lengths in scene units: the orthographic screen window is in camera space.
+    camera_scale_ = {length(right), length(world_from_camera[0].vector({0, 1, 0}))};
     c.position = pos;
     c.up = up;
     // pbrt's raster x follows camera +x; pdrt's follows forward x up unless flipped.
@@ -509,17 +514,27 @@ class Builder {
         c.motion.clear();
       }
     }
-    fov_ = float(ps.get_float("fov", 90));
-    if (!(fov_ > 0 && fov_ < 180)) fail(ps.find("fov")->at, "\"float fov\" must be in (0, 180), got " + fmt(fov_));
-    if (const PbrtParam* p = ps.find("screenwindow")) {
-      p->used = true;
-      note(p->at, "\"screenwindow\" is not supported (the default window is used)");
+    if (c.projection == CameraDesc::Projection::Perspective) {
+      fov_ = float(ps.get_float("fov", 90));
+      if (!(fov_ > 0 && fov_ < 180)) fail(ps.find("fov")->at, "\"float fov\" must be in (0, 180), got " + fmt(fov_));
     }
-    if (const PbrtParam* p = ps.find("frameaspectratio")) {
-      p->used = true;
-      note(p->at, "\"frameaspectratio\" is not supported (the film's aspect is used)");
-    }
+    screen_params(ps);
     camera_at_ = d.at;
+  }
+
+  // pbrt-v4 CameraBase: "screenwindow" [x0 x1 y0 y1] in screen space and "frameaspectratio",
+  // resolved against the film in resolve_screen() once its resolution is known.
+  void screen_params(const PbrtParams& ps) {
+    if (const PbrtParam* p = ps.find("screenwindow")) {
+      std::vector<double> w = ps.floats("screenwindow");
+      p->used = true;
+      if (w.size() != 4) fail(p->at, "\"float screenwindow\" needs 4 values [x0 x1 y0 y1], got " + std::to_string(w.size()));
+      for (double v : w)
+        if (!(std::abs(v) <= 1e6)) fail(p->at, "\"float screenwindow\" values must be finite, within [-1e6, 1e6], got " + fmt(v));
+      if (!(w[0] < w[1] && w[2] < w[3])) fail(p->at, "\"float screenwindow\" must have x0 < x1 and y0 < y1");
+      screen_window_ = {float(w[0]), float(w[1]), float(w[2]), float(w[3])};
+    }
+    if (ps.find("frameaspectratio")) frame_aspect_ = positive(ps, "frameaspectratio", 1);
   }
 
   void film(const PbrtDirective& d) {
@@ -535,15 +550,42 @@ class Builder {
     out_.scene.film.width = res("xresolution", 1280);
     out_.scene.film.height = res("yresolution", 720);
     if (const PbrtParam* p = ps.find("filename")) p->used = true;  // pdrt render -o names the output
-    if (const PbrtParam* p = ps.find("cropwindow")) {
-      p->used = true;
-      note(p->at, "\"cropwindow\" is not supported (the whole film is rendered)");
-    }
+    crop(ps);
     for (const char* k : {"iso", "exposuretime", "whitebalance"})
       if (const PbrtParam* p = ps.find(k)) {
         p->used = true;
         note(p->at, std::string("\"") + k + "\" is not supported (ignored)");
       }
+  }
+
+  // pbrt-v4 FilmBaseParameters: "cropwindow" [x0 x1 y0 y1] (each pair sorted, clamped to
+  // [0, 1]) or "pixelbounds" [x0 x1 y0 y1] in pixels (clamped to the film; wins over both).
+  void crop(const PbrtParams& ps) {
+    FilmDesc& f = out_.scene.film;
+    const PbrtParam* cw = ps.find("cropwindow");
+    const PbrtParam* pb = ps.find("pixelbounds");
+    if (cw) {
+      std::vector<double> c = ps.floats("cropwindow");
+      cw->used = true;
+      if (c.size() != 4) fail(cw->at, "\"float cropwindow\" needs 4 values [x0 x1 y0 y1], got " + std::to_string(c.size()));
+      for (double v : c)
+        if (!std::isfinite(v)) fail(cw->at, "\"float cropwindow\" values must be finite, got " + fmt(v));
+      auto unit = [](double v) { return float(std::clamp(v, 0.0, 1.0)); };
+      f.crop_window = {unit(std::min(c[0], c[1])), unit(std::max(c[0], c[1])), unit(std::min(c[2], c[3])),
+                       unit(std::max(c[2], c[3]))};
+    }
+    if (pb) {
+      std::vector<int64_t> b = ps.ints("pixelbounds");
+      pb->used = true;
+      if (b.size() != 4) fail(pb->at, "\"integer pixelbounds\" needs 4 values [x0 x1 y0 y1], got " + std::to_string(b.size()));
+      if (cw) note(pb->at, "both \"cropwindow\" and \"pixelbounds\" (pixelbounds used, as pbrt-v4)");
+      auto clamp = [](int64_t v, int hi) { return int(std::clamp<int64_t>(v, 0, hi)); };
+      f.crop_window = crop_window_for_pixels(clamp(b[0], f.width), clamp(b[1], f.width), clamp(b[2], f.height),
+                                             clamp(b[3], f.height), f.width, f.height);
+    }
+    if (crop_pixels(f.crop_window, f.width, f.height).empty())
+      fail((pb ? pb : cw)->at, std::string(pb ? "\"integer pixelbounds\"" : "\"float cropwindow\"") + " covers no pixel of the " +
+                                   std::to_string(f.width) + "x" + std::to_string(f.height) + " film");
   }
 
   void filter(const PbrtDirective& d) {
@@ -984,6 +1026,9 @@ class Builder {
   double times_[2] = {0, 1};
   bool in_world_ = false, camera_seen_ = false;
   float fov_ = 90;
+  std::optional<std::array<float, 4>> screen_window_;  // pbrt's, in screen space
+  std::optional<float> frame_aspect_;
+  std::array<float, 2> camera_scale_{1, 1};  // camera space's x and y unit in scene units
   int default_material_ = -1;
   std::map<std::string, int> textures_;  // "float:name" / "spectrum:name" -> index, -1 unsupported
   std::vector<TextureBinding>* bind_to_ = nullptr;  // where color() binds a texture parameter
@@ -991,6 +1036,27 @@ class Builder {
 
  public:
   float fov() const { return fov_; }
+
+  // pbrt-v4 CameraBase: the screen window defaults to [-frame, frame] x [-1, 1] when the
+  // frame aspect ratio (default the film's) is above 1, else [-1, 1] x [-1/frame, 1/frame].
+  // pdrt's window is on the plane at distance 1 (perspective: pbrt's screen space is that
+  // scaled by 1/tan(fov/2)) or in scene units (orthographic). Without either parameter the
+  // default needs no window: pdrt's vfov (build_pbrt_scene) or ortho_height covers it.
+  void resolve_screen(SceneDesc& s) const {
+    CameraDesc& c = s.camera;
+    const bool ortho = c.projection == CameraDesc::Projection::Orthographic;
+    const float sx = camera_scale_[0], sy = camera_scale_[1];
+    if (!screen_window_ && !frame_aspect_) {
+      if (ortho && std::abs(sx - sy) <= 1e-6f * sy) c.ortho_height = (s.film.width >= s.film.height ? 2.0f : 2.0f * float(s.film.height) / float(s.film.width)) * sy;
+      if (!ortho || std::abs(sx - sy) <= 1e-6f * sy) return;
+    }
+    const float frame = frame_aspect_.value_or(float(s.film.width) / float(s.film.height));
+    std::array<float, 4> w = frame > 1 ? std::array<float, 4>{-frame, frame, -1, 1} : std::array<float, 4>{-1, 1, -1 / frame, 1 / frame};
+    if (screen_window_) w = *screen_window_;
+    const float kx = ortho ? sx : float(std::tan(0.5 * fov_ * kPiD / 180)), ky = ortho ? sy : kx;
+    c.screen_window = {w[0] * kx, w[1] * kx, w[2] * ky, w[3] * ky};
+    c.has_screen_window = true;
+  }
 };
 
 }  // namespace
@@ -998,6 +1064,7 @@ class Builder {
 PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict) {
   Builder b(strict);
   PbrtImport out = b.run(directives);
+  b.resolve_screen(out.scene);
   // pbrt's fov spans the film's shorter side; pdrt's is vertical.
   FilmDesc& f = out.scene.film;
   const double half = std::tan(0.5 * b.fov() * kPiD / 180);

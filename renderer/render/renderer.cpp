@@ -156,12 +156,12 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     throw InputError(desc.film.size_where + ": film.crop_window covers no pixel of the " + std::to_string(W) + "x" +
                      std::to_string(H) + " film");
   const int reach = mode == Reconstruction::Splat ? int(std::ceil(desc.film.filter.radius)) + 1 : 0;
-  int margin = reach;
+  int margin = reach, margin_rounds = 0;
   if (ad.enabled) {
-    int doublings = 0;
-    for (int64_t p = ad.min_spp; p < ad.max_spp; p *= 2) ++doublings;
-    margin = reach + (doublings + 1) * (1 + reach);
+    for (int64_t p = ad.min_spp; p < ad.max_spp; p *= 2) ++margin_rounds;
+    margin = reach + ++margin_rounds * (1 + reach);
   }
+  const bool metric_needs_mean = ad.enabled && AdaptiveMetric(ad).needs_image_mean();
   const PixelRect region{std::max(0, crop.x0 - margin), std::min(W, crop.x1 + margin), std::max(0, crop.y0 - margin),
                          std::min(H, crop.y1 + margin)};
   check_film_memory(region.width(), region.height(), desc.film.size_where, split ? 2 : 1);
@@ -313,6 +313,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
       const int ix = x + region.x0, iy = y + region.y0;
       if (ix >= crop.x0 && ix < crop.x1 && iy >= crop.y0 && iy < crop.y1) crop_samples += n;
     }
+  if (ad.enabled && (crop.width() < W || crop.height() < H) && !opt.quiet &&
+      (rounds > margin_rounds || metric_needs_mean))
+    std::fprintf(stderr, "pdrt: warning: the crop window of an adaptive render may differ from the full render's crop (%s)\n",
+                 metric_needs_mean ? "error-per-sample compares with the crop's mean" : "refinement ran past the rounds the crop's margin covers");
   if (res.stats.nonfinite_samples > 0 && !opt.quiet)
     std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",
                  (long long)res.stats.nonfinite_samples);

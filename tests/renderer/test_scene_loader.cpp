@@ -1185,3 +1185,72 @@ TEST_F(SceneLoader, GeneratedSkyIsFoundFromAnyScene) {
   EXPECT_EQ(s.environment.width, 512);
   EXPECT_EQ(s.environment.height, 256);
 }
+
+// --- camera projection, screen window and film crop window ----------------------------------
+
+namespace {
+
+// A scene whose camera (line 2) or film (line 3) object ends with `extra`.
+std::string projection_scene(const std::string& camera_extra, const std::string& film_extra) {
+  return "{\n  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]" + (camera_extra.empty() ? "" : ", " + camera_extra) +
+         "},\n  \"film\": {\"width\": 8, \"height\": 8" + (film_extra.empty() ? "" : ", " + film_extra) + "}\n}";
+}
+
+}  // namespace
+
+TEST_F(SceneLoader, ExampleProjectionScreenAndCropWindow) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  EXPECT_EQ(s.camera.projection, CameraDesc::Projection::Orthographic);
+  EXPECT_FLOAT_EQ(s.camera.ortho_height, 3.5f);
+  EXPECT_TRUE(s.camera.has_screen_window);
+  EXPECT_FLOAT_EQ(s.camera.screen_window[0], -2.6f);
+  EXPECT_FLOAT_EQ(s.camera.screen_window[3], 1.9f);
+  EXPECT_FLOAT_EQ(s.film.crop_window[0], 0.05f);
+  EXPECT_FLOAT_EQ(s.film.crop_window[3], 0.95f);
+}
+
+TEST_F(SceneLoader, ProjectionDefaultsArePerspectiveWithoutWindows) {
+  SceneDesc s = load_scene(scene(projection_scene("", "")));
+  EXPECT_EQ(s.camera.projection, CameraDesc::Projection::Perspective);
+  EXPECT_FALSE(s.camera.has_screen_window);
+  EXPECT_FLOAT_EQ(s.camera.ortho_height, 2);
+  EXPECT_EQ(s.film.crop_window, (std::array<float, 4>{0, 1, 0, 1}));
+  s = load_scene(scene(projection_scene("\"type\": \"orthographic\", \"screen_window\": [-1, 3, 0, 2]", "\"crop_window\": [0, 0.25, 0.5, 1]")));
+  EXPECT_EQ(s.camera.projection, CameraDesc::Projection::Orthographic);
+  EXPECT_EQ(s.camera.screen_window, (std::array<float, 4>{-1, 3, 0, 2}));
+  EXPECT_EQ(s.film.crop_window, (std::array<float, 4>{0, 0.25f, 0.5f, 1}));
+}
+
+// Every bad value of camera.type, ortho_height, screen_window and film.crop_window, with its position.
+TEST_F(SceneLoader, BadProjectionScreenOrCropWindow) {
+  const fs::path f = scene("");
+  const std::pair<std::string, std::string> camera_cases[] = {
+      {"\"type\": \"fisheye\"", "s.json:2:67: camera.type must be one of perspective, orthographic, got \"fisheye\""},
+      {"\"ortho_height\": 2", "s.json:2:59: camera.ortho_height needs \"type\": \"orthographic\""},
+      {"\"type\": \"orthographic\", \"ortho_height\": 0", "s.json:2:99: camera.ortho_height must be > 0, got 0"},
+      {"\"screen_window\": [-1, 1, -1]", "s.json:2:76: camera.screen_window must be [x0, x1, y0, y1], got [-1,1,-1]"},
+      {"\"screen_window\": \"wide\"", "s.json:2:76: camera.screen_window must be [x0, x1, y0, y1], got \"wide\""},
+      {"\"screen_window\": [1, -1, -1, 1]", "s.json:2:76: camera.screen_window must have x0 < x1, got [1,-1,-1,1]"},
+      {"\"screen_window\": [-1, 1, 0.5, 0.5]", "s.json:2:76: camera.screen_window must have y0 < y1, got [-1,1,0.5,0.5]"},
+      {"\"screen_window\": [-1, 1e999, -1, 1]", "s.json:2:81: camera.screen_window[1] must be a finite number, got 1e999"},
+      {"\"screen_window\": [-1, \"a\", -1, 1]", "s.json:2:81: camera.screen_window[1] must be a number"},
+      {"\"screen_window\": [-1, 1, -1, 2e6]", "s.json:2:76: camera.screen_window must have every bound within [-1e6, 1e6], got [-1,1,-1,2000000.0]"},
+  };
+  for (const auto& [extra, message] : camera_cases) {
+    write(f, projection_scene(extra, ""));
+    EXPECT_ERROR(f, message);
+  }
+  const std::pair<std::string, std::string> film_cases[] = {
+      {"\"crop_window\": [0, 1, 0]", "s.json:3:52: film.crop_window must be [x0, x1, y0, y1], got [0,1,0]"},
+      {"\"crop_window\": [0.5, 0.2, 0, 1]", "s.json:3:52: film.crop_window must have x0 < x1, got [0.5,0.2,0,1]"},
+      {"\"crop_window\": [0, 1, 0.7, 0.7]", "s.json:3:52: film.crop_window must have y0 < y1, got [0,1,0.7,0.7]"},
+      {"\"crop_window\": [-0.1, 1, 0, 1]", "s.json:3:52: film.crop_window must lie within [0, 1] (fractions of the film, y down), got [-0.1,1,0,1]"},
+      {"\"crop_window\": [0, 1.5, 0, 1]", "s.json:3:52: film.crop_window must lie within [0, 1]"},
+      {"\"crop_window\": [0.51, 0.6, 0, 1]", "s.json:3:52: film.crop_window covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8)), got [0.51,0.6,0,1]"},
+      {"\"crop_window\": [0, 1, 0, 1e999]", "s.json:3:62: film.crop_window[3] must be a finite number, got 1e999"},
+  };
+  for (const auto& [extra, message] : film_cases) {
+    write(f, projection_scene("", extra));
+    EXPECT_ERROR(f, message);
+  }
+}

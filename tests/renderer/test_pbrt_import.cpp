@@ -4,6 +4,7 @@
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
+#include "renderer/scene/crop_window.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
 #include "tests/support/render_fixtures.h"
@@ -552,4 +553,172 @@ TEST(PbrtImport, ActiveTransformRendersTheStreakOfTheJsonMotionKeys) {
     for (int x = 0; x < 48; ++x) diff += std::abs(mean_rgb(c, x, y) - mean_rgb(e, x, y)), mean += mean_rgb(e, x, y);
   EXPECT_GT(mean, 0);
   EXPECT_LT(diff, 1e-3 * mean);
+}
+
+// --- orthographic camera, screen window, frame aspect ratio, crop window ---------------------
+
+namespace {
+
+const char* kLookAt = "LookAt 0 0 -5  0 0 0  0 1 0\n";
+
+std::string film(int w, int h, const std::string& extra = "") {
+  return "Film \"rgb\" \"integer xresolution\" " + std::to_string(w) + " \"integer yresolution\" " + std::to_string(h) +
+         (extra.empty() ? "" : " " + extra) + "\n";
+}
+
+void expect_window(const CameraDesc& c, std::array<float, 4> w, const std::string& what) {
+  ASSERT_TRUE(c.has_screen_window) << what;
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(c.screen_window[i], w[i], 1e-6f) << what << " bound " << i;
+}
+
+}  // namespace
+
+// pbrt-v4's orthographic camera: its default screen window spans [-1, 1] on the shorter side,
+// which is pdrt's ortho_height 2 on a landscape film and 2 height / width on a portrait one;
+// lensradius and focaldistance are the thin lens's.
+TEST(PbrtImport, OrthographicCameraMapsOntoPdrts) {
+  const std::string cam = std::string(kLookAt) + "Camera \"orthographic\" \"float lensradius\" 0.1 \"float focaldistance\" 4\n";
+  PbrtImport im = import(cam + film(200, 100) + "WorldBegin\nShape \"sphere\"\n");
+  const CameraDesc& c = im.scene.camera;
+  EXPECT_EQ(c.projection, CameraDesc::Projection::Orthographic);
+  EXPECT_FALSE(c.has_screen_window);
+  EXPECT_FLOAT_EQ(c.ortho_height, 2);
+  EXPECT_FLOAT_EQ(c.aperture_radius, 0.1f);
+  EXPECT_FLOAT_EQ(c.focus_distance, 4);
+  EXPECT_TRUE(c.flip_x);
+  EXPECT_TRUE(im.report.empty()) << im.report[0];
+  PbrtImport p = import(cam + film(100, 200) + "WorldBegin\nShape \"sphere\"\n");
+  EXPECT_FLOAT_EQ(p.scene.camera.ortho_height, 4);
+  // A uniformly scaled camera space scales the window: Scale 3 before LookAt makes camera
+  // units a third of a world unit.
+  PbrtImport s = import("Scale 3 3 3\n" + cam + film(200, 100) + "WorldBegin\nShape \"sphere\"\n");
+  EXPECT_NEAR(s.scene.camera.ortho_height, 2.0f / 3, 1e-6f);
+}
+
+// "screenwindow" replaces the default; "frameaspectratio" replaces the film's aspect in it. The
+// perspective camera's window is pbrt's times tan(fov / 2) (pbrt's screen space is scaled by
+// 1 / tan(fov / 2)); the orthographic camera's is pbrt's.
+TEST(PbrtImport, ScreenWindowAndFrameAspectRatioMapOntoPdrtsWindow) {
+  const float t = std::tan(15 * kPi / 180);
+  const std::string persp = std::string(kLookAt) + "Camera \"perspective\" \"float fov\" 30 ";
+  const std::string ortho = std::string(kLookAt) + "Camera \"orthographic\" ";
+  const std::string world = "WorldBegin\nShape \"sphere\"\n";
+  expect_window(import(persp + "\"float screenwindow\" [-0.5 1 -1 0.25]\n" + film(64, 64) + world).scene.camera,
+                {-0.5f * t, t, -t, 0.25f * t}, "perspective screenwindow");
+  expect_window(import(persp + "\"float frameaspectratio\" 2\n" + film(64, 64) + world).scene.camera, {-2 * t, 2 * t, -t, t},
+                "perspective frameaspectratio 2");
+  expect_window(import(persp + "\"float frameaspectratio\" 0.5\n" + film(64, 64) + world).scene.camera,
+                {-t, t, -2 * t, 2 * t}, "perspective frameaspectratio 0.5");
+  expect_window(import(ortho + "\"float screenwindow\" [0 2 -0.5 0.5]\n" + film(64, 32) + world).scene.camera,
+                {0, 2, -0.5f, 0.5f}, "orthographic screenwindow");
+  expect_window(import(ortho + "\"float frameaspectratio\" 0.25\n" + film(64, 32) + world).scene.camera,
+                {-1, 1, -4, 4}, "orthographic frameaspectratio");
+  // Without either the window stays implicit: the fov conversion (vfov) covers it.
+  EXPECT_FALSE(import(persp + "\n" + film(64, 32) + world).scene.camera.has_screen_window);
+  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [-1 1 -1]\n" + world), "s.pbrt:2:37: \"float screenwindow\" needs 4 values [x0 x1 y0 y1], got 3");
+  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [1 -1 -1 1]\n" + world), "s.pbrt:2:37: \"float screenwindow\" must have x0 < x1 and y0 < y1");
+  EXPECT_EQ(import_error(persp + "\"float frameaspectratio\" 0\n" + world), "s.pbrt:2:37: \"float frameaspectratio\" must be > 0, got 0");
+}
+
+// pbrt-v4's cropwindow (each pair sorted, clamped to [0, 1]) and pixelbounds (pixels, wins).
+TEST(PbrtImport, CropWindowAndPixelBoundsMapOntoPdrtsCropWindow) {
+  const std::string head = std::string(kCamera);
+  const std::string world = "WorldBegin\nShape \"sphere\"\n";
+  EXPECT_EQ(import(head + film(200, 100, "\"float cropwindow\" [0.9 0.2 0 0.5]") + world).scene.film.crop_window,
+            (std::array<float, 4>{0.2f, 0.9f, 0, 0.5f}));
+  EXPECT_EQ(import(head + film(200, 100, "\"float cropwindow\" [-0.5 0.5 0.25 2]") + world).scene.film.crop_window,
+            (std::array<float, 4>{0, 0.5f, 0.25f, 1}));
+  PbrtImport pb = import(head + film(200, 100, "\"integer pixelbounds\" [10 20 5 15]") + world);
+  PixelRect r = crop_pixels(pb.scene.film.crop_window, 200, 100);
+  EXPECT_EQ(r.x0, 10);
+  EXPECT_EQ(r.x1, 20);
+  EXPECT_EQ(r.y0, 5);
+  EXPECT_EQ(r.y1, 15);
+  EXPECT_EQ(import_error(head + film(200, 100, "\"float cropwindow\" [0 1 0]") + world),
+            "s.pbrt:3:64: \"float cropwindow\" needs 4 values [x0 x1 y0 y1], got 3");
+  EXPECT_EQ(import_error(head + film(200, 100, "\"float cropwindow\" [0.5 0.5 0 1]") + world),
+            "s.pbrt:3:64: \"float cropwindow\" covers no pixel of the 200x100 film");
+  EXPECT_EQ(import_error(head + film(200, 100, "\"integer pixelbounds\" [300 400 0 10]") + world),
+            "s.pbrt:3:64: \"integer pixelbounds\" covers no pixel of the 200x100 film");
+}
+
+// pbrt's camera space is left-handed: LookAt from -z towards the origin puts world +x on the
+// image's right (flip_x). With screenwindow [0 2 -0.5 0.5] the 64 x 32 film covers camera x
+// in [0, 2], so an emitter at world (1.5, 0.25) images at pixel (48, 8): right of centre and
+// in the upper half, as in pbrt.
+TEST(PbrtImport, OrthographicOffCentreWindowPutsAnOffAxisObjectOnPbrtsSide) {
+  PbrtImport im = import(std::string(kLookAt) + "Camera \"orthographic\" \"float screenwindow\" [0 2 -0.5 0.5]\n" + film(64, 32) +
+                         "Sampler \"independent\" \"integer pixelsamples\" 16\nPixelFilter \"box\"\n"
+                         "WorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+                         "Translate 1.5 0.25 0\nShape \"sphere\" \"float radius\" 0.1\nAttributeEnd\n");
+  auto p = ThinLensCamera(im.scene.camera, 64, 32).project({1.5f, 0.25f, 0});
+  EXPECT_NEAR(p[0], 48, 1e-4);
+  EXPECT_NEAR(p[1], 8, 1e-4);
+  Image img = render_quietly(im.scene).image;
+  double w = 0, sx = 0, sy = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const double v = mean_rgb(img, x, y);
+      w += v, sx += v * (x + 0.5), sy += v * (y + 0.5);
+    }
+  ASSERT_GT(w, 0);
+  EXPECT_NEAR(sx / w, 48, 0.1);  // 3.2 px radius disk; tolerance for rim sampling noise at 16 spp
+  EXPECT_NEAR(sy / w, 8, 0.1);
+}
+
+// An orthographic pbrt scene with an off-centre screen window, depth of field and a crop
+// window renders the image of the SceneDesc its JSON would give.
+TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
+  PbrtImport im = import(
+      "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
+      "Camera \"orthographic\" \"float screenwindow\" [-1.2 1.8 -1 1] \"float lensradius\" 0.05 \"float focaldistance\" 6\n"
+      "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32 \"float cropwindow\" [0.3 0.8 0.2 0.9]\n"
+      "Sampler \"independent\" \"integer pixelsamples\" 8\n"
+      "Integrator \"path\" \"integer maxdepth\" 4\n"
+      "PixelFilter \"box\"\n"
+      "WorldBegin\n"
+      "AttributeBegin\n"
+      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
+      "AttributeEnd\n"
+      "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+      "Translate 0.4 0.5 0\n"
+      "Shape \"sphere\" \"float radius\" 0.5\n");
+  SceneDesc j = base_scene(48, 32, 8);
+  j.camera.projection = CameraDesc::Projection::Orthographic;
+  j.camera.has_screen_window = true;
+  j.camera.screen_window = {-1.2f, 1.8f, -1, 1};
+  j.camera.aperture_radius = 0.05f, j.camera.focus_distance = 6;
+  j.camera.position = {0, 1, -6};
+  j.camera.look_at = {0, 0.5, 0};
+  j.camera.flip_x = true;
+  j.film.crop_window = {0.3f, 0.8f, 0.2f, 0.9f};
+  j.sampler.type = "random";
+  j.sampler.seed = 0;
+  j.integrator.max_depth = 4;
+  ShapeDesc lq;
+  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
+  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
+  lq.material = add_material(j, emitter(4));
+  j.shapes.push_back(lq);
+  Material red = diffuse(0);
+  red.albedo = {0.6f, 0.5f, 0.4f};
+  j.shapes.push_back(sphere({0.4f, 0.5f, 0}, 0.5f, add_material(j, red)));
+
+  SceneDesc& p = im.scene;
+  j.camera.up = p.camera.up;  // orthogonalised to the view by the importer (see above)
+  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
+  Image a = render_quietly(p).image, b = render_quietly(j).image;
+  ASSERT_EQ(a.width, 24);  // ceil(48 0.3) = 15 .. ceil(48 0.8) = 39
+  ASSERT_EQ(a.height, 22);  // ceil(32 0.2) = 7 .. ceil(32 0.9) = 29
+  ASSERT_EQ(b.width, a.width);
+  ASSERT_EQ(b.height, a.height);
+  double worst = 0, sum = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
+      sum += mean_rgb(b, x, y);
+    }
+  EXPECT_GT(sum, 0);
+  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (a.width * a.height)));
 }

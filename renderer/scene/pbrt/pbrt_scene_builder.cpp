@@ -472,6 +472,10 @@ class Builder {
     const PbrtParams& ps = d.params;
     if (d.strings[0] == "orthographic") {
       c.projection = CameraDesc::Projection::Orthographic;
+      if (ps.get_float("lensradius", 0) > 0)
+        note(ps.find("lensradius")->at, "orthographic depth of field moves each ray's own origin by the lens offset "
+                                        "(pbrt-v4 starts every ray at the lens offset from the camera's centre, "
+                                        "mmp/pbrt-v3#315): out-of-focus blur differs");
     } else if (d.strings[0] != "perspective") {
       note(d.at, "Camera \"" + d.strings[0] + "\" is not supported (a perspective camera is used)");
       for (const PbrtParam& p : ps.list) p.used = true;
@@ -558,12 +562,23 @@ class Builder {
       }
   }
 
-  // pbrt-v4 FilmBaseParameters: "cropwindow" [x0 x1 y0 y1] (each pair sorted, clamped to
-  // [0, 1]) or "pixelbounds" [x0 x1 y0 y1] in pixels (clamped to the film; wins over both).
+  // pbrt-v4 FilmBaseParameters: "pixelbounds" [x0 x1 y0 y1] in pixels (each pair sorted,
+  // clamped to the film) or "cropwindow" [x0 x1 y0 y1] (each pair sorted, clamped to [0, 1];
+  // wins when both are given).
   void crop(const PbrtParams& ps) {
     FilmDesc& f = out_.scene.film;
     const PbrtParam* cw = ps.find("cropwindow");
     const PbrtParam* pb = ps.find("pixelbounds");
+    if (pb) {
+      std::vector<int64_t> b = ps.ints("pixelbounds");
+      pb->used = true;
+      if (b.size() != 4) fail(pb->at, "\"integer pixelbounds\" needs 4 values [x0 x1 y0 y1], got " + std::to_string(b.size()));
+      if (cw) note(pb->at, "both \"cropwindow\" and \"pixelbounds\" (the crop window used, as pbrt-v4)");
+      auto clamp = [](int64_t v, int hi) { return int(std::clamp<int64_t>(v, 0, hi)); };
+      f.crop_window = crop_window_for_pixels(clamp(std::min(b[0], b[1]), f.width), clamp(std::max(b[0], b[1]), f.width),
+                                             clamp(std::min(b[2], b[3]), f.height), clamp(std::max(b[2], b[3]), f.height),
+                                             f.width, f.height);
+    }
     if (cw) {
       std::vector<double> c = ps.floats("cropwindow");
       cw->used = true;
@@ -574,17 +589,8 @@ class Builder {
       f.crop_window = {unit(std::min(c[0], c[1])), unit(std::max(c[0], c[1])), unit(std::min(c[2], c[3])),
                        unit(std::max(c[2], c[3]))};
     }
-    if (pb) {
-      std::vector<int64_t> b = ps.ints("pixelbounds");
-      pb->used = true;
-      if (b.size() != 4) fail(pb->at, "\"integer pixelbounds\" needs 4 values [x0 x1 y0 y1], got " + std::to_string(b.size()));
-      if (cw) note(pb->at, "both \"cropwindow\" and \"pixelbounds\" (pixelbounds used, as pbrt-v4)");
-      auto clamp = [](int64_t v, int hi) { return int(std::clamp<int64_t>(v, 0, hi)); };
-      f.crop_window = crop_window_for_pixels(clamp(b[0], f.width), clamp(b[1], f.width), clamp(b[2], f.height),
-                                             clamp(b[3], f.height), f.width, f.height);
-    }
     if (crop_pixels(f.crop_window, f.width, f.height).empty())
-      fail((pb ? pb : cw)->at, std::string(pb ? "\"integer pixelbounds\"" : "\"float cropwindow\"") + " covers no pixel of the " +
+      fail((cw ? cw : pb)->at, std::string(cw ? "\"float cropwindow\"" : "\"integer pixelbounds\"") + " covers no pixel of the " +
                                    std::to_string(f.width) + "x" + std::to_string(f.height) + " film");
   }
 

@@ -9,6 +9,7 @@
 #include "sampling/core/errors.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
+#include "renderer/scene/crop_window.h"
 #include "renderer/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -193,6 +194,10 @@ void add_render_command(CLI::App& app) {
       j["seed"] = scene.sampler.seed;
       j["width"] = scene.film.width;
       j["height"] = scene.film.height;
+      if (scene.film.crop_window != std::array<float, 4>{0, 1, 0, 1}) {  // the image is the crop's size
+        const PixelRect c = crop_pixels(scene.film.crop_window, scene.film.width, scene.film.height);
+        j["crop_pixels"] = {c.x0, c.x1, c.y0, c.y1};
+      }
       j["spp"] = scene.sampler.spp;
       j["reconstruction"] = reconstruction_name(scene.film.filter.reconstruction);
       j["seconds"] = r.stats.seconds;

@@ -12,6 +12,7 @@
 #include "sampling/analysis/stream_analysis.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
+#include "renderer/scene/crop_window.h"
 #include "sampling/samplers/sampler.h"
 
 #include <nlohmann/json.hpp>
@@ -176,7 +177,10 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     if (ec) throw InputError((o.out / sub).string() + ": cannot create directory (" + ec.message() + ")");
   }
   check_writable(o.out / "results.json");
-  const int W = base.film.width, H = base.film.height;
+  // Every image is the crop window's (the whole film without one).
+  const PixelRect crop = crop_pixels(base.film.crop_window, base.film.width, base.film.height);
+  if (crop.empty()) throw InputError(base.film.size_where + ": film.crop_window covers no pixel of the film");
+  const int W = crop.width(), H = crop.height();
   auto say = [&](const std::string& s) {
     if (!o.quiet) std::fprintf(stderr, "pdrt compare: %s\n", s.c_str());
   };
@@ -194,6 +198,9 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                          rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
                          std::to_string(rs.sampler.seed) + "|" + reconstruction_name(rs.film.filter.reconstruction) + "|" +
                          PDRT_VERSION + "|samplers-v4|halves";  // bump when sampler output changes
+  if (W != base.film.width || H != base.film.height)
+    key_text += "|crop " + std::to_string(crop.x0) + "," + std::to_string(crop.y0) + " of " + std::to_string(base.film.width) +
+                "x" + std::to_string(base.film.height);
   char key[32];
   std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
   const fs::path cache_root = o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir;

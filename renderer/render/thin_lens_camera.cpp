@@ -66,11 +66,12 @@ std::array<float, 2> ThinLensCamera::aperture_point(std::array<double, 2> u, int
 }
 
 Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> lens_u, float time) const {
-  const Pose p = desc_.motion.empty() ? static_pose_ : pose_at(time);
+  Pose moving;  // a reference to the static pose otherwise: copying it costs more than the ray
+  const Pose& p = desc_.motion.empty() ? static_pose_ : (moving = pose_at(time));
   const float sx = x0_ + film_x * sx_scale_, sy = y1_ - film_y * sy_scale_;
+  if (ortho_) return generate_parallel(p, sx, sy, lens_u, time);
   Ray ray;
   ray.time = time;
-  if (ortho_) return generate_parallel(p, sx, sy, lens_u, ray);
   Vec3 d = p.forward + p.right * sx + p.up * sy;  // direction through the pixel, forward component 1
   if (desc_.aperture_radius <= 0) {
     ray.org = p.eye;
@@ -86,8 +87,10 @@ Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> l
 
 // pbrt-v4 OrthographicCamera::GenerateRay: the pixel's point on the screen window, moved by
 // the lens offset, aimed at where the unmoved ray meets the plane of focus.
-Ray ThinLensCamera::generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, Ray ray) const {
+Ray ThinLensCamera::generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, float time) const {
   const Vec3 o = p.eye + p.right * sx + p.up * sy;
+  Ray ray;
+  ray.time = time;
   if (desc_.aperture_radius <= 0) {
     ray.org = o;
     ray.dir = p.forward;

@@ -34,7 +34,7 @@ class ThinLensCamera {
     Vec3 eye, right, up, forward;  // right-handed: forward = look direction
   };
   Pose pose_at(float time) const;
-  Ray generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, Ray ray) const;
+  Ray generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, float time) const;
 
   CameraDesc desc_;
   bool ortho_;

@@ -1,6 +1,7 @@
 // The orthographic camera (pbrt-v4 §5.2.1): parallel rays, a film of fixed world size
 // whatever the distance, and thin-lens depth of field with a circle of confusion that
 // depends only on the lens radius and the distance to the plane of focus.
+#include "renderer/render/texture_footprint.h"
 #include "renderer/render/thin_lens_camera.h"
 #include "tests/support/render_fixtures.h"
 
@@ -131,4 +132,30 @@ TEST(OrthographicCamera, PointAtFocusDistanceStaysSharp) {
     }
   EXPECT_GT(total, 0);
   EXPECT_EQ(inside, total) << "light outside the four pixels around the point";
+}
+
+// The texture footprint of the orthographic camera: neighbouring pixels' rays are parallel,
+// one pixel (ortho_height / H scene units) to the side, so on a plane facing the camera
+// du/dx = pixel / |dp/du| at any distance, and on a plane turned by 60 degrees about the
+// vertical the horizontal footprint stretches by 1 / cos 60 = 2. At 1 spp the spp scale is 1.
+TEST(OrthographicCamera, TextureFootprintIsOnePixelOfParallelRays) {
+  CameraDesc c = ortho_camera(2);  // 64 x 32: 1/16 scene unit per pixel
+  TextureFootprint fp(c, 64, 32, 1);
+  SurfaceHit h;
+  h.ng = {0, 0, 1};
+  h.dpdu = {4, 0, 0}, h.dpdv = {0, 4, 0};
+  for (float z : {-1.0f, -50.0f}) {
+    h.p = {0.3f, -0.2f, z};
+    TextureCoords tc = fp.at(h);
+    EXPECT_NEAR(tc.dudx, 1.0f / 64, 1e-6f) << z;
+    EXPECT_NEAR(tc.dvdy, 1.0f / 64, 1e-6f) << z;
+    EXPECT_NEAR(tc.dvdx, 0, 1e-7f) << z;
+  }
+  const float a = 60 * kPi / 180;
+  h.ng = {std::sin(a), 0, std::cos(a)};
+  h.dpdu = Vec3(std::cos(a), 0, -std::sin(a)) * 4.0f;
+  h.p = {0, 0, -3};
+  TextureCoords tc = fp.at(h);
+  EXPECT_NEAR(tc.dudx, 2.0f / 64, 1e-5f);
+  EXPECT_NEAR(tc.dvdy, 1.0f / 64, 1e-6f);
 }

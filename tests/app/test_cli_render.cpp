@@ -423,3 +423,34 @@ TEST(CliRender, InterruptWritesPartialImage) {
   ASSERT_TRUE(in) << "the partial image must be written";
   EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
 }
+
+// film.crop_window: the image written has the crop's size (pbrt-v4's ceil rule: 24 x 16 film,
+// [0.25, 0.75] x [0.5, 1] is pixels 6..17 x 8..15), the stats name those pixels, and
+// --width/--height apply the same window to the new size; a window the new size leaves
+// without a pixel is an input error, not a crash.
+TEST(CliRender, CropWindowWritesTheCroppedImageAndNamesItsPixels) {
+  fs::path d = scratch_dir("render_crop");
+  fs::path scene = write_scene(d, R"("width": 24, "height": 16, "crop_window": [0.25, 0.75, 0.5, 1])");
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " + (d / "stats.json").string() +
+                    " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto in = OIIO::ImageInput::open((d / "out.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 12);
+  EXPECT_EQ(in->spec().height, 8);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  EXPECT_EQ(j["crop_pixels"], nlohmann::json::array({6, 18, 8, 16}));
+  EXPECT_EQ(j["width"], 24);
+  EXPECT_DOUBLE_EQ(j["spp_mean"].get<double>(), 4);
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "small.exr").string() + " --width 48 --height 32 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  in = OIIO::ImageInput::open((d / "small.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 24);
+  EXPECT_EQ(in->spec().height, 16);
+  fs::path thin = write_scene(d, R"("width": 24, "height": 16, "crop_window": [0.25, 0.26, 0, 1])");
+  r = run_pdrt("render " + thin.string() + " -o " + (d / "thin.exr").string() + " --width 2 --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("film.crop_window covers no pixel of the 2x16 film"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "thin.exr"));
+}

@@ -1,5 +1,7 @@
 #include "renderer/scene/scene_writer.h"
 
+#include "renderer/render/image_output.h"
+
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 
@@ -277,7 +279,14 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
   }
   const EnvironmentDesc& e = s.environment;
   if (e.has_map()) {
-    lights.push_back({{"type", "environment"}, {"file", fs::absolute(e.file).string()}, {"scale", vec(e.scale)},
+    std::string file = fs::absolute(e.file).string();
+    if (e.resampled) {
+      // The image pdrt renders is not the file it came from: write it beside the scene.
+      const fs::path exr = json_file.parent_path() / (json_file.stem().string() + ".environment.exr");
+      write_linear_rgb(exr, e.width, e.height, e.rgb, {{"pdrt:source", e.file}});
+      file = exr.filename().string();
+    }
+    lights.push_back({{"type", "environment"}, {"file", file}, {"scale", vec(e.scale)},
                       {"rotation_deg", e.rotation_deg}});
   } else if (!is_black(e.radiance)) {
     lights.push_back({{"type", "environment"}, {"radiance", vec(e.radiance)}});

@@ -1,6 +1,8 @@
 // pbrt-v4 world-block directives beyond shapes and materials (issue 18): `Attribute` defaults
 // and their scoping, `loopsubdiv` refined through OpenSubdiv, and `infinite` lights with an
 // equal-area octahedral image, resampled into pdrt's environment and written out by convert.
+#include "renderer/render/embree_device.h"
+#include "renderer/render/embree_scene.h"
 #include "renderer/render/equirect.h"
 #include "renderer/render/image_output.h"
 #include "renderer/scene/pbrt/equal_area_octahedral.h"
@@ -177,4 +179,28 @@ TEST(PbrtWorldBlock, ConvertWritesTheResampledEnvironmentBesideTheScene) {
   EXPECT_FALSE(back.environment.resampled);
   EXPECT_EQ(back.environment.width, im.scene.environment.width);
   EXPECT_EQ(back.environment.rgb, im.scene.environment.rgb);  // EXR float: exact
+}
+
+TEST(PbrtWorldBlock, SphereUvFollowPbrtsPoleAndAzimuth) {
+  // pbrt-v4: u = phi / 2 pi with phi from +x toward +y, v = 1 - theta / pi with theta from +z;
+  // for a static sphere and for a moving one (its transform then lives in the instance).
+  for (const std::string motion : {"", "ActiveTransform EndTime\nTranslate 0 0 0.5\nActiveTransform All\n"}) {
+    PbrtImport im = import(kWorld + "Translate 1 2 3\n" + motion + "Shape \"sphere\" \"float radius\" 2\n");
+    EmbreeDevice dev;
+    EmbreeScene scene(im.scene, dev);
+    const Vec3 c(1, 2, 3);
+    struct Case { Vec3 dir; float u, v; };
+    const float h = std::sqrt(0.5f);
+    for (const Case& k : {Case{{1, 0, 0}, 0.0f, 0.5f}, Case{{0, 1, 0}, 0.25f, 0.5f}, Case{{-1, 0, 0}, 0.5f, 0.5f},
+                          Case{{0, -1, 0}, 0.75f, 0.5f}, Case{{h, 0, h}, 0.0f, 0.75f}, Case{{0, h, -h}, 0.25f, 0.25f}}) {
+      Ray r;
+      r.org = c + k.dir * 10, r.dir = -k.dir, r.time = 0;
+      SurfaceHit hit;
+      ASSERT_TRUE(scene.intersect(r, &hit));
+      scene.texture_coords(&hit, 0);
+      EXPECT_NEAR(hit.u, k.u, 1e-5f) << motion << k.dir.x << " " << k.dir.y << " " << k.dir.z;
+      EXPECT_NEAR(hit.v, k.v, 1e-5f) << motion << k.dir.x << " " << k.dir.y << " " << k.dir.z;
+      EXPECT_GT(dot(hit.ng, k.dir), 0.999f);  // still facing outward
+    }
+  }
 }

@@ -1089,6 +1089,13 @@ class Builder {
 PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict) {
   Builder b(strict);
   PbrtImport out = b.run(directives);
+  // pbrt's sphere has its pole on +z and its azimuth from +x toward +y; pdrt's has the pole on
+  // +y and the azimuth from +x toward +z. Swapping y and z in object space (a mirror, harmless
+  // to a sphere) gives every texel the direction pbrt gives it.
+  Affine swap_yz;
+  swap_yz.m = {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, 1, 0, 0}}};
+  for (ShapeDesc& s : out.scene.shapes)
+    if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
   // pbrt's fov spans the film's shorter side; pdrt's is vertical.
   FilmDesc& f = out.scene.film;
   const double half = std::tan(0.5 * b.fov() * kPiD / 180);

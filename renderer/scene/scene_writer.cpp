@@ -178,9 +178,23 @@ void write_obj(const MeshData& mesh, const fs::path& file) {
   });
 }
 
+// A mesh as inline JSON arrays (floats print with the shortest digits that read back exactly).
+ojson inline_mesh(const MeshData& mesh) {
+  ojson o = {{"type", "mesh"}};
+  ojson v = ojson::array(), n = ojson::array(), t = ojson::array();
+  for (const Vec3& p : mesh.positions) v.push_back(vec(p));
+  for (const Vec3& p : mesh.normals) n.push_back(vec(p));
+  for (const auto& uv : mesh.uvs) t.push_back(ojson::array({uv[0], uv[1]}));
+  o["vertices"] = v;
+  if (!mesh.normals.empty()) o["normals"] = n;
+  if (!mesh.uvs.empty()) o["uvs"] = t;
+  o["indices"] = mesh.indices;
+  return o;
+}
+
 }  // namespace
 
-void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
+void write_scene_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options) {
   ojson j;
   const CameraDesc& c = s.camera;
   ojson cam = {{"position", vec(c.position)}, {"look_at", vec(c.look_at)}, {"up", vec(c.up)},
@@ -241,6 +255,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
     ojson o;
     if (sh.kind == ShapeDesc::Kind::Sphere) {
       o = {{"type", "sphere"}, {"center", vec(sh.center)}, {"radius", sh.radius}};
+    } else if (options.inline_meshes) {
+      o = inline_mesh(sh.mesh);
     } else {
       if (!made_dir) {
         std::error_code ec;

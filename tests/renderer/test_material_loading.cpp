@@ -125,7 +125,7 @@ TEST_F(MaterialLoading, MixOfAnEmitterIsRefused) {
   EXPECT_ERROR(scene(R"(  "materials": {
     "m": {"type": "mix", "materials": ["d", "lamp"]},
     "d": {"type": "diffuse"},
-    "lamp": {"type": "emitter", "radiance": 4}
+    "lamp": {"type": "emitter", "radiance": [4, 4, 4]}
   }
 })"), "s.json:5:45: materials.m.materials[1] names the emitter \"lamp\": a mix's materials must not emit");
 }

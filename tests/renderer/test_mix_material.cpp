@@ -114,11 +114,17 @@ TEST(MixMaterial, SamplingRoutineFitsTheMixturePdfWithAGlossyComponent) {
     const float t = theta * kPi / 180;
     const Vec3 wo(std::sin(t), 0, std::cos(t));
     MixedSampling mix(diffuse(0.5f), glossy(0.3f), 0.4f);
-    FitResult r = chi_square_fit(mix, wo, 41, 400000);
+    const int64_t n = 400000;
+    FitResult r = chi_square_fit(mix, wo, 41, n);
     std::printf("mix sampling theta %.0f: chi2 %.1f dof %.0f p %.3f\n", theta, r.statistic, r.dof, r.p);
-    EXPECT_GT(r.p, 1e-3) << "theta " << theta;
-    EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
+    EXPECT_GT(r.p, 0.005) << "theta " << theta;  // 0.01 over the two angles (Sidak)
     EXPECT_EQ(r.zero_pdf_samples, 0);
+    EXPECT_EQ(r.pdf_mismatches, 0);
+    // The mixture pdf integrates to the probability that a sample succeeds (GGX loses the
+    // directions below the horizon): 4 binomial sigma plus the quadrature's 1e-4.
+    const double s = r.success_fraction;
+    EXPECT_LT(s, 1.0);
+    EXPECT_NEAR(r.pdf_integral, s, 4.0 * std::sqrt(s * (1 - s) / double(n)) + 1e-4);
   }
 }
 

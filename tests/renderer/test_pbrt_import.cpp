@@ -624,7 +624,7 @@ TEST(PbrtImport, RoughnessAndReflectanceTexturesBindThroughTheRemap) {
   EXPECT_EQ(mean.tex2.value.x, 0.25f);
   EXPECT_EQ(mean.amount.value.x, 0.5f);
   ASSERT_EQ(im.report.size(), 1u);
-  EXPECT_NE(im.report[0].find("s.pbrt:11:1: anisotropic roughness"), std::string::npos) << im.report[0];
+  EXPECT_NE(im.report[0].find("s.pbrt:10:1: anisotropic roughness"), std::string::npos) << im.report[0];
 }
 
 TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {

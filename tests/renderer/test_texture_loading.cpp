@@ -309,8 +309,8 @@ TEST_F(TextureLoading, TextureGraphsTooCostlyToEvaluateAreRefused) {
   for (int k = 1; k <= 11; ++k)
     t += ",\n    \"l" + std::to_string(k) + "\": {\"type\": \"mix\", \"tex1\": \"l" + std::to_string(k - 1) + "\", \"tex2\": \"l" +
          std::to_string(k - 1) + "\"}";
-  // l11 is on line 4 + 11 = 15, its object at column 12.
-  EXPECT_ERROR(scene(t + "\n  }\n}\n"), "s.json:15:12: textures.l11 evaluates 2047 scale/mix/invert/power nodes per lookup (at most 1024)");
+  // l0 is on line 5, so l11 on line 16, its object at column 12.
+  EXPECT_ERROR(scene(t + "\n  }\n}\n"), "s.json:16:12: textures.l11 evaluates 2047 scale/mix/invert/power nodes per lookup (at most 1024)");
   std::string ok = "  \"textures\": {\n    \"l0\": {\"type\": \"constant\", \"value\": 0.5}";
   for (int k = 1; k <= 10; ++k)
     ok += ",\n    \"l" + std::to_string(k) + "\": {\"type\": \"mix\", \"tex1\": \"l" + std::to_string(k - 1) + "\", \"tex2\": \"l" +

@@ -357,6 +357,7 @@ void SceneParser::textures(const JsonNode& n) {
   // No cycles (a checkerboard of itself would recurse forever while rendering). Iterative
   // depth-first search: a chain of many textures must not overflow the stack here either.
   std::vector<int> state(scene_.textures.size(), 0);  // 0 new, 1 on the path, 2 done
+  std::vector<int> order;                              // finished: every input before its users
   for (size_t root = 0; root < state.size(); ++root) {
     if (state[root]) continue;
     std::vector<std::pair<int, size_t>> stack{{int(root), 0}};  // (texture, next edge)
@@ -366,6 +367,7 @@ void SceneParser::textures(const JsonNode& n) {
       const auto& refs = texture_refs_[size_t(t)];
       if (e == refs.size()) {
         state[size_t(t)] = 2;
+        order.push_back(t);
         stack.pop_back();
         continue;
       }
@@ -378,24 +380,8 @@ void SceneParser::textures(const JsonNode& n) {
       if (state[size_t(to)] == 0) state[size_t(to)] = 1, stack.push_back({to, 0});
     }
   }
-  // Bounded work per lookup (kMaxTextureEvaluation): inputs before users, in the order the
-  // search above finished them.
-  std::vector<int> order;
-  std::vector<char> done(scene_.textures.size(), 0);
-  for (size_t root = 0; root < done.size(); ++root) {
-    std::vector<std::pair<int, size_t>> stack{{int(root), 0}};
-    while (!stack.empty()) {
-      auto& [t, e] = stack.back();
-      const auto& refs = texture_refs_[size_t(t)];
-      if (done[size_t(t)] || e == refs.size()) {
-        if (!done[size_t(t)]) done[size_t(t)] = 1, order.push_back(t);
-        stack.pop_back();
-        continue;
-      }
-      const int to = refs[e++].first;
-      if (!done[size_t(to)]) stack.push_back({to, 0});
-    }
-  }
+  // Bounded work per lookup (kMaxTextureEvaluation), computed inputs first: in the order the
+  // search above finished the textures.
   const std::vector<long long> cost = texture_evaluation_cost(scene_.textures, order);
   for (size_t i = 0; i < cost.size(); ++i)
     if (cost[i] > kMaxTextureEvaluation)

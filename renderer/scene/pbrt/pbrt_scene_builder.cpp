@@ -167,37 +167,44 @@ class Builder {
   // mean of uroughness and vroughness, when they differ): the filtered pbrt value is remapped
   // per hit, exactly as pbrt-v4 remaps its evaluated roughness texture.
   float roughness(const PbrtDirective& d, const PbrtParams& ps, Material& m) {
-    auto one = [&](const char* n) -> std::optional<TextureInput> {
-      const PbrtParam* p = ps.find(n);
-      if (!p) return std::nullopt;
-      TextureInput in;
-      if (pbrt_canonical_type(p->type) == "texture") {
-        p->used = true;
-        if (auto t = texture_ref(*p, "float")) in.texture = *t;  // else reported, 0 used
+    struct Rough {
+      double value = 0;
+      int texture = -1;
+      TextureInput input() const {
+        TextureInput in;
+        in.value = Vec3(float(value)), in.texture = texture;
         return in;
       }
-      double v = *ps.find_float(n);
-      if (!(v >= 0) || !std::isfinite(v)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(v));
-      in.value = Vec3(float(v));
-      return in;
     };
-    std::optional<TextureInput> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
-    const TextureInput zero;
-    const TextureInput ru = u ? *u : r.value_or(zero), rv = v ? *v : r.value_or(zero);
+    auto one = [&](const char* n) -> std::optional<Rough> {
+      const PbrtParam* p = ps.find(n);
+      if (!p) return std::nullopt;
+      Rough r;
+      if (pbrt_canonical_type(p->type) == "texture") {
+        p->used = true;
+        if (auto t = texture_ref(*p, "float")) r.texture = *t;  // else reported, 0 used
+        return r;
+      }
+      r.value = *ps.find_float(n);
+      if (!(r.value >= 0) || !std::isfinite(r.value)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(r.value));
+      return r;
+    };
+    std::optional<Rough> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
+    const Rough ru = u ? *u : r.value_or(Rough{}), rv = v ? *v : r.value_or(Rough{});
     const bool remap = ps.get_bool("remaproughness", true);
     if (ru.texture < 0 && rv.texture < 0) {
-      if (ru.value.x != rv.value.x)
-        note(d.at, "anisotropic roughness (" + fmt(ru.value.x) + ", " + fmt(rv.value.x) + ") is not supported (their mean used)");
-      double rough = 0.5 * (double(ru.value.x) + rv.value.x);
+      if (ru.value != rv.value)
+        note(d.at, "anisotropic roughness (" + fmt(ru.value) + ", " + fmt(rv.value) + ") is not supported (their mean used)");
+      double rough = 0.5 * (ru.value + rv.value);
       double alpha = remap ? std::sqrt(rough) : rough;
       return float(std::min(1.0, std::sqrt(alpha)));
     }
-    TextureInput mean = ru;
-    if (ru.texture != rv.texture || (ru.texture < 0 && ru.value.x != rv.value.x)) {
+    TextureInput mean = ru.input();
+    if (ru.texture != rv.texture || (ru.texture < 0 && ru.value != rv.value)) {
       note(d.at, "anisotropic roughness (uroughness and vroughness differ) is not supported (their mean used)");
       TextureDesc t;
       t.kind = TextureDesc::Kind::Mix;
-      t.tex1 = ru, t.tex2 = rv, t.amount.value = Vec3(0.5f);
+      t.tex1 = ru.input(), t.tex2 = rv.input(), t.amount.value = Vec3(0.5f);
       mean.texture = add_texture(std::move(t), "mean roughness of " + m.name, d.at);
     }
     TextureDesc t;

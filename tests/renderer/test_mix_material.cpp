@@ -1,6 +1,6 @@
 // The mix material (renderer/render/mix_material.h, pbrt-v4's MixMaterial): the hashed choice
 // has the blended expectation (eval of two diffuse albedos, nested mixes, a rendered furnace,
-// a textured amount), its sampling routine fits the mixture pdf (chi-square, with a glossy
+// a textured amount, a textured component), its sampling routine fits the mixture pdf (chi-square, with a glossy
 // component), amount 0 and 1 render exactly the components' images, and delta and
 // dielectric components keep a furnace white.
 #include "renderer/render/bsdf.h"
@@ -155,6 +155,25 @@ TEST(MixMaterial, TexturedAmountRendersLikeTheNumber) {
   Material m = mix_of(0, b, 0.9f);  // the texture overrides this
   m.textures.push_back({MaterialParam::Amount, 0});
   s.shapes[0].material = add_material(s, m);
+  Image im = render_quietly(s).image;
+  double sum = 0;
+  int n = 0;
+  for (auto [x, y] : pixels_inside_silhouette(s, centre, 0.8)) sum += mean_rgb(im, x, y), ++n;
+  EXPECT_NEAR(sum / n, 0.38, 0.005);
+}
+
+// A component with a texture: evaluated at the hit after the choice (albedo 0.9 in the
+// material, 0.2 from its constant texture), so the furnace again shows 0.38.
+TEST(MixMaterial, TexturedComponentShadesWithItsTexture) {
+  const Vec3 centre(0, 0, 0);
+  SceneDesc s = furnace_sphere(32, 32, 32, centre, diffuse(0.9f));
+  TextureDesc t;
+  t.kind = TextureDesc::Kind::Constant;
+  t.value = Vec3(0.2f);
+  s.textures.push_back(t);
+  s.materials[0].textures.push_back({MaterialParam::Albedo, 0});
+  const int b = add_material(s, diffuse(0.8f));
+  s.shapes[0].material = add_material(s, mix_of(0, b, 0.3f));
   Image im = render_quietly(s).image;
   double sum = 0;
   int n = 0;

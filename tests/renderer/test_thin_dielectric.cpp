@@ -127,5 +127,22 @@ TEST(ThinDielectric, RenderedWhiteFurnaceShowsTheEnvironment) {
   EXPECT_LT(worst, 1e-3);
 }
 
+// An open sheet in front of an emitter, seen head-on in the dark: a pixel shows T'(0) of the
+// emitter's radiance (reflection leaves toward the black sky). Each sample is 0 or L, so the
+// mean over 256 pixels x 64 samples has a binomial sigma of 0.0016 L.
+TEST(ThinDielectric, SheetInFrontOfAnEmitterTransmitsTheClosedForm) {
+  SceneDesc s = base_scene(16, 16, 64);
+  s.camera.position = {0, 0, 5}, s.camera.look_at = {0, 0, 0}, s.camera.vfov_deg = 5;
+  s.shapes.push_back(quad({-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, add_material(s, thin(1.5f))));
+  s.shapes.push_back(quad({-3, -3, -1}, {6, 0, 0}, {0, 6, 0}, add_material(s, emitter(2))));
+  Image im = render_quietly(s).image;
+  double sum = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) sum += mean_rgb(im, x, y);
+  const double mean = sum / 256, expected = 2 * (1 - 0.08 / 1.04);  // rays within 2.5 degrees of normal
+  std::printf("thin sheet: %.4f, 2 T' = %.4f\n", mean, expected);
+  EXPECT_NEAR(mean, expected, 2 * 4 * 0.0016);  // 4 sigma
+}
+
 }  // namespace
 }  // namespace pdrt

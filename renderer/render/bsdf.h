@@ -57,12 +57,14 @@ class Bsdf {
   // False when no direction is produced (below the horizon, wo grazing, non-scattering).
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
 
-  bool is_delta() const;  // every lobe is a delta (mirror, conductor or dielectric with roughness 0)
+  bool is_delta() const;  // every lobe is a delta (mirror, conductor or dielectric with roughness 0, thin dielectric)
   bool scatters() const;  // false for emitters
   Vec3 albedo() const;    // for the albedo AOV
 
  private:
-  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric, Coated, ThinDielectric };
+  enum class Kind {
+    Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric, Coated, ThinDielectric
+  };
 
   Vec3 fresnel_ggx(float cos_i) const;  // Schlick with F0 = albedo, or the exact conductor Fresnel
   Vec3 eval_ggx(const Vec3& wo, const Vec3& wi) const;

@@ -1,7 +1,7 @@
 #pragma once
-// The mix material (docs/scene-format.md, "mix"): pbrt-v4's MixMaterial (pbrt-v4 src/pbrt/materials.h,
-// MixMaterial::ChooseMaterial). At each shading point it *is* one of its two
-// materials: the second with probability `amount`, chosen by a hash of the hit point, the
+// The mix material (docs/scene-format.md, "mix"): pbrt-v4's MixMaterial (pbrt-v4
+// src/pbrt/materials.h, MixMaterial::ChooseMaterial). At each shading point it *is* one of its
+// two materials: the second with probability `amount`, chosen by a hash of the hit point, the
 // outgoing direction and the nesting level (not the mix's index, so that renumbering the
 // materials, as pdrt convert does, keeps the image), not by a sampler dimension: the choice
 // is replayable and uses no sample the component's BSDF would otherwise get.

@@ -1,8 +1,8 @@
 // The mix material (renderer/render/mix_material.h, pbrt-v4's MixMaterial): the hashed choice
 // has the blended expectation (eval of two diffuse albedos, nested mixes, a rendered furnace,
-// a textured amount, a textured component), its sampling routine fits the mixture pdf (chi-square, with a glossy
-// component), amount 0 and 1 render exactly the components' images, and delta and
-// dielectric components keep a furnace white.
+// a textured amount, a textured component), its sampling routine fits the mixture pdf
+// (chi-square, with a glossy component), amount 0 and 1 render exactly the components'
+// images, and delta and dielectric components keep a furnace white.
 #include "renderer/render/bsdf.h"
 #include "renderer/render/mix_material.h"
 #include "sampling/core/rng.h"

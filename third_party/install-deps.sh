@@ -9,6 +9,8 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libtinyobjloader-dev
   libassimp-dev
+  libosd-dev
+  openmpi-bin libopenmpi-dev
   libtbb-dev
   libfftw3-dev
   nlohmann-json3-dev

@@ -1,5 +1,7 @@
 #include "renderer/scene/scene_writer.h"
 
+#include "renderer/render/image_output.h"
+
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 
@@ -129,6 +131,13 @@ ojson material(const Material& m) {
     case MaterialType::Emitter:
       j = {{"type", "emitter"}, {"radiance", vec(m.radiance)}, {"two_sided", m.two_sided}};
       break;
+    case MaterialType::ThinDielectric:
+      j = {{"type", "thin_dielectric"}, {"albedo", vec(unit(m.albedo))}, {"ior", m.ior}};
+      break;
+    case MaterialType::Mix:
+      j = {{"type", "mix"}, {"materials", ojson::array({numbered('m', size_t(m.mix[0])), numbered('m', size_t(m.mix[1]))})},
+           {"amount", std::clamp(m.amount, 0.0f, 1.0f)}};
+      break;
   }
   for (const TextureBinding& b : m.textures) {
     switch (b.param) {
@@ -138,6 +147,11 @@ ojson material(const Material& m) {
       case MaterialParam::Radiance:
         j["radiance"] = texture_name(b.texture);
         j["scale"] = vec(m.radiance);
+        break;
+      case MaterialParam::Amount: j["amount"] = texture_name(b.texture); break;
+      case MaterialParam::Reflectance:
+        j.erase("eta"), j.erase("k");  // the loader takes reflectance instead of them
+        j["reflectance"] = texture_name(b.texture);
         break;
     }
   }
@@ -176,9 +190,23 @@ void write_obj(const MeshData& mesh, const fs::path& file) {
   });
 }
 
+// A mesh as inline JSON arrays (floats print with the shortest digits that read back exactly).
+ojson inline_mesh(const MeshData& mesh) {
+  ojson o = {{"type", "mesh"}};
+  ojson v = ojson::array(), n = ojson::array(), t = ojson::array();
+  for (const Vec3& p : mesh.positions) v.push_back(vec(p));
+  for (const Vec3& p : mesh.normals) n.push_back(vec(p));
+  for (const auto& uv : mesh.uvs) t.push_back(ojson::array({uv[0], uv[1]}));
+  o["vertices"] = v;
+  if (!mesh.normals.empty()) o["normals"] = n;
+  if (!mesh.uvs.empty()) o["uvs"] = t;
+  o["indices"] = mesh.indices;
+  return o;
+}
+
 }  // namespace
 
-void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
+void write_scene_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options) {
   ojson j;
   const CameraDesc& c = s.camera;
   ojson cam = {{"position", vec(c.position)}, {"look_at", vec(c.look_at)}, {"up", vec(c.up)},
@@ -222,10 +250,19 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
       } else if (t.kind == TextureDesc::Kind::Checkerboard) {
         o = {{"type", "checkerboard"}, {"scale", ojson::array({t.scale_u, t.scale_v})},
              {"color0", texture_input(t.color0)}, {"color1", texture_input(t.color1)}};
-      } else {
+      } else if (t.kind == TextureDesc::Kind::Image) {
         o = {{"type", "image"}, {"file", fs::absolute(t.file).string()}, {"filter", filter_name(t.filter)},
              {"wrap", wrap_name(t.wrap)}, {"encoding", encoding_name(t.encoding)},
              {"scale", ojson::array({t.scale_u, t.scale_v})}};
+      } else if (t.kind == TextureDesc::Kind::Scale) {
+        o = {{"type", "scale"}, {"tex", texture_input(t.tex)}, {"scale", texture_input(t.scale)}};
+      } else if (t.kind == TextureDesc::Kind::Mix) {
+        o = {{"type", "mix"}, {"tex1", texture_input(t.tex1)}, {"tex2", texture_input(t.tex2)}};
+        o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture)) : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
+      } else if (t.kind == TextureDesc::Kind::Invert) {
+        o = {{"type", "invert"}, {"tex", texture_input(t.tex)}};
+      } else {
+        o = {{"type", "power"}, {"tex", texture_input(t.tex)}, {"exponent", t.exponent}};
       }
       tx[texture_name(int(i))] = o;
     }
@@ -243,6 +280,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
     ojson o;
     if (sh.kind == ShapeDesc::Kind::Sphere) {
       o = {{"type", "sphere"}, {"center", vec(sh.center)}, {"radius", sh.radius}};
+    } else if (options.inline_meshes) {
+      o = inline_mesh(sh.mesh);
     } else {
       if (!made_dir) {
         std::error_code ec;
@@ -281,7 +320,14 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
   }
   const EnvironmentDesc& e = s.environment;
   if (e.has_map()) {
-    lights.push_back({{"type", "environment"}, {"file", fs::absolute(e.file).string()}, {"scale", vec(e.scale)},
+    std::string file = fs::absolute(e.file).string();
+    if (e.resampled) {
+      // The image pdrt renders is not the file it came from: write it beside the scene.
+      const fs::path exr = json_file.parent_path() / (json_file.stem().string() + ".environment.exr");
+      write_linear_rgb(exr, e.width, e.height, e.rgb, {{"pdrt:source", e.file}});
+      file = exr.filename().string();
+    }
+    lights.push_back({{"type", "environment"}, {"file", file}, {"scale", vec(e.scale)},
                       {"rotation_deg", e.rotation_deg}});
   } else if (!is_black(e.radiance)) {
     lights.push_back({{"type", "environment"}, {"radiance", vec(e.radiance)}});

@@ -1,5 +1,8 @@
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
 
+#include "renderer/scene/environment_image.h"
+#include "renderer/scene/pbrt/equal_area_octahedral.h"
+#include "renderer/scene/pbrt/loop_subdivision.h"
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "renderer/scene/pbrt/ply_mesh.h"
@@ -35,7 +38,19 @@ struct Attributes {
   int material = -1;  // index into the scene's materials; -1 = pbrt's default (diffuse 0.5)
   bool interface = false;  // the current material is "interface": shapes bound no surface
   std::optional<AreaLight> area;
+  // Attribute "shape" | "light" | "material" | "texture": parameters every later directive of
+  // that kind takes unless it sets them itself (pbrt-v4 file format, "Attributes").
+  std::map<std::string, std::vector<PbrtParam>> defaults;
 };
+
+// The Attribute target a directive reads its defaults from ("" = none).
+std::string attribute_target(const std::string& directive) {
+  if (directive == "Shape") return "shape";
+  if (directive == "LightSource" || directive == "AreaLightSource") return "light";
+  if (directive == "Material" || directive == "MakeNamedMaterial") return "material";
+  if (directive == "Texture") return "texture";
+  return "";
+}
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -49,9 +64,19 @@ class Builder {
 
   PbrtImport run(const std::vector<PbrtDirective>& ds) {
     for (const PbrtDirective& d : ds) {
-      directive(d);
-      for (const PbrtParam* p : d.params.unused())
-        note(p->at, "\"" + p->type + " " + p->name + "\" is not used by pdrt (ignored)");
+      auto defaults = cur_.defaults.find(attribute_target(d.name));
+      if (defaults == cur_.defaults.end()) {
+        directive(d);
+        report_unused(d.params.list);
+        continue;
+      }
+      PbrtDirective with = d;
+      for (const PbrtParam& p : defaults->second)
+        if (!d.params.has(p.name)) with.params.list.push_back(p);
+      directive(with);
+      // An attribute one directive does not read may be meant for another: only the
+      // directive's own parameters are reported unused.
+      report_unused({with.params.list.begin(), with.params.list.begin() + long(d.params.list.size())});
     }
     if (!camera_seen_) {
       // pbrt-v4's default camera: perspective, fov 90, at the origin looking down +z.
@@ -62,13 +87,18 @@ class Builder {
       camera(d, TransformPair{}, true);
     }
     if (!attr_stack_.empty()) note(attr_stack_.back().first, "AttributeBegin is never closed (ignored)");
-    if (out_.scene.shapes.empty() && out_.scene.delta_lights.empty() && is_black(out_.scene.environment.radiance))
+    if (out_.scene.shapes.empty() && out_.scene.delta_lights.empty() && is_black(out_.scene.environment.radiance) &&
+        !out_.scene.environment.has_map())
       throw InputError((last_ ? last_->str() : std::string("<pbrt>")) + ": the scene has no shapes and no lights");
     return std::move(out_);
   }
 
  private:
   // ---- reporting
+  void report_unused(const std::vector<PbrtParam>& params) {
+    for (const PbrtParam& p : params)
+      if (!p.used) note(p.at, "\"" + p.type + " " + p.name + "\" is not used by pdrt (ignored)");
+  }
   void note(const PbrtLocation& at, const std::string& what) {
     std::string line = at.str() + ": " + what;
     if (strict_) throw InputError(line + " [--strict]");
@@ -127,6 +157,8 @@ class Builder {
     }
     if (type == "spectrum") {
       if (!p->strings.empty()) {
+        if (emission)
+          if (std::optional<Vec3> c = named_illuminant_rgb(p->strings[0])) return *c;
         note(p->at, "named spectrum \"" + p->strings[0] + "\" for \"" + name + "\" is not supported (default used)");
         return fallback;
       }
@@ -163,27 +195,71 @@ class Builder {
   }
 
   // pbrt-v4 roughness (alpha when remaproughness is false, else alpha = sqrt(roughness)) as
-  // pdrt's perceptual roughness (alpha = roughness^2).
-  float roughness(const PbrtDirective& d, const PbrtParams& ps) {
-    auto one = [&](const char* n) -> std::optional<double> {
+  // pdrt's perceptual roughness (alpha = roughness^2): roughness^(1/4) under remapping, else
+  // roughness^(1/2). A texture is bound through a power texture of that exponent (after the
+  // mean of uroughness and vroughness, when they differ): the filtered pbrt value is remapped
+  // per hit, exactly as pbrt-v4 remaps its evaluated roughness texture.
+  float roughness(const PbrtDirective& d, const PbrtParams& ps, Material& m) {
+    struct Rough {
+      double value = 0;
+      int texture = -1;
+      TextureInput input() const {
+        TextureInput in;
+        in.value = Vec3(float(value)), in.texture = texture;
+        return in;
+      }
+    };
+    auto one = [&](const char* n) -> std::optional<Rough> {
       const PbrtParam* p = ps.find(n);
       if (!p) return std::nullopt;
+      Rough r;
       if (pbrt_canonical_type(p->type) == "texture") {
         p->used = true;
-        note(p->at, std::string("texture roughness \"") + n + "\" is not supported yet (0 used)");
-        return 0.0;
+        if (auto t = texture_ref(*p, "float")) r.texture = *t;  // else reported, 0 used
+        return r;
       }
-      double v = *ps.find_float(n);
-      if (!(v >= 0) || !std::isfinite(v)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(v));
-      return v;
+      r.value = *ps.find_float(n);
+      if (!(r.value >= 0) || !std::isfinite(r.value)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(r.value));
+      return r;
     };
-    std::optional<double> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
-    double ru = u ? *u : r.value_or(0), rv = v ? *v : r.value_or(0);
-    if (ru != rv) note(d.at, "anisotropic roughness (" + fmt(ru) + ", " + fmt(rv) + ") is not supported (their mean used)");
-    double rough = 0.5 * (ru + rv);
-    bool remap = ps.get_bool("remaproughness", true);
-    double alpha = remap ? std::sqrt(rough) : rough;
-    return float(std::min(1.0, std::sqrt(alpha)));
+    std::optional<Rough> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
+    const Rough ru = u ? *u : r.value_or(Rough{}), rv = v ? *v : r.value_or(Rough{});
+    const bool remap = ps.get_bool("remaproughness", true);
+    if (ru.texture < 0 && rv.texture < 0) {
+      if (ru.value != rv.value)
+        note(d.at, "anisotropic roughness (" + fmt(ru.value) + ", " + fmt(rv.value) + ") is not supported (their mean used)");
+      double rough = 0.5 * (ru.value + rv.value);
+      double alpha = remap ? std::sqrt(rough) : rough;
+      return float(std::min(1.0, std::sqrt(alpha)));
+    }
+    TextureInput mean = ru.input();
+    if (ru.texture != rv.texture || (ru.texture < 0 && ru.value != rv.value)) {
+      note(d.at, "anisotropic roughness (uroughness and vroughness differ) is not supported (their mean used)");
+      TextureDesc t;
+      t.kind = TextureDesc::Kind::Mix;
+      t.tex1 = ru.input(), t.tex2 = rv.input(), t.amount.value = Vec3(0.5f);
+      mean.texture = add_texture(std::move(t), "mean roughness of " + m.name, d.at);
+    }
+    TextureDesc t;
+    t.kind = TextureDesc::Kind::Power;
+    t.tex = mean;
+    t.exponent = remap ? 0.25f : 0.5f;
+    m.textures.push_back({MaterialParam::Roughness, add_texture(std::move(t), "roughness of " + m.name, d.at)});
+    return 0;
+  }
+
+  // A texture the importer adds (a roughness remap, an imagemap's scale or invert): appended
+  // after its inputs, so the evaluation cost is known from theirs (kMaxTextureEvaluation).
+  int add_texture(TextureDesc t, const std::string& name, const PbrtLocation& at) {
+    t.name = name;
+    t.where = at.str();
+    const long long cost = texture_node_cost(t, texture_cost_);
+    if (cost > kMaxTextureEvaluation)
+      fail(at, "texture \"" + name + "\" evaluates " + (cost >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost)) +
+                   " scale/mix/invert/power nodes per lookup (at most " + std::to_string(kMaxTextureEvaluation) + ")");
+    out_.scene.textures.push_back(std::move(t));
+    texture_cost_.push_back(cost);
+    return int(out_.scene.textures.size()) - 1;
   }
 
   // ---- directives
@@ -277,7 +353,18 @@ class Builder {
       return;
     }
     if (n == "Attribute") {
-      note(d.at, "Attribute is not supported (ignored)");
+      const std::string& target = d.strings[0];
+      if (target == "medium") {
+        note(d.at, "Attribute \"medium\" is not supported: pdrt has no participating media (ignored)");
+      } else if (target != "shape" && target != "light" && target != "material" && target != "texture") {
+        fail(d.at, "Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got \"" + target + "\"");
+      } else {
+        std::vector<PbrtParam>& list = cur_.defaults[target];
+        for (const PbrtParam& p : d.params.list) {
+          std::erase_if(list, [&](const PbrtParam& q) { return q.name == p.name; });
+          list.push_back(p);
+        }
+      }
       for (const PbrtParam& p : d.params.list) p.used = true;
       return;
     }
@@ -411,7 +498,23 @@ class Builder {
     if (!(t.scale_u > 0 && t.scale_v > 0)) fail(d.at, "\"uscale\" and \"vscale\" must be > 0");
     for (const char* k : {"udelta", "vdelta"})
       if (ps.get_float(k, 0) != 0) note(ps.find(k)->at, std::string("\"") + k + "\" is not supported (0 used)");
-    if (cls == "constant") {
+    // pbrt-v4's ScaleTexture and MixTexture (their inputs come before them: no cycles).
+    auto non_negative = [&](const char* name, float fallback) {
+      TextureInput in = texture_input(ps, name, fallback, kind);
+      for (int c = 0; c < 3; ++c)
+        if (!(in.value[c] >= 0)) fail(ps.find(name)->at, std::string("\"") + name + "\" must be >= 0, got " + fmt(in.value[c]));
+      return in;
+    };
+    if (cls == "scale") {
+      t.kind = TextureDesc::Kind::Scale;
+      t.tex = non_negative("tex", 1);
+      t.scale = non_negative("scale", 1);
+    } else if (cls == "mix") {
+      t.kind = TextureDesc::Kind::Mix;
+      t.tex1 = non_negative("tex1", 0);
+      t.tex2 = non_negative("tex2", 1);
+      t.amount = texture_input(ps, "amount", 0.5f, "float");
+    } else if (cls == "constant") {
       t.kind = TextureDesc::Kind::Constant;
       t.value = color(ps, "value", Vec3(1.0f), false);
     } else if (cls == "checkerboard") {
@@ -448,8 +551,27 @@ class Builder {
         else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
         else note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
       }
-      if (ps.get_float("scale", 1) != 1) note(ps.find("scale")->at, "an image texture's \"scale\" is not supported (1 used)");
-      if (ps.get_bool("invert", false)) note(ps.find("invert")->at, "\"invert\" is not supported (ignored)");
+      // pbrt-v4's image textures: ClampZero(invert ? 1 - scale x : scale x), as a scale and an
+      // invert texture on top of the image (the name then means the outermost).
+      const double scale = ps.get_float("scale", 1);
+      if (!(scale >= 0) || !std::isfinite(scale)) fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + fmt(scale));
+      const bool invert = ps.get_bool("invert", false);
+      if (scale != 1 || invert) {
+        TextureInput in;
+        in.texture = add_texture(std::move(t), d.strings[0] + " (image)", d.at);
+        t = TextureDesc{};
+        t.name = d.strings[0], t.where = d.at.str();
+        if (scale != 1) {
+          t.kind = TextureDesc::Kind::Scale;
+          t.tex = in, t.scale.value = Vec3(float(scale));
+          if (invert) {
+            in.texture = add_texture(std::move(t), d.strings[0] + " (scaled image)", d.at);
+            t = TextureDesc{};
+            t.name = d.strings[0], t.where = d.at.str();
+          }
+        }
+        if (invert) t.kind = TextureDesc::Kind::Invert, t.tex = in;
+      }
     } else {
       note(d.at, "Texture class \"" + cls + "\" is not supported (materials using it get their default value)");
       supported = false;
@@ -459,8 +581,8 @@ class Builder {
       textures_[key] = -1;
       return;
     }
-    out_.scene.textures.push_back(std::move(t));
-    textures_[key] = int(out_.scene.textures.size()) - 1;
+    const std::string name = t.name;
+    textures_[key] = add_texture(std::move(t), name, d.at);
   }
 
   void camera(const PbrtDirective& d, const TransformPair& camera_from_world, bool implicit = false) {
@@ -667,17 +789,16 @@ class Builder {
     } else if (type == "conductor" || type == "coatedconductor") {
       if (type == "coatedconductor") note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
       m.type = MaterialType::Conductor;
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
       const std::string pre = type == "coatedconductor" ? "conductor." : "";
       const PbrtParam* refl = ps.find(pre + "reflectance");
       if (refl) {
-        // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same).
+        // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same); a texture
+        // binds the same mapping per hit (MaterialParam::Reflectance).
+        bind_to_ = &m.textures, bind_param_ = MaterialParam::Reflectance;
         Vec3 r = color(ps, pre + "reflectance", Vec3(0.0f), false);
-        m.eta = Vec3(1.0f);
-        for (int c = 0; c < 3; ++c) {
-          float rc = std::clamp(r[c], 0.0f, 0.9999f);
-          m.k[c] = 2 * std::sqrt(rc) / std::sqrt(1 - rc);
-        }
+        bind_to_ = nullptr;
+        conductor_from_reflectance(r, &m);
       } else {
         m.eta = metal_param(ps, pre + "eta", true);
         m.k = metal_param(ps, pre + "k", false);
@@ -689,7 +810,7 @@ class Builder {
       m.type = MaterialType::CoatedDiffuse;
       m.albedo = albedo(ps, m);
       for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
       float eta = index_of_refraction(ps);
       if (eta < 1 || eta > 3) {
         note(d.at, "a coat index of " + fmt(eta) + " is outside pdrt's [1, 3] (clamped)");
@@ -702,12 +823,36 @@ class Builder {
       m.coat_color = Vec3(std::exp(-thickness));
       m.coat_thickness = 1;
       for (const char* k : {"g", "maxdepth", "nsamples"}) ps.find(k) && (ps.find(k)->used = true);
-    } else if (type == "dielectric" || type == "thindielectric") {
-      if (type == "thindielectric") note(d.at, "thindielectric is not supported (a solid dielectric is used)");
+    } else if (type == "dielectric") {
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
       m.ior = index_of_refraction(ps);
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
+    } else if (type == "thindielectric") {
+      m.type = MaterialType::ThinDielectric;  // pbrt-v4's ThinDielectricBxDF: smooth only
+      m.albedo = Vec3(1.0f);
+      m.ior = index_of_refraction(ps);
+    } else if (type == "mix") {
+      // pbrt-v4's MixMaterial: two named materials, defined before, and the probability of the
+      // second (amount <= 0 and >= 1 choose one outright, as pbrt-v4 does).
+      m.type = MaterialType::Mix;
+      const PbrtParam* p = ps.find("materials");
+      if (!p || pbrt_canonical_type(p->type) != "string" || p->strings.size() != 2)
+        fail(p ? p->at : d.at, "a \"mix\" material needs \"string materials\" with two named materials");
+      p->used = true;
+      for (size_t i = 0; i < 2; ++i) {
+        auto it = named_materials_.find(p->strings[i]);
+        if (it == named_materials_.end()) fail(p->at, "unknown named material \"" + p->strings[i] + "\" in \"materials\"");
+        if (it->second == -2) fail(p->at, "a mix of \"" + p->strings[i] + "\" (an interface, no surface) is not supported");
+        m.mix[i] = it->second;
+      }
+      if (const PbrtParam* a = ps.find("amount"); a && pbrt_canonical_type(a->type) == "texture") {
+        a->used = true;
+        if (auto t = texture_ref(*a, "float")) m.textures.push_back({MaterialParam::Amount, *t});
+      } else if (std::optional<double> v = ps.find_float("amount")) {
+        if (!std::isfinite(*v)) fail(ps.find("amount")->at, "\"float amount\" must be finite");
+        m.amount = float(std::clamp(*v, 0.0, 1.0));
+      }
     } else {
       note(d.at, "material \"" + type + "\" is not supported (diffuse 0.5 used)");
       for (const PbrtParam& p : ps.list) p.used = true;
@@ -831,16 +976,12 @@ class Builder {
       return;
     }
     if (t == "infinite") {
-      if (const PbrtParam* f = ps.find("filename")) {
-        f->used = true;
-        note(f->at, "environment images are not supported yet (the light is skipped)");
-        return;
-      }
-      if (!is_black(out_.scene.environment.radiance)) {
+      if (!is_black(out_.scene.environment.radiance) || out_.scene.environment.has_map()) {
         note(d.at, "a second infinite light is not supported (skipped)");
         for (const PbrtParam& p : ps.list) p.used = true;
         return;
       }
+      if (ps.find("filename")) return image_light(d, scale);
       Vec3 L = color(ps, "L", Vec3(1.0f), true) * scale;
       if (auto e = ps.find_float("illuminance")) {
         // Illuminance of the upper hemisphere: pi L (by luminance).
@@ -852,6 +993,52 @@ class Builder {
     }
     note(d.at, "LightSource \"" + t + "\" is not supported (skipped)");
     for (const PbrtParam& p : ps.list) p.used = true;
+  }
+
+  // An infinite light with an image: pbrt-v4's equal-area octahedral square, resampled into
+  // pdrt's equirectangular environment (equal_area_octahedral.h).
+  void image_light(const PbrtDirective& d, float scale) {
+    const PbrtParams& ps = d.params;
+    const PbrtParam& f = *ps.find("filename");
+    const std::string name = *ps.find_string("filename");
+    if (ps.find("L")) fail(ps.find("L")->at, "an infinite light takes \"L\" or \"filename\", not both");
+    const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+    const std::filesystem::path file = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : rel / name;
+    EnvironmentImage img;
+    std::string reason;
+    if (!read_environment_image(file, &img, &reason)) fail(f.at, "cannot read \"" + name + "\": " + reason);
+    if (img.width != img.height)
+      fail(f.at, "\"" + name + "\" is " + std::to_string(img.width) + " x " + std::to_string(img.height) +
+                     ": pbrt-v4's environment images are square (equal-area octahedral)");
+    for (float v : img.rgb)
+      if (!(std::isfinite(v) && v >= 0)) fail(f.at, "\"" + name + "\" holds a negative or non-finite value");
+    if (!cur_.ctm.t[0].affine()) fail(d.at, "the current transform is projective");
+    if (moving()) note(d.at, "a moving infinite light is not supported (its start orientation is used)");
+    const std::optional<Mat4> inv = cur_.ctm.t[0].inverse();
+    if (!inv) fail(d.at, "the current transform is singular");
+    double e_v = 0;
+    if (auto e = ps.find_float("illuminance")) {
+      // pbrt-v4: scale so the upper hemisphere (light space +z) gives illuminance e; every
+      // texel of the equal-area square subtends 4 pi / n^2.
+      double sum = 0;
+      const int n = img.width;
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const Vec3 w = equal_area_square_to_sphere((x + 0.5) / n, (y + 0.5) / n);
+          const float* p = &img.rgb[3 * (size_t(y) * size_t(n) + size_t(x))];
+          if (w.z > 0) sum += luminance(Vec3(p[0], p[1], p[2])) * w.z;
+        }
+      e_v = sum * 4 * kPiD / (double(n) * n);
+      if (e_v > 0) scale *= float(*e / e_v);
+    }
+    const Mat4 to_light = *inv;
+    EnvironmentImage eq = octahedral_to_equirect(img, [&](const Vec3& w) { return to_light.vector(w); });
+    EnvironmentDesc& env = out_.scene.environment;
+    env.file = file.string();
+    env.width = eq.width, env.height = eq.height;
+    env.rgb = std::move(eq.rgb);
+    env.scale = Vec3(scale);
+    env.resampled = true;
   }
 
   void shape(const PbrtDirective& d) {
@@ -902,7 +1089,7 @@ class Builder {
       } else {
         P = ps.point3s("P");
         idx = ps.ints("indices");
-        N = ps.normal3s("N");
+        if (t != "loopsubdiv") N = ps.normal3s("N");
       }
       if (P.empty()) fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
       if (t == "trianglemesh" && idx.empty()) {
@@ -920,22 +1107,30 @@ class Builder {
         idx = tri;
         note(d.at, "bilinear patches are split into two triangles each (exact only where they are planar)");
       }
-      if (t == "loopsubdiv") {
-        note(d.at, "Loop subdivision is not supported yet (the control mesh is used)");
-        ps.find_int("levels");
-      }
       if (idx.size() % 3) fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
       for (int64_t i : idx)
         if (i < 0 || uint64_t(i) >= P.size())
           fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
       for (const Vec3& p : P)
         if (!is_finite(p)) fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+      if (t == "loopsubdiv") {
+        const int64_t levels = ps.get_int("levels", 3);
+        if (levels < 0 || levels > 12) fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
+        MeshData m;
+        try {
+          m = loop_subdivide(P, std::vector<uint32_t>(idx.begin(), idx.end()), int(levels));
+        } catch (const InputError& e) {
+          fail(d.at, std::string("Shape \"loopsubdiv\": ") + e.what());
+        }
+        P = std::move(m.positions), N = std::move(m.normals);
+        idx.assign(m.indices.begin(), m.indices.end());
+      }
       const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
       if (!N.empty() && N.size() != P.size())
         fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
       for (Vec3& n : N)
         if (!(length(n) > 0) || !is_finite(n)) fail(n_at, "\"N\" holds a zero or non-finite normal");
-      if (t != "plymesh") uvs = ps.point2s("uv");
+      if (t != "plymesh" && t != "loopsubdiv") uvs = ps.point2s("uv");
       if (!uvs.empty() && uvs.size() != P.size())
         fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(uvs.size()));
       for (const char* k : {"S", "faceIndices"})
@@ -1036,6 +1231,7 @@ class Builder {
   std::optional<float> frame_aspect_;
   std::array<float, 2> camera_scale_{1, 1};  // camera space's x and y unit in scene units
   int default_material_ = -1;
+  std::vector<long long> texture_cost_;  // per scene texture: texture_node_cost
   std::map<std::string, int> textures_;  // "float:name" / "spectrum:name" -> index, -1 unsupported
   std::vector<TextureBinding>* bind_to_ = nullptr;  // where color() binds a texture parameter
   MaterialParam bind_param_ = MaterialParam::Albedo;
@@ -1071,6 +1267,13 @@ PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool s
   Builder b(strict);
   PbrtImport out = b.run(directives);
   b.resolve_screen(out.scene);
+  // pbrt's sphere has its pole on +z and its azimuth from +x toward +y; pdrt's has the pole on
+  // +y and the azimuth from +x toward +z. Swapping y and z in object space (a mirror, harmless
+  // to a sphere) gives every texel the direction pbrt gives it.
+  Affine swap_yz;
+  swap_yz.m = {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, 1, 0, 0}}};
+  for (ShapeDesc& s : out.scene.shapes)
+    if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
   // pbrt's fov spans the film's shorter side; pdrt's is vertical.
   FilmDesc& f = out.scene.film;
   const double half = std::tan(0.5 * b.fov() * kPiD / 180);

@@ -64,7 +64,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
-    const int mi = scene_.desc().shapes[hit.shape].material;
+    const int mi = scene_.material(hit.shape);
     const Material& mat = scene_.desc().materials[mi];
     std::optional<Bsdf> textured;
     if (!mat.textures.empty()) {

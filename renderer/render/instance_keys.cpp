@@ -65,8 +65,9 @@ InstanceKey instance_key(const MotionKey& key, const Affine& static_part) {
   out.scale[0] = float(u00), out.scale[1] = float(u11), out.scale[2] = float(u22);
   out.skew[0] = float(u01), out.skew[1] = float(u02), out.skew[2] = float(u12);
   // world = T_key + L p + (R S_key) b = T_key + Q U (p + A^-1 b): the shift is U A^-1 b.
+  // A^-1 b is minus the inverse's translation.
   const Affine inv = static_part.inverse();
-  const D3 c{inv.m[0][3], inv.m[1][3], inv.m[2][3]};
+  const D3 c{-double(inv.m[0][3]), -double(inv.m[1][3]), -double(inv.m[2][3])};
   out.shift[0] = float(u00 * c.x + u01 * c.y + u02 * c.z);
   out.shift[1] = float(u11 * c.y + u12 * c.z);
   out.shift[2] = float(u22 * c.z);

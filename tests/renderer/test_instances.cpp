@@ -53,8 +53,8 @@ struct Pair {
 // the front; `moving`: the middle instance moves (motion keys) over the shutter. `copied`
 // holds the same shapes copied under the instances' transforms.
 Pair instanced_and_copied(const Placement& at, bool moving) {
-  SceneDesc s = base_scene(48, 36, 16);
-  s.camera.position = at.point({0, 2, 7}), s.camera.look_at = at.point({0, 0.3f, 0}), s.camera.vfov_deg = 40;
+  SceneDesc s = base_scene(64, 40, 16);
+  s.camera.position = at.point({0, 2.5f, 4.5f}), s.camera.look_at = at.point({0, 0.2f, 0}), s.camera.vfov_deg = 45;
   s.environment.radiance = Vec3(0.15f);
   s.integrator.max_depth = 4;
   TextureDesc checks;
@@ -67,8 +67,8 @@ Pair instanced_and_copied(const Placement& at, bool moving) {
   Material gloss = diffuse(0.6f);
   gloss.type = MaterialType::Glossy, gloss.roughness = 0.3f;
   const int m_floor = add_material(s, floor), m_gloss = add_material(s, gloss), m_ball = add_material(s, diffuse(0.7f));
-  s.shapes.push_back(quad(at.point({-0.6f, 3, -0.6f}), at.vector({1.2f, 0, 0}), at.vector({0, 0, 1.2f}),
-                          add_material(s, emitter(6))));  // faces down
+  s.shapes.push_back(quad(at.point({-1, 3, -1}), at.vector({2, 0, 0}), at.vector({0, 0, 2}),
+                          add_material(s, emitter(12))));  // faces down
 
   PrototypeDesc p;
   p.name = "group";
@@ -132,28 +132,39 @@ Difference difference(const Image& a, const Image& b) {
 
 const std::vector<Placement> kPlacements = {{{0, 0, 0}, 1}, {{1e4f, -1e4f, 1e4f}, 1}, {{0, 0, 0}, 1e-3f}, {{10, 5, 3}, 1e-3f}};
 
+// Float spacing at the placement's offset relative to the scene's size: how far a copied
+// vertex (stored in world space) may sit from the instanced one (stored in the prototype's
+// space and transformed by Embree per ray).
+double relative_spacing(const Placement& at) {
+  const float far = std::max({std::abs(at.offset.x), std::abs(at.offset.y), std::abs(at.offset.z)});
+  return far == 0 ? 0.0 : double(std::nextafter(far, INFINITY) - far) / at.scale;
+}
+
 // Embree intersects an instance in the prototype's space (the ray carried through the inverse
-// transform), the copy in world space: t and the hit point differ in their last bits, and a
-// path whose decision sits on a threshold (a silhouette, a light pick) may go another way.
-// Measured over the placements: mean difference below 3e-4 of the image mean, at most 1 pixel in
-// 100 off by more than 1 % (silhouette pixels). Self-intersection or a wrong transform, normal or
-// uv makes whole regions differ (tens of %).
-void expect_same_image(const Pair& p, const std::string& what) {
+// transform), a copy in world space: t and the hit point differ in their last bits, and a copy
+// far from the origin has its vertices rounded to the float spacing there (2^-10 of the scene's
+// size at 10^4, scale 1). Measured: at the origin (any scale) mean difference 3e-7 of the image
+// mean and no pixel off by 1 %; where the spacing is ~1e-3 of the scene, mean 3.3e-3 to 3.9e-3
+// and 2.6 % to 3.0 % of the pixels (silhouettes and checker edges move by the rounding). Allowed:
+// 1e-5 + 6 x spacing, and 5 % of the pixels when the spacing is not 0. Self-intersection, or a
+// wrong transform, normal or uv, makes whole regions differ (tens of %).
+void expect_same_image(const Pair& p, const Placement& at) {
   Image a = render_quietly(p.instanced).image, b = render_quietly(p.copied).image;
   Difference d = difference(a, b);
-  EXPECT_GT(d.mean, 0.01) << what;
-  EXPECT_LT(d.mean_relative, 1e-3) << what;
-  EXPECT_LE(d.outliers, 0.02) << what;
+  const double spacing = relative_spacing(at);
+  EXPECT_GT(d.mean, 0.1) << describe(at);
+  EXPECT_LT(d.mean_relative, 1e-5 + 6 * spacing) << describe(at);
+  EXPECT_LE(d.outliers, spacing > 0 ? 0.05 : 0.0) << describe(at);
 }
 
 }  // namespace
 
 TEST(Instances, StaticInstancesRenderTheImageOfCopiedShapesAtEveryPlacement) {
-  for (const Placement& at : kPlacements) expect_same_image(instanced_and_copied(at, false), describe(at));
+  for (const Placement& at : kPlacements) expect_same_image(instanced_and_copied(at, false), at);
 }
 
 TEST(Instances, MovingInstancesRenderTheImageOfCopiedMovingShapesAtEveryPlacement) {
-  for (const Placement& at : kPlacements) expect_same_image(instanced_and_copied(at, true), describe(at));
+  for (const Placement& at : kPlacements) expect_same_image(instanced_and_copied(at, true), at);
 }
 
 // A hit inside an instance names the prototype's shape (its material, normals, uvs) and the
@@ -236,48 +247,45 @@ TEST(Instances, EmbreeInstanceTransformsFollowPdrtsKeyframeInterpolation) {
   EXPECT_GT(exact_cases, 8);
 }
 
-// Convex instanced shapes (a sphere and a flat-faceted mesh sphere, diffuse 0.5) in a white
-// furnace read 0.5 at every pixel they cover, far from the origin and at small scale: a
-// spawned ray that re-hit its own surface would darken the pixel.
-TEST(Instances, InstancedConvexShapesInAFurnaceShowTheirAlbedoAtEveryPlacement) {
-  const int W = 32, H = 16;
-  for (const Placement& at : kPlacements) {
-    SceneDesc s = base_scene(W, H, 16);
-    s.camera.position = at.point({0, 0, 9}), s.camera.look_at = at.point({0, 0, 0}), s.camera.vfov_deg = 30;
-    s.environment.radiance = Vec3(1.0f);
-    s.integrator.max_depth = 1;
-    const int m = add_material(s, diffuse(0.5f));
-    PrototypeDesc p;
-    p.shapes.push_back(sphere({-1.2f, 0, 0}, 1, m));
-    ShapeDesc facets = uv_sphere(10, 20, false, m);
-    facets.transform = Affine::translate({1.2f, 0, 0});
-    p.shapes.push_back(facets);
-    s.prototypes.push_back(p);
-    InstanceDesc in;
-    in.transform = placed(at) * Affine::rotate({0, 0, 1}, 3);
-    s.instances.push_back(in);
-    Image im = render_quietly(s).image;
-    double worst = 0, sum = 0;
-    int n = 0;
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const double v = mean_rgb(im, x, y);
-        if (v > 0.99) continue;  // the environment
-        // Inner pixels only: a silhouette pixel mixes 0.5 with the environment's 1.
-        if (x == 0 || y == 0 || x == W - 1 || y == H - 1) continue;
-        bool inner = true;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) inner = inner && mean_rgb(im, x + dx, y + dy) < 0.99;
-        if (!inner) continue;
-        sum += v, ++n, worst = std::max(worst, std::abs(v - 0.5));
-      }
-    ASSERT_GT(n, 60) << describe(at);
-    EXPECT_NEAR(sum / n, 0.5, 0.005) << describe(at);
-    EXPECT_LT(worst, 0.05) << describe(at) << " (self-intersection)";
+// A convex instanced shape (a sphere, then a flat-faceted mesh sphere; diffuse 0.5) in a white
+// furnace reads 0.5 over its inner pixels, and the same image (to 2 % a pixel) far from the
+// origin and at small scale as at the origin: a spawned ray that re-hit its own surface would
+// darken pixels where the error bound is too small (far, or small), not at the origin.
+TEST(Instances, InstancedConvexShapesInAFurnaceLookTheSameAtEveryPlacement) {
+  const int W = 32;
+  for (bool mesh : {false, true}) {
+    Image origin;
+    for (const Placement& at : kPlacements) {
+      SceneDesc s = base_scene(W, W, 16);
+      s.camera.position = at.point({0, 0, 6}), s.camera.look_at = at.point({0, 0, 0}), s.camera.vfov_deg = 25;
+      s.environment.radiance = Vec3(1.0f);
+      s.integrator.max_depth = 1;
+      const int m = add_material(s, diffuse(0.5f));
+      PrototypeDesc p;
+      p.shapes.push_back(mesh ? uv_sphere(10, 20, false, m) : sphere({0, 0, 0}, 1, m));
+      s.prototypes.push_back(p);
+      InstanceDesc in;
+      in.transform = placed(at) * Affine::rotate({0, 0, 1}, 3);
+      s.instances.push_back(in);
+      Image im = render_quietly(s).image;
+      if (origin.rgb.empty()) origin = im;
+      double sum = 0, worst = 0;
+      int n = 0;
+      for (int y = 0; y < W; ++y)
+        for (int x = 0; x < W; ++x) {
+          const double dx = x + 0.5 - W / 2.0, dy = y + 0.5 - W / 2.0;
+          if (dx * dx + dy * dy > 0.5 * (W / 4.0) * (W / 4.0)) continue;  // inside the silhouette
+          sum += mean_rgb(im, x, y), ++n;
+          worst = std::max(worst, std::abs(mean_rgb(im, x, y) - mean_rgb(origin, x, y)));
+        }
+      ASSERT_GT(n, 60);
+      EXPECT_NEAR(sum / n, 0.5, 0.01) << (mesh ? "mesh " : "sphere ") << describe(at);
+      EXPECT_LT(worst, 0.02) << (mesh ? "mesh " : "sphere ") << describe(at) << " (self-intersection)";
+    }
   }
 }
 
-// An empty scene but for instances has the instances' bounds.
+// A scene of instances only has the instances' bounds.
 TEST(Instances, SceneBoundsCoverTheInstances) {
   SceneDesc s = base_scene(4, 4, 1);
   PrototypeDesc p;
@@ -290,5 +298,6 @@ TEST(Instances, SceneBoundsCoverTheInstances) {
   }
   EmbreeDevice device;
   EmbreeScene scene(s, device);
-  EXPECT_NEAR(scene.bounds_radius(), 11, 1e-3);
+  // Half the diagonal of the box [-11, 11] x [-1, 1] x [-1, 1].
+  EXPECT_NEAR(scene.bounds_radius(), std::sqrt(123.0), 1e-3);
 }

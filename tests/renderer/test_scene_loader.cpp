@@ -1190,8 +1190,8 @@ TEST_F(SceneLoader, GeneratedSkyIsFoundFromAnyScene) {
 
 namespace {
 
-// kHead, a grey and a lamp material, a prototype "tree" of a sphere and a quad (lines 5-7),
-// then `rest` (line 8 on).
+// kHead, a grey and a lamp material (line 4), a prototype "tree" of a sphere and a quad
+// (lines 5-6), then `rest` (line 7 on).
 std::string with_prototype(const std::string& rest) {
   return kHead + R"(  "materials": {"grey": {"type": "diffuse"}, "lamp": {"type": "emitter", "radiance": [1, 1, 1]}},
   "prototypes": {"tree": [{"type": "sphere", "material": "grey", "radius": 1, "transform": {"translate": [0, 2, 0]}},
@@ -1246,27 +1246,27 @@ TEST_F(SceneLoader, PrototypeObjectsMayComeFromAnObjFile) {
 
 TEST_F(SceneLoader, UnknownPrototypeIsRefusedNamingTheKnownOnes) {
   EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": \"bush\"}]\n}")),
-               "s.json:8:53: objects[0].prototype is not a prototype (prototypes: \"tree\"), got \"bush\"");
+               "s.json:7:49: objects[0].prototype is not a prototype (prototypes: \"tree\"), got \"bush\"");
   EXPECT_ERROR(scene(kHead + "  \"objects\": [{\"type\": \"instance\", \"prototype\": \"bush\"}]\n}"),
-               "s.json:4:53: objects[0].prototype is not a prototype (the scene has no \"prototypes\"), got \"bush\"");
+               "s.json:4:49: objects[0].prototype is not a prototype (the scene has no \"prototypes\"), got \"bush\"");
 }
 
 TEST_F(SceneLoader, InstanceNeedsAPrototypeAndKnowsItsKeys) {
-  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\"}]\n}")), "s.json:8:16: objects[0] needs \"prototype\"");
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\"}]\n}")), "s.json:7:15: objects[0] missing required key \"prototype\"");
   EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": \"tree\", \"material\": \"grey\"}]\n}")),
                "objects[0].material");
   EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": 3}]\n}")),
-               "s.json:8:53: objects[0].prototype must be a string");
+               "s.json:7:49: objects[0].prototype must be a string, got 3");
 }
 
 TEST_F(SceneLoader, EmptyPrototypeIsRefused) {
   EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"tree\": []},\n  \"objects\": []\n}"),
-               "s.json:4:27: prototypes.tree must hold at least one object");
+               "s.json:4:26: prototypes.tree must hold at least one object");
   EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"tree\": {}},\n  \"objects\": []\n}"),
-               "s.json:4:27: prototypes.tree must be an array of objects, got {}");
+               "s.json:4:26: prototypes.tree must be an array of objects, got {}");
   EXPECT_ERROR(scene(kHead + "  \"prototypes\": [],\n  \"objects\": []\n}"), "s.json:4:17: prototypes must be an object");
   EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"\": [{\"type\": \"sphere\", \"radius\": 1}]},\n  \"objects\": []\n}"),
-               "s.json:4:19: prototypes. prototype name must not be empty");
+               "s.json:4:18: prototypes[\"\"] prototype name must not be empty");
 }
 
 TEST_F(SceneLoader, InstanceInsideAPrototypeIsRefused) {
@@ -1275,7 +1275,7 @@ TEST_F(SceneLoader, InstanceInsideAPrototypeIsRefused) {
                  "tree": [{"type": "sphere", "material": "grey", "radius": 1}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:6:37: prototypes.forest[0].type is not allowed inside a prototype (instances do not nest), got \"instance\"");
+  EXPECT_ERROR(f, "s.json:5:38: prototypes.forest[0].type is not allowed inside a prototype (instances do not nest), got \"instance\"");
 }
 
 TEST_F(SceneLoader, MotionInsideAPrototypeIsRefused) {
@@ -1283,7 +1283,7 @@ TEST_F(SceneLoader, MotionInsideAPrototypeIsRefused) {
   "prototypes": {"tree": [{"type": "sphere", "material": "grey", "radius": 1, "motion": [{"time": 0}]}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:6:78: prototypes.tree[0].motion is not allowed inside a prototype (give the instance a motion)");
+  EXPECT_ERROR(f, "s.json:5:79: prototypes.tree[0].motion is not allowed inside a prototype (give the instance a motion)");
 }
 
 TEST_F(SceneLoader, EmitterInsideAPrototypeIsRefused) {
@@ -1291,11 +1291,23 @@ TEST_F(SceneLoader, EmitterInsideAPrototypeIsRefused) {
   "prototypes": {"tree": [{"type": "sphere", "material": "lamp", "radius": 1}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:6:52: prototypes.tree[0].material is an emitter; emitters cannot be inside a prototype (instanced area lights are not supported), got \"lamp\"");
+  EXPECT_ERROR(f, "s.json:5:58: prototypes.tree[0].material is an emitter; emitters cannot be inside a prototype (instanced area lights are not supported), got \"lamp\"");
   fs::path obj = scene(kHead + R"(  "prototypes": {"tree": [{"type": "obj", "file": "lamp.obj"}]},
   "objects": []
 })");
   write(obj.parent_path() / "lamp.obj", "mtllib lamp.mtl\nusemtl glow\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write(obj.parent_path() / "lamp.mtl", "newmtl glow\nKe 1 1 1\n");
-  EXPECT_ERROR(obj, "s.json:4:43: prototypes.tree[0].file \"lamp.obj\" has an emitting material (Ke) \"glow\"; emitters cannot be inside a prototype");
+  EXPECT_ERROR(obj, "s.json:4:51: prototypes.tree[0].file \"lamp.obj\" has an emitting material (Ke) \"lamp/glow\"; emitters cannot be inside a prototype");
+}
+
+TEST_F(SceneLoader, ExamplePrototypesAndInstances) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  ASSERT_EQ(s.prototypes.size(), 1u);
+  EXPECT_EQ(s.prototypes[0].name, "post");
+  EXPECT_EQ(s.prototypes[0].shapes.size(), 2u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  expect_vec(s.instances[0].transform.point({0, 0, 0}), -2.5f, 0, 1.5f);
+  EXPECT_TRUE(s.instances[0].motion.empty());
+  ASSERT_EQ(s.instances[1].motion.size(), 2u);
+  EXPECT_FLOAT_EQ(s.instances[1].motion[1].scale.y, 1.2f);
 }

@@ -22,7 +22,7 @@ namespace {
 SceneDesc grid_scene(int count, bool instanced) {
   SceneDesc s;
   const int side = int(std::ceil(std::sqrt(double(count))));
-  s.camera.position = {0, float(side) * 1.5f, float(side) * 1.8f}, s.camera.look_at = {0, 0, 0}, s.camera.vfov_deg = 50;
+  s.camera.position = {0, float(side) * 0.6f, float(side) * 0.8f}, s.camera.look_at = {0, 0, 0}, s.camera.vfov_deg = 60;
   s.film.width = s.film.height = 64;
   s.film.filter.type = FilterType::Box, s.film.filter.radius = 0.5f;
   s.sampler.type = "random", s.sampler.spp = 1, s.sampler.seed = 1;
@@ -52,6 +52,7 @@ SceneDesc grid_scene(int count, bool instanced) {
 struct Measure {
   double seconds = 0;
   long peak_kb = 0;
+  double covered = 0;  // fraction of pixels darker than the white environment: the meshes are seen
 };
 
 // In a child process: build the scene, render it, report the time and the child's peak RSS.
@@ -66,8 +67,9 @@ Measure measure(int count, bool instanced) {
     auto sampler = make_scene_sampler(s.sampler);
     RenderOptions o;
     o.quiet = true;
-    render(s, *sampler, o);
+    RenderResult r = render(s, *sampler, o);
     Measure m;
+    for (std::size_t i = 0; i < r.image.rgb.size(); i += 3) m.covered += r.image.rgb[i] < 0.99f ? 3.0 / r.image.rgb.size() : 0.0;
     m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
@@ -90,11 +92,14 @@ int main(int argc, char** argv) {
   const int instances = argc > 1 ? std::atoi(argv[1]) : 10000, copies = argc > 2 ? std::atoi(argv[2]) : 100;
   const Measure one = measure(1, true), many = measure(instances, true), copied = measure(copies, false);
   const Measure base = measure(1, false);
-  std::printf("%-34s %12s %10s\n", "scene (20 000-triangle mesh)", "peak RSS MB", "seconds");
-  std::printf("%-34s %12.1f %10.2f\n", "1 shape (no instancing)", base.peak_kb / 1024.0, base.seconds);
-  std::printf("%-34s %12.1f %10.2f\n", "1 instance", one.peak_kb / 1024.0, one.seconds);
-  std::printf("%-34s %12.1f %10.2f\n", (std::to_string(instances) + " instances").c_str(), many.peak_kb / 1024.0, many.seconds);
-  std::printf("%-34s %12.1f %10.2f\n", (std::to_string(copies) + " copied shapes").c_str(), copied.peak_kb / 1024.0, copied.seconds);
+  std::printf("%-34s %12s %10s %8s\n", "scene (20 000-triangle mesh)", "peak RSS MB", "seconds", "covered");
+  auto row = [](const std::string& name, const Measure& m) {
+    std::printf("%-34s %12.1f %10.2f %8.2f\n", name.c_str(), m.peak_kb / 1024.0, m.seconds, m.covered);
+  };
+  row("1 shape (no instancing)", base);
+  row("1 instance", one);
+  row(std::to_string(instances) + " instances", many);
+  row(std::to_string(copies) + " copied shapes", copied);
   std::printf("per instance: %.0f bytes; per copy: %.0f bytes (%.0fx)\n",
               double(many.peak_kb - one.peak_kb) * 1024 / (instances - 1),
               double(copied.peak_kb - base.peak_kb) * 1024 / (copies - 1),

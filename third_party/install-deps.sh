@@ -9,6 +9,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libtinyobjloader-dev
   libassimp-dev
+  libosd-dev
   libtbb-dev
   libfftw3-dev
   nlohmann-json3-dev

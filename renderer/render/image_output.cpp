@@ -100,6 +100,22 @@ void write_display_png(const std::filesystem::path& path, int width, int height,
   write_through_module(path, w, {{"oiio:ColorSpace", "sRGB"}});
 }
 
+void write_linear_rgb(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb,
+                      const Metadata& metadata) {
+  const std::string ext = lower_ext(path);
+  if (!is_float_format(ext)) throw UsageError(path.string() + ": linear RGB goes to .exr, .tif or .tiff");
+  PdrtImageWrite w{};
+  const std::string format = ext == ".exr" ? "exr" : "tiff";
+  w.format = format.c_str();
+  w.width = width, w.height = height, w.channels = 3;
+  w.z_channel = -1;
+  w.pixels = rgb.data();
+  Metadata attributes = {{"oiio:ColorSpace", "linear"}};
+  if (ext == ".exr") attributes.push_back({"compression", "zip"});
+  attributes.insert(attributes.end(), metadata.begin(), metadata.end());
+  write_through_module(path, w, attributes);
+}
+
 Image read_image_rgb(const std::filesystem::path& path) {
   struct Buffer {
     std::vector<float> px;

@@ -27,6 +27,10 @@ void write_image(const std::filesystem::path& path, const Image& image, const Me
 // heat maps, crops, sample-count maps.
 void write_display_png(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb);
 
+// Writes linear float RGB alone (no AOVs) to an EXR or TIFF: environment images, textures.
+void write_linear_rgb(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgb,
+                      const Metadata& metadata);
+
 // Reads the RGB channels of an image (linear for EXR/TIFF float, decoded sRGB for 8-bit).
 Image read_image_rgb(const std::filesystem::path& path);
 

@@ -137,6 +137,7 @@ struct EnvironmentDesc {
   std::vector<float> rgb;           // width * height linear RGB, top row first; finite, >= 0
   Vec3 scale{1.0f};                 // multiplies the image, per channel, >= 0
   float rotation_deg = 0;           // about +y, counter-clockwise seen from above
+  bool resampled = false;           // rgb is not `file` itself (a pbrt-v4 octahedral map made equirectangular)
   bool has_map() const { return width > 0 && height > 0; }
 };
 

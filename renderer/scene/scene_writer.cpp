@@ -1,5 +1,7 @@
 #include "renderer/scene/scene_writer.h"
 
+#include "renderer/render/image_output.h"
+
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 
@@ -176,9 +178,23 @@ void write_obj(const MeshData& mesh, const fs::path& file) {
   });
 }
 
+// A mesh as inline JSON arrays (floats print with the shortest digits that read back exactly).
+ojson inline_mesh(const MeshData& mesh) {
+  ojson o = {{"type", "mesh"}};
+  ojson v = ojson::array(), n = ojson::array(), t = ojson::array();
+  for (const Vec3& p : mesh.positions) v.push_back(vec(p));
+  for (const Vec3& p : mesh.normals) n.push_back(vec(p));
+  for (const auto& uv : mesh.uvs) t.push_back(ojson::array({uv[0], uv[1]}));
+  o["vertices"] = v;
+  if (!mesh.normals.empty()) o["normals"] = n;
+  if (!mesh.uvs.empty()) o["uvs"] = t;
+  o["indices"] = mesh.indices;
+  return o;
+}
+
 }  // namespace
 
-void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
+void write_scene_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options) {
   ojson j;
   const CameraDesc& c = s.camera;
   ojson cam = {{"position", vec(c.position)}, {"look_at", vec(c.look_at)}, {"up", vec(c.up)},
@@ -239,6 +255,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
     ojson o;
     if (sh.kind == ShapeDesc::Kind::Sphere) {
       o = {{"type", "sphere"}, {"center", vec(sh.center)}, {"radius", sh.radius}};
+    } else if (options.inline_meshes) {
+      o = inline_mesh(sh.mesh);
     } else {
       if (!made_dir) {
         std::error_code ec;
@@ -296,7 +314,14 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file) {
   }
   const EnvironmentDesc& e = s.environment;
   if (e.has_map()) {
-    lights.push_back({{"type", "environment"}, {"file", fs::absolute(e.file).string()}, {"scale", vec(e.scale)},
+    std::string file = fs::absolute(e.file).string();
+    if (e.resampled) {
+      // The image pdrt renders is not the file it came from: write it beside the scene.
+      const fs::path exr = json_file.parent_path() / (json_file.stem().string() + ".environment.exr");
+      write_linear_rgb(exr, e.width, e.height, e.rgb, {{"pdrt:source", e.file}});
+      file = exr.filename().string();
+    }
+    lights.push_back({{"type", "environment"}, {"file", file}, {"scale", vec(e.scale)},
                       {"rotation_deg", e.rotation_deg}});
   } else if (!is_black(e.radiance)) {
     lights.push_back({{"type", "environment"}, {"radiance", vec(e.radiance)}});

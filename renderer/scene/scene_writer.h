@@ -11,7 +11,13 @@
 
 namespace pdrt {
 
+struct SceneWriteOptions {
+  // Triangle meshes written into the JSON itself (`"type": "mesh"` with vertices, normals,
+  // uvs, indices) instead of OBJ files: one self-contained file, for small scenes and tests.
+  bool inline_meshes = false;
+};
+
 // Throws InputError (what cannot be written, or what the format cannot say) naming the file.
-void write_scene_json(const SceneDesc& scene, const std::filesystem::path& json_file);
+void write_scene_json(const SceneDesc& scene, const std::filesystem::path& json_file, const SceneWriteOptions& options = {});
 
 }  // namespace pdrt

@@ -1,5 +1,8 @@
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
 
+#include "renderer/scene/environment_image.h"
+#include "renderer/scene/pbrt/equal_area_octahedral.h"
+#include "renderer/scene/pbrt/loop_subdivision.h"
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "renderer/scene/pbrt/ply_mesh.h"
@@ -34,7 +37,19 @@ struct Attributes {
   int material = -1;  // index into the scene's materials; -1 = pbrt's default (diffuse 0.5)
   bool interface = false;  // the current material is "interface": shapes bound no surface
   std::optional<AreaLight> area;
+  // Attribute "shape" | "light" | "material" | "texture": parameters every later directive of
+  // that kind takes unless it sets them itself (pbrt-v4 file format, "Attributes").
+  std::map<std::string, std::vector<PbrtParam>> defaults;
 };
+
+// The Attribute target a directive reads its defaults from ("" = none).
+std::string attribute_target(const std::string& directive) {
+  if (directive == "Shape") return "shape";
+  if (directive == "LightSource" || directive == "AreaLightSource") return "light";
+  if (directive == "Material" || directive == "MakeNamedMaterial") return "material";
+  if (directive == "Texture") return "texture";
+  return "";
+}
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -48,9 +63,19 @@ class Builder {
 
   PbrtImport run(const std::vector<PbrtDirective>& ds) {
     for (const PbrtDirective& d : ds) {
-      directive(d);
-      for (const PbrtParam* p : d.params.unused())
-        note(p->at, "\"" + p->type + " " + p->name + "\" is not used by pdrt (ignored)");
+      auto defaults = cur_.defaults.find(attribute_target(d.name));
+      if (defaults == cur_.defaults.end()) {
+        directive(d);
+        report_unused(d.params.list);
+        continue;
+      }
+      PbrtDirective with = d;
+      for (const PbrtParam& p : defaults->second)
+        if (!d.params.has(p.name)) with.params.list.push_back(p);
+      directive(with);
+      // An attribute one directive does not read may be meant for another: only the
+      // directive's own parameters are reported unused.
+      report_unused({with.params.list.begin(), with.params.list.begin() + long(d.params.list.size())});
     }
     if (!camera_seen_) {
       // pbrt-v4's default camera: perspective, fov 90, at the origin looking down +z.
@@ -63,7 +88,7 @@ class Builder {
     if (!attr_stack_.empty()) note(attr_stack_.back().first, "AttributeBegin is never closed (ignored)");
     drop_empty_prototypes();
     if (out_.scene.shapes.empty() && out_.scene.instances.empty() && out_.scene.delta_lights.empty() &&
-        is_black(out_.scene.environment.radiance))
+        is_black(out_.scene.environment.radiance) && !out_.scene.environment.has_map())
       throw InputError((last_ ? last_->str() : std::string("<pbrt>")) + ": the scene has no shapes and no lights");
     return std::move(out_);
   }
@@ -81,6 +106,10 @@ class Builder {
   }
 
   // ---- reporting
+  void report_unused(const std::vector<PbrtParam>& params) {
+    for (const PbrtParam& p : params)
+      if (!p.used) note(p.at, "\"" + p.type + " " + p.name + "\" is not used by pdrt (ignored)");
+  }
   void note(const PbrtLocation& at, const std::string& what) {
     std::string line = at.str() + ": " + what;
     if (strict_) throw InputError(line + " [--strict]");
@@ -289,7 +318,18 @@ class Builder {
       return;
     }
     if (n == "Attribute") {
-      note(d.at, "Attribute is not supported (ignored)");
+      const std::string& target = d.strings[0];
+      if (target == "medium") {
+        note(d.at, "Attribute \"medium\" is not supported: pdrt has no participating media (ignored)");
+      } else if (target != "shape" && target != "light" && target != "material" && target != "texture") {
+        fail(d.at, "Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got \"" + target + "\"");
+      } else {
+        std::vector<PbrtParam>& list = cur_.defaults[target];
+        for (const PbrtParam& p : d.params.list) {
+          std::erase_if(list, [&](const PbrtParam& q) { return q.name == p.name; });
+          list.push_back(p);
+        }
+      }
       for (const PbrtParam& p : d.params.list) p.used = true;
       return;
     }
@@ -799,16 +839,12 @@ class Builder {
       return;
     }
     if (t == "infinite") {
-      if (const PbrtParam* f = ps.find("filename")) {
-        f->used = true;
-        note(f->at, "environment images are not supported yet (the light is skipped)");
-        return;
-      }
-      if (!is_black(out_.scene.environment.radiance)) {
+      if (!is_black(out_.scene.environment.radiance) || out_.scene.environment.has_map()) {
         note(d.at, "a second infinite light is not supported (skipped)");
         for (const PbrtParam& p : ps.list) p.used = true;
         return;
       }
+      if (ps.find("filename")) return image_light(d, scale);
       Vec3 L = color(ps, "L", Vec3(1.0f), true) * scale;
       if (auto e = ps.find_float("illuminance")) {
         // Illuminance of the upper hemisphere: pi L (by luminance).
@@ -820,6 +856,52 @@ class Builder {
     }
     note(d.at, "LightSource \"" + t + "\" is not supported (skipped)");
     for (const PbrtParam& p : ps.list) p.used = true;
+  }
+
+  // An infinite light with an image: pbrt-v4's equal-area octahedral square, resampled into
+  // pdrt's equirectangular environment (equal_area_octahedral.h).
+  void image_light(const PbrtDirective& d, float scale) {
+    const PbrtParams& ps = d.params;
+    const PbrtParam& f = *ps.find("filename");
+    const std::string name = *ps.find_string("filename");
+    if (ps.find("L")) fail(ps.find("L")->at, "an infinite light takes \"L\" or \"filename\", not both");
+    const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+    const std::filesystem::path file = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : rel / name;
+    EnvironmentImage img;
+    std::string reason;
+    if (!read_environment_image(file, &img, &reason)) fail(f.at, "cannot read \"" + name + "\": " + reason);
+    if (img.width != img.height)
+      fail(f.at, "\"" + name + "\" is " + std::to_string(img.width) + " x " + std::to_string(img.height) +
+                     ": pbrt-v4's environment images are square (equal-area octahedral)");
+    for (float v : img.rgb)
+      if (!(std::isfinite(v) && v >= 0)) fail(f.at, "\"" + name + "\" holds a negative or non-finite value");
+    if (!cur_.ctm.t[0].affine()) fail(d.at, "the current transform is projective");
+    if (moving()) note(d.at, "a moving infinite light is not supported (its start orientation is used)");
+    const std::optional<Mat4> inv = cur_.ctm.t[0].inverse();
+    if (!inv) fail(d.at, "the current transform is singular");
+    double e_v = 0;
+    if (auto e = ps.find_float("illuminance")) {
+      // pbrt-v4: scale so the upper hemisphere (light space +z) gives illuminance e; every
+      // texel of the equal-area square subtends 4 pi / n^2.
+      double sum = 0;
+      const int n = img.width;
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const Vec3 w = equal_area_square_to_sphere((x + 0.5) / n, (y + 0.5) / n);
+          const float* p = &img.rgb[3 * (size_t(y) * size_t(n) + size_t(x))];
+          if (w.z > 0) sum += luminance(Vec3(p[0], p[1], p[2])) * w.z;
+        }
+      e_v = sum * 4 * kPiD / (double(n) * n);
+      if (e_v > 0) scale *= float(*e / e_v);
+    }
+    const Mat4 to_light = *inv;
+    EnvironmentImage eq = octahedral_to_equirect(img, [&](const Vec3& w) { return to_light.vector(w); });
+    EnvironmentDesc& env = out_.scene.environment;
+    env.file = file.string();
+    env.width = eq.width, env.height = eq.height;
+    env.rgb = std::move(eq.rgb);
+    env.scale = Vec3(scale);
+    env.resampled = true;
   }
 
   void shape(const PbrtDirective& d) {
@@ -870,7 +952,7 @@ class Builder {
       } else {
         P = ps.point3s("P");
         idx = ps.ints("indices");
-        N = ps.normal3s("N");
+        if (t != "loopsubdiv") N = ps.normal3s("N");
       }
       if (P.empty()) fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
       if (t == "trianglemesh" && idx.empty()) {
@@ -888,22 +970,30 @@ class Builder {
         idx = tri;
         note(d.at, "bilinear patches are split into two triangles each (exact only where they are planar)");
       }
-      if (t == "loopsubdiv") {
-        note(d.at, "Loop subdivision is not supported yet (the control mesh is used)");
-        ps.find_int("levels");
-      }
       if (idx.size() % 3) fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
       for (int64_t i : idx)
         if (i < 0 || uint64_t(i) >= P.size())
           fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
       for (const Vec3& p : P)
         if (!is_finite(p)) fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+      if (t == "loopsubdiv") {
+        const int64_t levels = ps.get_int("levels", 3);
+        if (levels < 0 || levels > 12) fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
+        MeshData m;
+        try {
+          m = loop_subdivide(P, std::vector<uint32_t>(idx.begin(), idx.end()), int(levels));
+        } catch (const InputError& e) {
+          fail(d.at, std::string("Shape \"loopsubdiv\": ") + e.what());
+        }
+        P = std::move(m.positions), N = std::move(m.normals);
+        idx.assign(m.indices.begin(), m.indices.end());
+      }
       const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
       if (!N.empty() && N.size() != P.size())
         fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(N.size()));
       for (Vec3& n : N)
         if (!(length(n) > 0) || !is_finite(n)) fail(n_at, "\"N\" holds a zero or non-finite normal");
-      if (t != "plymesh") uvs = ps.point2s("uv");
+      if (t != "plymesh" && t != "loopsubdiv") uvs = ps.point2s("uv");
       if (!uvs.empty() && uvs.size() != P.size())
         fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(uvs.size()));
       for (const char* k : {"S", "faceIndices"})
@@ -1014,6 +1104,16 @@ class Builder {
 PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict) {
   Builder b(strict);
   PbrtImport out = b.run(directives);
+  // pbrt's sphere has its pole on +z and its azimuth from +x toward +y; pdrt's has the pole on
+  // +y and the azimuth from +x toward +z. Swapping y and z in object space (a mirror, harmless
+  // to a sphere) gives every texel the direction pbrt gives it.
+  Affine swap_yz;
+  swap_yz.m = {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, 1, 0, 0}}};
+  for (ShapeDesc& s : out.scene.shapes)
+    if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
+  for (PrototypeDesc& p : out.scene.prototypes)
+    for (ShapeDesc& s : p.shapes)
+      if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
   // pbrt's fov spans the film's shorter side; pdrt's is vertical.
   FilmDesc& f = out.scene.film;
   const double half = std::tan(0.5 * b.fov() * kPiD / 180);

@@ -202,6 +202,26 @@ TEST(PbrtImport, BlackbodyAndSampledSpectraConvertToRgb) {
   EXPECT_NEAR(cie_xyz_bar(555).y, 1, 0.02);
 }
 
+TEST(PbrtImport, NamedIlluminantsConvertFromTheirChromaticities) {
+  // D65 is sRGB's white point: white at luminance 1. A is Planck's law at 2856 K.
+  expect_near(*named_illuminant_rgb("stdillum-D65"), Vec3(1.0f), 2e-3f, "D65");
+  expect_near(*named_illuminant_rgb("stdillum-A"), blackbody_rgb(2856), 0, "A");
+  const Vec3 d50 = *named_illuminant_rgb("stdillum-D50"), f4 = *named_illuminant_rgb("stdillum-F4");
+  EXPECT_GT(d50.x, d50.z);  // warmer than D65
+  EXPECT_GT(f4.x / f4.z, d50.x / d50.z);  // warm white fluorescent, warmer still
+  for (const char* n : {"stdillum-F1", "stdillum-F12", "illum-acesD60", "stdillum-D50"})
+    EXPECT_NEAR(luminance(*named_illuminant_rgb(n)), 1, 1e-3) << n;
+  EXPECT_FALSE(named_illuminant_rgb("stdillum-F13"));
+  EXPECT_FALSE(named_illuminant_rgb("metal-Au-eta"));
+  // Emission takes them; a reflectance does not (reported, default used).
+  PbrtImport im = import(std::string(kCamera) + "WorldBegin\nAreaLightSource \"diffuse\" \"spectrum L\" \"stdillum-D65\" \"float scale\" 2\n"
+                                                "Shape \"sphere\"\n");
+  expect_near(im.scene.materials[size_t(im.scene.shapes[0].material)].radiance, Vec3(2.0f), 4e-3f, "scaled D65 emitter");
+  PbrtImport r = import(std::string(kCamera) + "WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" \"stdillum-D65\"\nShape \"sphere\"\n");
+  ASSERT_EQ(r.report.size(), 1u);
+  EXPECT_NE(r.report[0].find("named spectrum \"stdillum-D65\" for \"reflectance\" is not supported"), std::string::npos);
+}
+
 TEST(PbrtImport, WhatPdrtCannotRepresentIsReportedWithItsPosition) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"

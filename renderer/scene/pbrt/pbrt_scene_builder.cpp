@@ -168,6 +168,8 @@ class Builder {
     }
     if (type == "spectrum") {
       if (!p->strings.empty()) {
+        if (emission)
+          if (std::optional<Vec3> c = named_illuminant_rgb(p->strings[0])) return *c;
         note(p->at, "named spectrum \"" + p->strings[0] + "\" for \"" + name + "\" is not supported (default used)");
         return fallback;
       }

@@ -72,4 +72,22 @@ Vec3 blackbody_rgb(double kelvin) {
   return xyz_to_linear_srgb(xyz / xyz.y);
 }
 
+std::optional<Vec3> named_illuminant_rgb(const std::string& name) {
+  if (name == "stdillum-A") return blackbody_rgb(2856);
+  struct Chromaticity {
+    const char* name;
+    double x, y;
+  };
+  // CIE 15:2004, Table T.3 (D series) and T.8 (F series); ACES D60 from SMPTE ST 2065-1.
+  static const Chromaticity kTable[] = {
+      {"stdillum-D50", 0.34567, 0.35850}, {"stdillum-D65", 0.31271, 0.32902}, {"illum-acesD60", 0.32168, 0.33767},
+      {"stdillum-F1", 0.31310, 0.33727},  {"stdillum-F2", 0.37208, 0.37529},  {"stdillum-F3", 0.40910, 0.39430},
+      {"stdillum-F4", 0.44018, 0.40329},  {"stdillum-F5", 0.31379, 0.34531},  {"stdillum-F6", 0.37790, 0.38835},
+      {"stdillum-F7", 0.31292, 0.32933},  {"stdillum-F8", 0.34588, 0.35875},  {"stdillum-F9", 0.37417, 0.37281},
+      {"stdillum-F10", 0.34609, 0.35986}, {"stdillum-F11", 0.38052, 0.37713}, {"stdillum-F12", 0.43695, 0.40441}};
+  for (const Chromaticity& c : kTable)
+    if (name == c.name) return xyz_to_linear_srgb(Vec3(float(c.x / c.y), 1.0f, float((1 - c.x - c.y) / c.y)));
+  return std::nullopt;
+}
+
 }  // namespace pdrt

@@ -4,6 +4,7 @@
 // Shirley's multi-lobe Gaussian fit (JCGT 2(2), 2013), within a few percent of the tables.
 #include "renderer/scene/vec3.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,10 @@ Vec3 sampled_spectrum_to_rgb(const std::vector<double>& nm_value_pairs, bool emi
 // Planck's law at `kelvin`, normalised to luminance Y = 1 (pbrt-v4 normalises blackbody
 // emitters the same way).
 Vec3 blackbody_rgb(double kelvin);
+
+// pbrt-v4's named illuminant spectra ("stdillum-A", "stdillum-D50", "stdillum-D65",
+// "stdillum-F1" ... "stdillum-F12", "illum-acesD60") at luminance Y = 1, from their CIE 1931
+// chromaticities (CIE 15:2004 tables; A is Planck's law at 2856 K); nullopt for other names.
+std::optional<Vec3> named_illuminant_rgb(const std::string& name);
 
 }  // namespace pdrt

@@ -1306,7 +1306,7 @@ TEST_F(SceneLoader, ExamplePrototypesAndInstances) {
   EXPECT_EQ(s.prototypes[0].name, "post");
   EXPECT_EQ(s.prototypes[0].shapes.size(), 2u);
   ASSERT_EQ(s.instances.size(), 2u);
-  expect_vec(s.instances[0].transform.point({0, 0, 0}), -2.5f, 0, 1.5f);
+  expect_vec(s.instances[0].transform.point({0, 0, 1}), -0.6f, 0, 1.5f);
   EXPECT_TRUE(s.instances[0].motion.empty());
   ASSERT_EQ(s.instances[1].motion.size(), 2u);
   EXPECT_FLOAT_EQ(s.instances[1].motion[1].scale.y, 1.2f);

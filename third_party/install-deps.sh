@@ -10,6 +10,7 @@ PACKAGES=(
   libtinyobjloader-dev
   libassimp-dev
   libosd-dev
+  openmpi-bin libopenmpi-dev
   libtbb-dev
   libfftw3-dev
   nlohmann-json3-dev

@@ -43,6 +43,7 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
   float alpha = std::max(kMinGgxAlpha, m.roughness * m.roughness);
   switch (m.type) {
     case MaterialType::Emitter:
+    case MaterialType::Mix:  // resolved to a component per hit (mix_material.h) before a Bsdf is built
       kind_ = Kind::Black;
       albedo_ = Vec3(0.0f);
       break;
@@ -84,6 +85,10 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
     case MaterialType::Mirror:
       kind_ = Kind::Mirror;
       break;
+    case MaterialType::ThinDielectric:
+      kind_ = Kind::ThinDielectric;
+      ior_ = m.ior;
+      break;
     case MaterialType::CoatedDiffuse:
       kind_ = Kind::Coated;
       coated_ = CoatedDiffuse(m);
@@ -122,7 +127,8 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
 }
 
 bool Bsdf::is_delta() const {
-  return kind_ == Kind::Mirror || kind_ == Kind::SmoothConductor || kind_ == Kind::SmoothDielectric;
+  return kind_ == Kind::Mirror || kind_ == Kind::SmoothConductor || kind_ == Kind::SmoothDielectric ||
+         kind_ == Kind::ThinDielectric;
 }
 bool Bsdf::scatters() const { return kind_ != Kind::Black; }
 Vec3 Bsdf::albedo() const { return albedo_; }
@@ -217,6 +223,8 @@ bool Bsdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out)
       return true;
     case Kind::SmoothDielectric:
       return sample_smooth_dielectric(wo, uc, out);
+    case Kind::ThinDielectric:
+      return sample_thin_dielectric(wo, uc, out);
     case Kind::RoughDielectric:
       return ms_ ? sample_compensated(wo, u1, u2, uc, out) : sample_rough_dielectric(wo, u1, u2, uc, out);
     case Kind::Coated:
@@ -336,6 +344,32 @@ bool Bsdf::sample_compensated(const Vec3& wo, float u1, float u2, float uc, Bsdf
   out->pdf = pdf(wo, out->wi);
   if (!(out->pdf > 0)) return false;
   out->weight = eval(wo, out->wi) * (std::abs(out->wi.z) / out->pdf);
+  return true;
+}
+
+double thin_dielectric_reflectance(double cos_i, double ior) {
+  const double r = fresnel_dielectric(cos_i, ior), t = 1 - r;
+  // The geometric series of inner bounces: each round trip reflects twice (R^2) and the light
+  // leaves through the first face (T); r = 1 (grazing) stays 1.
+  return r < 1 ? r + t * t * r / (1 - r * r) : 1.0;
+}
+
+bool Bsdf::sample_thin_dielectric(Vec3 wo, float uc, BsdfSample* out) const {
+  if (wo.z == 0) return false;
+  const double r = thin_dielectric_reflectance(std::abs(wo.z), ior_);
+  out->delta = true;
+  if (uc < r) {
+    out->wi = mirror_z(wo);
+    out->pdf = float(r);
+    out->weight = Vec3(1.0f);  // R' with probability R'
+    return true;
+  }
+  // Straight through: both faces refract by inverse amounts, so the direction and the
+  // radiance (no 1/eta^2) are unchanged.
+  out->wi = -wo;
+  out->pdf = float(1 - r);
+  out->transmission = true;
+  out->weight = albedo_;
   return true;
 }
 

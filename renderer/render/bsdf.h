@@ -13,6 +13,11 @@
 //   Mirror      delta reflection weighted by Schlick Fresnel with F0 = albedo.
 //   Dielectric  roughness 0: delta reflection / refraction chosen by exact Fresnel; otherwise
 //               Walter et al. 2007 GGX. Reflection is white, transmission tinted by albedo.
+//   ThinDielectric  pbrt-v4's ThinDielectricBxDF: a slab so thin that light leaves where it
+//               entered. Both faces' Fresnel reflectance R and all inner bounces sum to
+//               R' = R + T^2 R / (1 - R^2), T' = 1 - R' (T = 1 - R): delta reflection, or delta
+//               transmission straight through (wi = -wo, no refraction, no 1/eta^2), tinted by
+//               albedo as the dielectric's transmission is. Two-sided: wo.z < 0 works the same.
 //   CoatedDiffuse  Lambert base (albedo) under a smooth (delta) or GGX-rough dielectric coat,
 //               optionally absorbing (coated_diffuse.h): Weidlich & Wilkie 2007's layered
 //               model on the coat's albedo, energy conserving and reciprocal. A smooth coat is
@@ -44,7 +49,7 @@ struct BsdfSample {
 
 class Bsdf {
  public:
-  explicit Bsdf(const Material& m);  // Emitter material -> a black, non-scattering BSDF
+  explicit Bsdf(const Material& m);  // Emitter (and unresolved Mix) material -> a black, non-scattering BSDF
 
   Vec3 eval(const Vec3& wo, const Vec3& wi) const;  // f(wo, wi), without the cosine; 0 for delta lobes
   float pdf(const Vec3& wo, const Vec3& wi) const;  // solid-angle pdf that sample() produces wi (non-delta part)
@@ -52,12 +57,14 @@ class Bsdf {
   // False when no direction is produced (below the horizon, wo grazing, non-scattering).
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
 
-  bool is_delta() const;  // every lobe is a delta (mirror, conductor or dielectric with roughness 0)
+  bool is_delta() const;  // every lobe is a delta (mirror, conductor or dielectric with roughness 0, thin dielectric)
   bool scatters() const;  // false for emitters
   Vec3 albedo() const;    // for the albedo AOV
 
  private:
-  enum class Kind { Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric, Coated };
+  enum class Kind {
+    Black, Lambert, Ggx, Phong, Mirror, SmoothConductor, SmoothDielectric, RoughDielectric, Coated, ThinDielectric
+  };
 
   Vec3 fresnel_ggx(float cos_i) const;  // Schlick with F0 = albedo, or the exact conductor Fresnel
   Vec3 eval_ggx(const Vec3& wo, const Vec3& wi) const;
@@ -67,6 +74,7 @@ class Bsdf {
   float pdf_rough_dielectric(Vec3 wo, Vec3 wi) const;
   bool sample_rough_dielectric(Vec3 wo, float u1, float u2, float uc, BsdfSample* out) const;
   bool sample_smooth_dielectric(Vec3 wo, float uc, BsdfSample* out) const;
+  bool sample_thin_dielectric(Vec3 wo, float uc, BsdfSample* out) const;
 
   // Multiple-scattering compensation (ms_ on): side 0 is wo.z > 0, 1 below (dielectrics only).
   float ms_albedo(float mu, int side) const;       // E of the single-scattering lobe
@@ -93,6 +101,11 @@ class Bsdf {
   float reflect_[2] = {1, 1};  // dielectric: reflected fraction of the compensation lobe per side
   CoatedDiffuse coated_;       // Kind::Coated
 };
+
+// A thin dielectric slab's reflectance at |cos| = cos_i (pbrt-v4 §9.5.1): the first face's
+// Fresnel R plus everything the inner bounces send back, R + T^2 R / (1 - R^2). Its
+// transmittance is 1 minus this.
+double thin_dielectric_reflectance(double cos_i, double ior);
 
 // Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.
 inline constexpr float kMinGgxAlpha = 1e-3f;

@@ -1,5 +1,7 @@
 #include "renderer/render/path_integrator.h"
 
+#include "renderer/render/mix_material.h"
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -64,15 +66,26 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
-    const int mi = scene_.material(hit.shape);
-    const Material& mat = scene_.desc().materials[mi];
+    const std::vector<Material>& materials = scene_.desc().materials;
+    const Vec3 wo_world = -ray.dir;
+    bool have_coords = false;
+    int mi = scene_.material(hit.shape);  // a prototype's shape inside an instance
+    if (materials[size_t(mi)].type == MaterialType::Mix) {
+      // pbrt-v4's MixMaterial: this hit shades with one component (mix_material.h).
+      mi = resolve_mix(materials, mi, hit.p, wo_world, [&](int k) {
+        const Material& m = materials[size_t(k)];
+        if (m.textures.empty()) return m.amount;
+        if (!have_coords) scene_.texture_coords(&hit, time), have_coords = true;
+        return textures_.apply(bare_[size_t(k)], m.textures, footprint_.at(hit)).amount;
+      });
+    }
+    const Material& mat = materials[size_t(mi)];
     std::optional<Bsdf> textured;
     if (!mat.textures.empty()) {
-      scene_.texture_coords(&hit, time);
+      if (!have_coords) scene_.texture_coords(&hit, time);
       textured.emplace(textures_.apply(bare_[mi], mat.textures, footprint_.at(hit)));
     }
     const Bsdf& bsdf = textured ? *textured : bsdfs_[mi];
-    const Vec3 wo_world = -ray.dir;
     if (depth == 0) {
       res.albedo = bsdf.albedo();
       res.normal = hit.ns;
@@ -125,8 +138,9 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     auto u = ps.get_2d(Family::Gloss, depth);
     if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs)) break;
     Vec3 wi_world = frame.to_world(bs.wi);
-    // Reflection must leave on the front of the geometric surface, transmission behind it.
-    if (!dielectric && dot(wi_world, ng) <= 0) break;
+    // Reflection must leave on the front of the geometric surface, transmission behind it
+    // (a thin dielectric's straight-through transmission; a dielectric's side is its own).
+    if (!dielectric && (bs.transmission ? dot(wi_world, ng) >= 0 : dot(wi_world, ng) <= 0)) break;
     beta *= bs.weight;
     if (is_black(beta) || !is_finite(beta)) break;
     prev_pdf = bs.pdf;

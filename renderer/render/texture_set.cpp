@@ -87,9 +87,14 @@ Vec3 TextureSet::lookup_image(const TextureDesc& t, int texture, const TextureCo
   return {rgb[0], rgb[1], rgb[2]};
 }
 
+Vec3 TextureSet::input(const TextureInput& in, const TextureCoords& tc) const {
+  return in.texture < 0 ? in.value : eval(in.texture, tc);
+}
+
 Vec3 TextureSet::eval(int texture, const TextureCoords& tc) const {
-  // A checkerboard picks one input, so evaluation is a walk down the (acyclic) graph: a loop,
-  // however long the chain.
+  // A checkerboard picks one input, so it is a walk down the (acyclic) graph: a loop, however
+  // long the chain. Scale, mix, invert and power recurse; the loaders bound how many such
+  // nodes one evaluation visits (kMaxTextureEvaluation), and with it the recursion depth.
   for (;;) {
     const TextureDesc& t = textures_[size_t(texture)];
     switch (t.kind) {
@@ -105,6 +110,21 @@ Vec3 TextureSet::eval(int texture, const TextureCoords& tc) const {
         if (in.texture < 0) return in.value;
         texture = in.texture;
         break;
+      }
+      case TextureDesc::Kind::Scale:  // pbrt-v4's ScaleTexture
+        return input(t.tex, tc) * input(t.scale, tc);
+      case TextureDesc::Kind::Mix: {  // pbrt-v4's MixTexture: amount is a float texture
+        const float a = input(t.amount, tc).x;
+        return input(t.tex1, tc) * (1 - a) + input(t.tex2, tc) * a;
+      }
+      case TextureDesc::Kind::Invert: {  // pbrt-v4's imagemap "invert": ClampZero(1 - x)
+        const Vec3 x = input(t.tex, tc);
+        return {std::max(0.0f, 1 - x.x), std::max(0.0f, 1 - x.y), std::max(0.0f, 1 - x.z)};
+      }
+      case TextureDesc::Kind::Power: {
+        const Vec3 x = input(t.tex, tc);
+        auto p = [&](float c) { return c > 0 ? std::pow(c, t.exponent) : 0.0f; };  // NaN -> 0
+        return {p(x.x), p(x.y), p(x.z)};
       }
     }
   }
@@ -125,6 +145,12 @@ Material TextureSet::apply(Material out, const std::vector<TextureBinding>& bind
         break;
       case MaterialParam::Radiance:
         out.radiance = emission(out.radiance, x);
+        break;
+      case MaterialParam::Amount:
+        out.amount = unit(x.x);
+        break;
+      case MaterialParam::Reflectance:
+        conductor_from_reflectance(Vec3(unit(x.x), unit(x.y), unit(x.z)), &out);
         break;
     }
   }

@@ -5,8 +5,10 @@
 //                 color0 where floor(u su) + floor(v sv) is even, else color1
 //   image         OpenImageIO's TextureSystem inside the image module (image_module_abi.h),
 //                 on a linear-float MIP-mapped copy; filter none = the nearest texel
+//   scale, mix, invert, power   per channel from their inputs (texture_desc.h)
 // Material parameters bound to textures (Material::textures) are overridden per hit: colours
-// clamped to [0, 1] per channel, scalars (roughness) the first channel clamped to [0, 1];
+// clamped to [0, 1] per channel, scalars (roughness, a mix's amount) the first channel clamped
+// to [0, 1]; a conductor's reflectance sets eta and k (conductor_from_reflectance);
 // NaN becomes 0. Thread-safe after construction.
 #include "renderer/render/texture_footprint.h"
 #include "renderer/scene/scene_desc.h"
@@ -35,6 +37,7 @@ class TextureSet {
   Material apply(Material m, const std::vector<TextureBinding>& bindings, const TextureCoords& tc) const;
 
  private:
+  Vec3 input(const TextureInput& in, const TextureCoords& tc) const;
   Vec3 lookup_image(const TextureDesc& t, int texture, const TextureCoords& tc) const;
 
   std::vector<TextureDesc> textures_;

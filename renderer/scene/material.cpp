@@ -1,5 +1,8 @@
 #include "renderer/scene/material.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pdrt {
 namespace {
 
@@ -26,6 +29,14 @@ const NamedMetal* find_named_metal(const std::string& name) {
   for (const NamedMetal& m : kMetals)
     if (name == m.name) return &m;
   return nullptr;
+}
+
+void conductor_from_reflectance(const Vec3& r, Material* m) {
+  m->eta = Vec3(1.0f);
+  for (int c = 0; c < 3; ++c) {
+    const float rc = r[c] >= 0 ? std::min(r[c], 0.9999f) : 0.0f;  // NaN -> 0
+    m->k[c] = 2 * std::sqrt(rc) / std::sqrt(1 - rc);
+  }
 }
 
 std::string named_metal_list() {

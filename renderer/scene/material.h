@@ -8,13 +8,15 @@
 
 namespace pdrt {
 
-enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Conductor, CoatedDiffuse };
+enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Conductor, CoatedDiffuse, ThinDielectric, Mix };
 enum class GlossLobe { GGX, Phong };
 
 // The material parameters a texture may drive (render/texture_set.h writes them per hit).
 // Colours take the texture's RGB; scalars its first channel. A new textured parameter is one
 // entry here, one case in TextureSet::apply and one textured_* call in the loader.
-enum class MaterialParam { Albedo, Roughness, CoatColor, Radiance };
+// Amount: a mix's probability of its second material. Reflectance: a conductor's normal-incidence
+// reflectance, which sets eta = 1 and k from it (pbrt-v4's ConductorMaterial "reflectance").
+enum class MaterialParam { Albedo, Roughness, CoatColor, Radiance, Amount, Reflectance };
 struct TextureBinding {
   MaterialParam param;
   int texture;  // index into SceneDesc::textures
@@ -37,7 +39,15 @@ struct Material {
   bool two_sided = false;  // emitters: emit from both faces (default: front face only)
   bool energy_compensation = true;  // GGX glossy, rough conductor and rough dielectric: add the multiple-scattering lobe
   std::vector<TextureBinding> textures;  // parameters given by a texture (empty: constant material)
+  // Mix: its two materials (indices into SceneDesc::materials, never emitters) and the
+  // probability of choosing mix[1] at a hit (render/mix_material.h).
+  int mix[2] = {-1, -1};
+  float amount = 0.5f;
 };
+
+// A conductor of normal-incidence reflectance r (per channel, clamped below 1): eta = 1 and
+// k = 2 sqrt(r) / sqrt(1 - r), as pbrt-v4's ConductorMaterial does with "reflectance".
+void conductor_from_reflectance(const Vec3& r, Material* m);
 
 // Measured complex indices of named metals at 650, 550 and 450 nm (R, G, B): material.cpp.
 struct NamedMetal {

@@ -38,6 +38,9 @@ class SceneParser {
   void integrator(const JsonObject& o);
   void textures(const JsonNode& n);
   TextureInput texture_input(const JsonNode& n, int from);
+  // A scale or mix texture's input: a number or [r, g, b] (components >= 0), or a texture's name.
+  TextureInput texture_input_non_negative(const JsonNode& n, int from);
+  void mix_materials(const std::vector<std::pair<int, JsonNode>>& mixes);
   int texture_named(const JsonNode& n) const;
   // A material parameter that is a value or the name of a texture (docs/scene-format.md,
   // "textures"): a value goes to `field`, a name to m.textures. One call per parameter.
@@ -264,6 +267,13 @@ TextureInput SceneParser::texture_input(const JsonNode& n, int from) {
   return in;
 }
 
+TextureInput SceneParser::texture_input_non_negative(const JsonNode& n, int from) {
+  if (n.value().is_string()) return texture_input(n, from);
+  TextureInput in;
+  in.value = n.value().is_number() ? Vec3(n.non_negative()) : n.radiance();
+  return in;
+}
+
 void SceneParser::textures(const JsonNode& n) {
   JsonObject all = n.object();
   // Names first: a texture may use one defined after it.
@@ -287,8 +297,31 @@ void SceneParser::textures(const JsonNode& n) {
         t.scale_u = sn.at(0).positive(), t.scale_v = sn.at(1).positive();
       }
     };
-    std::string type = o.require("type").choice({"constant", "checkerboard", "image"});
-    if (type == "constant") {
+    std::string type = o.require("type").choice({"constant", "checkerboard", "image", "scale", "mix", "invert", "power"});
+    if (type == "scale") {
+      o.allow({"type", "tex", "scale"});
+      t.kind = TextureDesc::Kind::Scale;
+      t.tex = texture_input_non_negative(o.require("tex"), self);
+      if (auto x = o.get("scale")) t.scale = texture_input_non_negative(*x, self);
+    } else if (type == "mix") {
+      o.allow({"type", "tex1", "tex2", "amount"});
+      t.kind = TextureDesc::Kind::Mix;
+      if (auto x = o.get("tex1")) t.tex1 = texture_input_non_negative(*x, self);
+      if (auto x = o.get("tex2")) t.tex2 = texture_input_non_negative(*x, self);
+      if (auto x = o.get("amount")) {
+        if (x->value().is_string()) {
+          t.amount = texture_input(*x, self);
+        } else {
+          t.amount.value = Vec3(x->in_unit_interval());
+        }
+      }
+    } else if (type == "invert" || type == "power") {
+      o.allow(type == "invert" ? std::initializer_list<const char*>{"type", "tex"}
+                               : std::initializer_list<const char*>{"type", "tex", "exponent"});
+      t.kind = type == "invert" ? TextureDesc::Kind::Invert : TextureDesc::Kind::Power;
+      t.tex = texture_input_non_negative(o.require("tex"), self);
+      if (type == "power") t.exponent = o.require("exponent").positive();
+    } else if (type == "constant") {
       o.allow({"type", "value"});
       t.kind = TextureDesc::Kind::Constant;
       JsonNode v = o.require("value");
@@ -331,6 +364,7 @@ void SceneParser::textures(const JsonNode& n) {
   // No cycles (a checkerboard of itself would recurse forever while rendering). Iterative
   // depth-first search: a chain of many textures must not overflow the stack here either.
   std::vector<int> state(scene_.textures.size(), 0);  // 0 new, 1 on the path, 2 done
+  std::vector<int> order;                              // finished: every input before its users
   for (size_t root = 0; root < state.size(); ++root) {
     if (state[root]) continue;
     std::vector<std::pair<int, size_t>> stack{{int(root), 0}};  // (texture, next edge)
@@ -340,6 +374,7 @@ void SceneParser::textures(const JsonNode& n) {
       const auto& refs = texture_refs_[size_t(t)];
       if (e == refs.size()) {
         state[size_t(t)] = 2;
+        order.push_back(t);
         stack.pop_back();
         continue;
       }
@@ -352,6 +387,14 @@ void SceneParser::textures(const JsonNode& n) {
       if (state[size_t(to)] == 0) state[size_t(to)] = 1, stack.push_back({to, 0});
     }
   }
+  // Bounded work per lookup (kMaxTextureEvaluation), computed inputs first: in the order the
+  // search above finished the textures.
+  const std::vector<long long> cost = texture_evaluation_cost(scene_.textures, order);
+  for (size_t i = 0; i < cost.size(); ++i)
+    if (cost[i] > kMaxTextureEvaluation)
+      all.child(scene_.textures[i].name).fail("evaluates " + (cost[i] >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost[i])) +
+                                             " scale/mix/invert/power nodes per lookup (at most " +
+                                             std::to_string(kMaxTextureEvaluation) + ")");
 }
 
 void SceneParser::textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const {
@@ -372,14 +415,15 @@ void SceneParser::textured_unit(const JsonNode& n, Material& m, MaterialParam p,
 
 void SceneParser::materials(const JsonNode& n) {
   JsonObject all = n.object();
+  std::vector<std::pair<int, JsonNode>> mixes;  // (material, its "materials" array), resolved after all names
   for (auto it = n.value().begin(); it != n.value().end(); ++it) {
     JsonNode mn = all.child(it.key());
     if (it.key().empty()) mn.fail_key("material name must not be empty");
     JsonObject o = mn.object();
     Material m;
     m.name = it.key();
-    std::string type =
-        o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor", "coated_diffuse"});
+    std::string type = o.require("type").choice(
+        {"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor", "coated_diffuse", "thin_dielectric", "mix"});
     if (type == "diffuse") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Diffuse;
@@ -420,13 +464,32 @@ void SceneParser::materials(const JsonNode& n) {
       if (auto x = o.get("ior")) m.ior = x->positive();
       if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
+    } else if (type == "thin_dielectric") {
+      o.allow({"type", "albedo", "ior"});
+      m.type = MaterialType::ThinDielectric;
+      m.albedo = Vec3(1.0f);
+      if (auto x = o.get("ior")) m.ior = x->positive();
+    } else if (type == "mix") {
+      o.allow({"type", "materials", "amount"});
+      m.type = MaterialType::Mix;
+      JsonNode names = o.require("materials");
+      if (!names.value().is_array() || names.value().size() != 2) names.fail_got("must be [\"first\", \"second\"] (two material names)");
+      names.at(0).string(), names.at(1).string();
+      mixes.push_back({int(scene_.materials.size()), names});
+      if (auto x = o.get("amount")) textured_unit(*x, m, MaterialParam::Amount, m.amount);
     } else if (type == "conductor") {
-      o.allow({"type", "eta", "k", "metal", "roughness", "energy_compensation"});
+      o.allow({"type", "eta", "k", "metal", "reflectance", "roughness", "energy_compensation"});
       m.type = MaterialType::Conductor;
       m.albedo = Vec3(1.0f);
-      auto metal = o.get("metal"), eta = o.get("eta"), k = o.get("k");
+      auto metal = o.get("metal"), eta = o.get("eta"), k = o.get("k"), refl = o.get("reflectance");
       if (metal && (eta || k)) (eta ? eta : k)->fail_key("cannot be combined with metal: give metal or eta and k");
-      if (metal) {
+      if (refl && (metal || eta || k)) refl->fail_key("cannot be combined with metal, eta or k: give one of them");
+      if (refl) {
+        // pbrt-v4's conductor by reflectance: eta = 1, k from the normal-incidence reflectance.
+        Vec3 r{0.0f};
+        textured_color(*refl, m, MaterialParam::Reflectance, r);
+        conductor_from_reflectance(r, &m);
+      } else if (metal) {
         const NamedMetal* nm = find_named_metal(metal->string());
         if (!nm) metal->fail_got("must be one of " + named_metal_list());
         m.eta = nm->eta, m.k = nm->k;
@@ -474,6 +537,49 @@ void SceneParser::materials(const JsonNode& n) {
     if (auto a = o.get("albedo")) textured_color(*a, m, MaterialParam::Albedo, m.albedo);
     material_index_[m.name] = int(scene_.materials.size());
     scene_.materials.push_back(std::move(m));
+  }
+  mix_materials(mixes);
+}
+
+// A mix's two materials, by name (any material of the file, before or after it): none an
+// emitter (a mix chooses how a surface scatters; lights are whole materials), and no mix
+// reaching itself through others (resolving it would never end).
+void SceneParser::mix_materials(const std::vector<std::pair<int, JsonNode>>& mixes) {
+  for (const auto& [index, names] : mixes) {
+    Material& m = scene_.materials[size_t(index)];
+    for (size_t i = 0; i < 2; ++i) {
+      const JsonNode n = names.at(i);
+      const int c = material_named(n);
+      if (scene_.materials[size_t(c)].type == MaterialType::Emitter)
+        n.fail("names the emitter " + json_quoted(n.string()) + ": a mix's materials must not emit");
+      m.mix[i] = c;
+    }
+  }
+  // Every mix reaches only finitely many mixes: follow the first-found unvisited edges.
+  std::vector<int> state(scene_.materials.size(), 0);  // 0 new, 1 on the path, 2 done
+  std::map<int, JsonNode> where;
+  for (const auto& [index, names] : mixes) where.emplace(index, names);
+  for (const auto& [root, root_names] : mixes) {
+    if (state[size_t(root)]) continue;
+    std::vector<std::pair<int, int>> stack{{root, 0}};  // (mix, next component)
+    state[size_t(root)] = 1;
+    while (!stack.empty()) {
+      auto& [mi, e] = stack.back();
+      if (e == 2) {
+        state[size_t(mi)] = 2;
+        stack.pop_back();
+        continue;
+      }
+      const int to = scene_.materials[size_t(mi)].mix[e];
+      const JsonNode at = where.at(mi).at(size_t(e++));
+      if (scene_.materials[size_t(to)].type != MaterialType::Mix) continue;
+      if (state[size_t(to)] == 1) {
+        std::string path;
+        for (const auto& [k, unused] : stack) path += json_quoted(scene_.materials[size_t(k)].name) + " -> ";
+        at.fail("makes a cycle of mix materials: " + path + json_quoted(scene_.materials[size_t(to)].name));
+      }
+      if (state[size_t(to)] == 0) state[size_t(to)] = 1, stack.push_back({to, 0});
+    }
   }
 }
 

@@ -131,6 +131,13 @@ ojson material(const Material& m) {
     case MaterialType::Emitter:
       j = {{"type", "emitter"}, {"radiance", vec(m.radiance)}, {"two_sided", m.two_sided}};
       break;
+    case MaterialType::ThinDielectric:
+      j = {{"type", "thin_dielectric"}, {"albedo", vec(unit(m.albedo))}, {"ior", m.ior}};
+      break;
+    case MaterialType::Mix:
+      j = {{"type", "mix"}, {"materials", ojson::array({numbered('m', size_t(m.mix[0])), numbered('m', size_t(m.mix[1]))})},
+           {"amount", std::clamp(m.amount, 0.0f, 1.0f)}};
+      break;
   }
   for (const TextureBinding& b : m.textures) {
     switch (b.param) {
@@ -140,6 +147,11 @@ ojson material(const Material& m) {
       case MaterialParam::Radiance:
         j["radiance"] = texture_name(b.texture);
         j["scale"] = vec(m.radiance);
+        break;
+      case MaterialParam::Amount: j["amount"] = texture_name(b.texture); break;
+      case MaterialParam::Reflectance:
+        j.erase("eta"), j.erase("k");  // the loader takes reflectance instead of them
+        j["reflectance"] = texture_name(b.texture);
         break;
     }
   }
@@ -234,10 +246,19 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
       } else if (t.kind == TextureDesc::Kind::Checkerboard) {
         o = {{"type", "checkerboard"}, {"scale", ojson::array({t.scale_u, t.scale_v})},
              {"color0", texture_input(t.color0)}, {"color1", texture_input(t.color1)}};
-      } else {
+      } else if (t.kind == TextureDesc::Kind::Image) {
         o = {{"type", "image"}, {"file", fs::absolute(t.file).string()}, {"filter", filter_name(t.filter)},
              {"wrap", wrap_name(t.wrap)}, {"encoding", encoding_name(t.encoding)},
              {"scale", ojson::array({t.scale_u, t.scale_v})}};
+      } else if (t.kind == TextureDesc::Kind::Scale) {
+        o = {{"type", "scale"}, {"tex", texture_input(t.tex)}, {"scale", texture_input(t.scale)}};
+      } else if (t.kind == TextureDesc::Kind::Mix) {
+        o = {{"type", "mix"}, {"tex1", texture_input(t.tex1)}, {"tex2", texture_input(t.tex2)}};
+        o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture)) : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
+      } else if (t.kind == TextureDesc::Kind::Invert) {
+        o = {{"type", "invert"}, {"tex", texture_input(t.tex)}};
+      } else {
+        o = {{"type", "power"}, {"tex", texture_input(t.tex)}, {"exponent", t.exponent}};
       }
       tx[texture_name(int(i))] = o;
     }

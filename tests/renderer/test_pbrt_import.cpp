@@ -712,3 +712,201 @@ TEST(PbrtImport, ActiveTransformRendersTheStreakOfTheJsonMotionKeys) {
   EXPECT_GT(mean, 0);
   EXPECT_LT(diff, 1e-3 * mean);
 }
+
+TEST(PbrtImport, ThinDielectricAndMixMaterialsMapOntoPdrts) {
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\n"
+                         "MakeNamedMaterial \"a\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.2 0.2 0.2]\n"
+                         "MakeNamedMaterial \"b\" \"string type\" \"thindielectric\" \"float eta\" 1.33\n"
+                         "Material \"mix\" \"string materials\" [\"a\" \"b\"] \"float amount\" 0.3\n"
+                         "Shape \"sphere\"\n"
+                         "Texture \"amt\" \"float\" \"constant\" \"float value\" 0.25\n"
+                         "MakeNamedMaterial \"c\" \"string type\" \"mix\" \"string materials\" [\"b\" \"a\"] \"texture amount\" \"amt\"\n"
+                         "Material \"mix\" \"string materials\" [\"c\" \"a\"] \"float amount\" 7\n"
+                         "Shape \"sphere\"\n");
+  EXPECT_TRUE(im.report.empty()) << im.report[0];
+  const auto& ms = im.scene.materials;
+  EXPECT_EQ(ms[1].type, MaterialType::ThinDielectric);
+  EXPECT_FLOAT_EQ(ms[1].ior, 1.33f);
+  const Material& m0 = ms[im.scene.shapes[0].material];
+  EXPECT_EQ(m0.type, MaterialType::Mix);
+  EXPECT_EQ(m0.mix[0], 0);
+  EXPECT_EQ(m0.mix[1], 1);
+  EXPECT_FLOAT_EQ(m0.amount, 0.3f);
+  const Material& m1 = ms[im.scene.shapes[1].material];
+  EXPECT_FLOAT_EQ(m1.amount, 1.0f);  // pbrt-v4 chooses the second outright for amount >= 1
+  const Material& c = ms[size_t(m1.mix[0])];
+  EXPECT_EQ(c.type, MaterialType::Mix);  // a mix of a mix
+  ASSERT_EQ(c.textures.size(), 1u);
+  EXPECT_EQ(c.textures[0], (TextureBinding{MaterialParam::Amount, 0}));
+  const std::string w = std::string(kCamera) + "WorldBegin\nMakeNamedMaterial \"a\" \"string type\" \"diffuse\"\n";
+  EXPECT_EQ(import_error(w + "Material \"mix\" \"string materials\" [\"a\" \"nope\"]\nShape \"sphere\"\n"),
+            "s.pbrt:5:16: unknown named material \"nope\" in \"materials\"");
+  EXPECT_EQ(import_error(w + "Material \"mix\" \"string materials\" [\"a\"]\nShape \"sphere\"\n"),
+            "s.pbrt:5:16: a \"mix\" material needs \"string materials\" with two named materials");
+  EXPECT_EQ(import_error(w + "Material \"mix\"\nShape \"sphere\"\n"),
+            "s.pbrt:5:1: a \"mix\" material needs \"string materials\" with two named materials");
+}
+
+TEST(PbrtImport, RoughnessAndReflectanceTexturesBindThroughTheRemap) {
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\n"
+                         "Texture \"r\" \"float\" \"constant\" \"float value\" 0.0625\n"
+                         "Texture \"f0\" \"spectrum\" \"constant\" \"rgb value\" [0.9 0.5 0.1]\n"
+                         "Material \"conductor\" \"texture roughness\" \"r\" \"texture reflectance\" \"f0\"\n"
+                         "Shape \"sphere\"\n"
+                         "Material \"dielectric\" \"texture roughness\" \"r\" \"bool remaproughness\" false\n"
+                         "Shape \"sphere\"\n"
+                         "Material \"coateddiffuse\" \"texture uroughness\" \"r\" \"float vroughness\" 0.25\n"
+                         "Shape \"sphere\"\n");
+  const auto& tx = im.scene.textures;
+  auto mat = [&](int i) { return im.scene.materials[im.scene.shapes[i].material]; };
+  // Conductor: roughness through power 1/4 (alpha = sqrt(r), pdrt roughness = sqrt(alpha)).
+  const Material c = mat(0);
+  ASSERT_EQ(c.textures.size(), 2u);
+  EXPECT_EQ(c.textures[0].param, MaterialParam::Roughness);
+  const TextureDesc& p = tx[size_t(c.textures[0].texture)];
+  EXPECT_EQ(p.kind, TextureDesc::Kind::Power);
+  EXPECT_EQ(p.exponent, 0.25f);
+  EXPECT_EQ(p.tex.texture, 0);
+  EXPECT_EQ(c.textures[1], (TextureBinding{MaterialParam::Reflectance, 1}));
+  // Dielectric without remapping: roughness is alpha, pdrt roughness sqrt(alpha).
+  const TextureDesc& q = tx[size_t(mat(1).textures.at(0).texture)];
+  EXPECT_EQ(q.kind, TextureDesc::Kind::Power);
+  EXPECT_EQ(q.exponent, 0.5f);
+  // Anisotropic: the mean of uroughness and vroughness (a mix by 1/2), then the remap; reported.
+  const TextureDesc& a = tx[size_t(mat(2).textures.at(0).texture)];
+  ASSERT_EQ(a.kind, TextureDesc::Kind::Power);
+  const TextureDesc& mean = tx[size_t(a.tex.texture)];
+  EXPECT_EQ(mean.kind, TextureDesc::Kind::Mix);
+  EXPECT_EQ(mean.tex1.texture, 0);
+  EXPECT_EQ(mean.tex2.value.x, 0.25f);
+  EXPECT_EQ(mean.amount.value.x, 0.5f);
+  ASSERT_EQ(im.report.size(), 1u);
+  EXPECT_NE(im.report[0].find("s.pbrt:10:1: anisotropic roughness"), std::string::npos) << im.report[0];
+}
+
+TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {
+  const std::filesystem::path dir = ply_dir();
+  write_file(dir / "wood.png", "not read while loading");
+  write_file(dir / "s.pbrt", std::string(kCamera) +
+                                 "WorldBegin\n"
+                                 "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.1 0.2 0.3]\n"
+                                 "Texture \"f\" \"float\" \"constant\" \"float value\" 0.4\n"
+                                 "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 2\n"
+                                 "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"s\" \"rgb tex2\" [1 1 1] \"texture amount\" \"f\"\n"
+                                 "Texture \"img\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"float scale\" 0.5 \"bool invert\" true\n"
+                                 "Texture \"inv\" \"float\" \"imagemap\" \"string filename\" \"wood.png\" \"bool invert\" true\n"
+                                 "Material \"diffuse\" \"texture reflectance\" \"m\"\n"
+                                 "Shape \"sphere\"\n"
+                                 "Material \"diffuse\" \"texture reflectance\" \"img\"\n"
+                                 "Shape \"sphere\"\n");
+  PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
+  EXPECT_TRUE(im.report.empty()) << im.report[0];
+  const auto& tx = im.scene.textures;
+  ASSERT_EQ(tx.size(), 9u);  // c, f, s, m, img's image, scale and invert, inv's image and invert
+  EXPECT_EQ(tx[2].kind, TextureDesc::Kind::Scale);
+  EXPECT_EQ(tx[2].tex.texture, 0);
+  EXPECT_EQ(tx[2].scale.value.x, 2.0f);
+  EXPECT_EQ(tx[3].kind, TextureDesc::Kind::Mix);
+  EXPECT_EQ(tx[3].tex1.texture, 2);
+  EXPECT_EQ(tx[3].tex2.value.y, 1.0f);
+  EXPECT_EQ(tx[3].amount.texture, 1);
+  EXPECT_EQ(tx[4].kind, TextureDesc::Kind::Image);
+  EXPECT_EQ(tx[5].kind, TextureDesc::Kind::Scale);  // pbrt-v4: invert(scale x)
+  EXPECT_EQ(tx[5].tex.texture, 4);
+  EXPECT_EQ(tx[5].scale.value.x, 0.5f);
+  EXPECT_EQ(tx[6].kind, TextureDesc::Kind::Invert);
+  EXPECT_EQ(tx[6].tex.texture, 5);
+  EXPECT_EQ(tx[6].name, "img");
+  EXPECT_EQ(tx[8].kind, TextureDesc::Kind::Invert);  // invert alone: no scale node
+  EXPECT_EQ(tx[8].tex.texture, 7);
+  EXPECT_EQ(im.scene.materials[im.scene.shapes[0].material].textures[0].texture, 3);
+  EXPECT_EQ(im.scene.materials[im.scene.shapes[1].material].textures[0].texture, 6);
+  write_file(dir / "t.pbrt", std::string(kCamera) + "WorldBegin\nTexture \"s\" \"float\" \"scale\" \"float scale\" -1\nShape \"sphere\"\n");
+  try {
+    load_pbrt_scene(dir / "t.pbrt", false);
+    ADD_FAILURE() << "negative scale accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir / "t.pbrt").string() + ":4:29: \"scale\" must be >= 0, got -1");
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The new materials and the roughness remap render what their JSON equivalents render: a
+// sphere of a mix of diffuse and thin dielectric, a floor of a conductor with a texture
+// roughness (pbrt 0.04, remapped: pdrt roughness 0.04^(1/4)) and a texture reflectance.
+TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent) {
+  PbrtImport im = import(
+      "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
+      "Camera \"perspective\" \"float fov\" 35\n"
+      "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32\n"
+      "Sampler \"independent\" \"integer pixelsamples\" 8\n"
+      "Integrator \"path\" \"integer maxdepth\" 4\n"
+      "PixelFilter \"box\"\n"
+      "WorldBegin\n"
+      "MakeNamedMaterial \"d\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+      "MakeNamedMaterial \"t\" \"string type\" \"thindielectric\" \"float eta\" 1.5\n"
+      "Texture \"r\" \"float\" \"constant\" \"float value\" 0.04\n"
+      "Texture \"f0\" \"spectrum\" \"constant\" \"rgb value\" [0.9 0.6 0.3]\n"
+      "AttributeBegin\n"
+      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
+      "AttributeEnd\n"
+      "Material \"conductor\" \"texture roughness\" \"r\" \"texture reflectance\" \"f0\"\n"
+      "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3  3 0 -3  3 0 3  -3 0 3] \"integer indices\" [0 2 1 0 3 2]\n"
+      "Material \"mix\" \"string materials\" [\"d\" \"t\"] \"float amount\" 0.3\n"
+      "Translate 0 0.5 0\n"
+      "Shape \"sphere\" \"float radius\" 0.5\n");
+  SceneDesc j = base_scene(48, 32, 8);
+  j.camera.position = {0, 1, -6};
+  j.camera.look_at = {0, 0.5, 0};
+  j.camera.vfov_deg = 35;
+  j.camera.flip_x = true;
+  j.sampler.type = "random";
+  j.sampler.seed = 0;
+  j.integrator.max_depth = 4;
+  // Materials in the importer's order (a mix's choice hashes its index): d, t, light, floor, mix.
+  Material d = diffuse(0);
+  d.albedo = {0.6f, 0.5f, 0.4f};
+  const int di = add_material(j, d);
+  Material t;
+  t.type = MaterialType::ThinDielectric;
+  t.albedo = Vec3(1.0f);
+  t.ior = 1.5f;
+  const int ti = add_material(j, t);
+  ShapeDesc lq;
+  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
+  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
+  lq.material = add_material(j, emitter(4));
+  j.shapes.push_back(lq);
+  Material floor;
+  floor.type = MaterialType::Conductor;
+  floor.roughness = std::pow(0.04f, 0.25f);
+  conductor_from_reflectance({0.9f, 0.6f, 0.3f}, &floor);
+  ShapeDesc fq;
+  fq.mesh.positions = {{-3, 0, -3}, {3, 0, -3}, {3, 0, 3}, {-3, 0, 3}};
+  fq.mesh.indices = {0, 2, 1, 0, 3, 2};
+  fq.material = add_material(j, floor);
+  j.shapes.push_back(fq);
+  Material mix;
+  mix.type = MaterialType::Mix;
+  mix.mix[0] = di, mix.mix[1] = ti, mix.amount = 0.3f;
+  j.shapes.push_back(sphere({0, 0.5f, 0}, 0.5f, add_material(j, mix)));
+
+  SceneDesc& p = im.scene;
+  ASSERT_EQ(p.materials.size(), j.materials.size());
+  j.camera.up = p.camera.up;
+  p.camera.focus_distance = 0;
+  j.camera.focus_distance = 0;
+  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
+  Image a = render_quietly(p).image, b = render_quietly(j).image;
+  double worst = 0, sum = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 48; ++x) {
+      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
+      sum += mean_rgb(b, x, y);
+    }
+  EXPECT_GT(sum, 0);
+  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
+}

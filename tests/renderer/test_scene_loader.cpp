@@ -127,15 +127,16 @@ TEST_F(SceneLoader, ExampleFilmSamplerIntegratorValues) {
 TEST_F(SceneLoader, ExampleShapesMaterialsAndLights) {
   SceneDesc s = load_scene(kExamples / "all-features.json");
   // quad, sphere, mesh, 4 tetrahedron faces (one per MTL material), 1 overridden tetrahedron,
-  // 2 spheres, then the quad and sphere lights.
-  ASSERT_EQ(s.shapes.size(), 12u);
+  // 3 spheres, then the quad and sphere lights.
+  ASSERT_EQ(s.shapes.size(), 13u);
   EXPECT_EQ(material_of(s, s.shapes[0]).name, "white");
   EXPECT_EQ(s.shapes[1].kind, ShapeDesc::Kind::Sphere);
   EXPECT_EQ(material_of(s, s.shapes[2]).lobe, GlossLobe::Phong);
   EXPECT_EQ(s.shapes[2].mesh.normals.size(), 3u);
   EXPECT_EQ(material_of(s, s.shapes[7]).name, "chrome");
   EXPECT_EQ(s.shapes[7].mesh.indices.size(), 12u);
-  const ShapeDesc& light = s.shapes[10];
+  EXPECT_EQ(material_of(s, s.shapes[10]).type, MaterialType::Mix);
+  const ShapeDesc& light = s.shapes[11];
   EXPECT_EQ(material_of(s, light).name, "lights[0]");
   EXPECT_EQ(material_of(s, light).type, MaterialType::Emitter);
   expect_vec(material_of(s, light).radiance, 10, 10, 10);
@@ -144,7 +145,7 @@ TEST_F(SceneLoader, ExampleShapesMaterialsAndLights) {
   EXPECT_EQ(fs::path(s.environment.file).filename(), "sky.exr");
   expect_vec(s.environment.scale, 0.1f, 0.1f, 0.12f);
   EXPECT_FLOAT_EQ(s.environment.rotation_deg, 30);
-  EXPECT_EQ(s.shapes[11].where, (kExamples / "all-features.json").string() + ": lights[1]");
+  EXPECT_EQ(s.shapes[12].where, (kExamples / "all-features.json").string() + ": lights[1]");
   EXPECT_EQ(s.degenerate_triangles, 0);
 }
 
@@ -223,7 +224,7 @@ TEST_F(SceneLoader, ExampleMotionKeys) {
   EXPECT_FLOAT_EQ(m[2].rotate.w, q.w);
   EXPECT_FLOAT_EQ(m[2].rotate.z, q.z);
   expect_vec(m[0].scale, 1, 1, 1);  // keys default to identity
-  ASSERT_EQ(s.shapes[11].motion.size(), 2u);
+  ASSERT_EQ(s.shapes[12].motion.size(), 2u);
 }
 
 TEST_F(SceneLoader, DocumentedExampleMatchesTheExampleFile) {

@@ -119,6 +119,40 @@ TEST(SceneWriter, PrototypesAndInstancesRoundTripWithEachMeshWrittenOnce) {
   fs::remove_all(dir);
 }
 
+// The materials and textures of issue 18's second part: a mix (of a thin dielectric and a
+// conductor of textured reflectance and roughness), scale, mix, invert and power textures.
+TEST(SceneWriter, MixThinDielectricAndCombinedTexturesRoundTripToTheSameImage) {
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "s.pbrt") << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
+                                   "Camera \"perspective\" \"float fov\" 40\n"
+                                   "WorldBegin\n"
+                                   "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.55]\n"
+                                   "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8\n"
+                                   "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"checks\" \"float scale\" 0.5\n"
+                                   "Texture \"f0\" \"spectrum\" \"mix\" \"texture tex1\" \"half\" \"rgb tex2\" [0.9 0.6 0.2] \"float amount\" 0.25\n"
+                                   "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.01 \"float tex2\" 0.2 \"float uscale\" 4\n"
+                                   "MakeNamedMaterial \"sheet\" \"string type\" \"thindielectric\" \"float eta\" 1.4\n"
+                                   "MakeNamedMaterial \"metal\" \"string type\" \"conductor\" \"texture reflectance\" \"f0\" \"texture roughness\" \"r\"\n"
+                                   "MakeNamedMaterial \"paint\" \"string type\" \"diffuse\" \"texture reflectance\" \"checks\"\n"
+                                   "MakeNamedMaterial \"inner\" \"string type\" \"mix\" \"string materials\" [\"sheet\" \"metal\"] \"float amount\" 0.6\n"
+                                   "Material \"mix\" \"string materials\" [\"paint\" \"inner\"] \"texture amount\" \"r\"\n"
+                                   "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3 3 0 -3 3 0 3 -3 0 3] \"integer indices\" [0 1 2 0 2 3]"
+                                   " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
+                                   "NamedMaterial \"inner\"\n"
+                                   "Translate 0 0.5 0\nShape \"sphere\" \"float radius\" 0.5\n";
+  SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
+  write_scene_json(s, dir / "s.json");
+  SceneDesc back = load_scene(dir / "s.json");
+  ASSERT_EQ(back.materials.size(), s.materials.size());
+  ASSERT_EQ(back.textures.size(), s.textures.size());
+  int mixes = 0, thin = 0;
+  for (const Material& m : back.materials) mixes += m.type == MaterialType::Mix, thin += m.type == MaterialType::ThinDielectric;
+  EXPECT_EQ(mixes, 2);
+  EXPECT_EQ(thin, 1);
+  EXPECT_LT(image_difference(s, back), 1e-3);
+  fs::remove_all(dir);
+}
+
 TEST(SceneWriter, ConvertRefusesAnOutputThatIsNotJson) {
   const fs::path dir = temp_dir();
   CliResult r = run_pdrt("convert '" + (fs::path(PDRT_EXAMPLES_DIR) / "all-features.json").string() + "' -o '" + (dir / "x.obj").string() + "'");

@@ -127,7 +127,7 @@ TEST_F(TextureLoading, LongerCycleIsRefused) {
 
 TEST_F(TextureLoading, UnknownTextureType) {
   EXPECT_ERROR(scene(R"(  "textures": {"c": {"type": "marble"}}
-})"), "s.json:4:30: textures.c.type must be one of constant, checkerboard, image, got \"marble\"");
+})"), "s.json:4:30: textures.c.type must be one of constant, checkerboard, image, scale, mix, invert, power, got \"marble\"");
 }
 
 TEST_F(TextureLoading, EmptyTextureName) {
@@ -242,4 +242,78 @@ TEST_F(TextureLoading, ObjTexcoordThatIsNotANumber) {
   EXPECT_ERROR(scene(R"(  "materials": {"m": {"type": "diffuse"}},
   "objects": [{"type": "obj", "file": "m.obj", "material": "m"}]
 })"), "m.obj:4: texture coordinate \"nan\" is not a finite number");
+}
+
+TEST_F(TextureLoading, ScaleMixInvertAndPowerAreRead) {
+  SceneDesc s = load_scene(scene(R"(  "textures": {
+    "img": {"type": "constant", "value": 0.5},
+    "s": {"type": "scale", "tex": "img", "scale": 2},
+    "m": {"type": "mix", "tex1": "s", "tex2": [0.1, 0.2, 0.3], "amount": "img"},
+    "i": {"type": "invert", "tex": "m"},
+    "p": {"type": "power", "tex": "i", "exponent": 0.25},
+    "d": {"type": "mix"}
+  },
+  "materials": {"a": {"type": "glossy", "roughness": "p"}}
+})"));
+  // Name order: d, i, img, m, p, s.
+  ASSERT_EQ(s.textures.size(), 6u);
+  const TextureDesc& d = s.textures[0];
+  EXPECT_EQ(d.kind, TextureDesc::Kind::Mix);  // pbrt-v4's defaults: tex1 0, tex2 1, amount 0.5
+  EXPECT_EQ(d.tex1.value.x, 0.0f);
+  EXPECT_EQ(d.tex2.value.x, 1.0f);
+  EXPECT_EQ(d.amount.value.x, 0.5f);
+  EXPECT_EQ(s.textures[1].kind, TextureDesc::Kind::Invert);
+  EXPECT_EQ(s.textures[1].tex.texture, 3);
+  const TextureDesc& m = s.textures[3];
+  EXPECT_EQ(m.tex1.texture, 5);
+  EXPECT_EQ(m.tex2.value.z, 0.3f);
+  EXPECT_EQ(m.amount.texture, 2);
+  EXPECT_EQ(s.textures[4].kind, TextureDesc::Kind::Power);
+  EXPECT_EQ(s.textures[4].exponent, 0.25f);
+  const TextureDesc& sc = s.textures[5];
+  EXPECT_EQ(sc.kind, TextureDesc::Kind::Scale);
+  EXPECT_EQ(sc.tex.texture, 2);
+  EXPECT_EQ(sc.scale.value.y, 2.0f);  // scale inputs may exceed 1
+  EXPECT_EQ(s.materials[0].textures[0], (TextureBinding{MaterialParam::Roughness, 4}));
+}
+
+TEST_F(TextureLoading, CycleThroughScaleAndMixIsRefused) {
+  EXPECT_ERROR(scene(R"(  "textures": {
+    "a": {"type": "scale", "tex": "b"},
+    "b": {"type": "mix", "tex1": 0, "amount": "a"}}
+})"), "s.json:6:47: textures.b.amount makes a cycle of textures: \"a\" -> \"b\" -> \"a\"");
+  EXPECT_ERROR(scene(R"(  "textures": {"p": {"type": "power", "tex": "p", "exponent": 2}}
+})"), "s.json:4:46: textures.p.tex makes a cycle of textures: \"p\" -> \"p\"");
+}
+
+TEST_F(TextureLoading, CombinatorValuesOutOfRange) {
+  EXPECT_ERROR(scene(R"(  "textures": {"s": {"type": "scale", "tex": 1, "scale": -2}}
+})"), "s.json:4:58: textures.s.scale must be >= 0, got -2");
+  EXPECT_ERROR(scene(R"(  "textures": {"s": {"type": "scale", "tex": [1, -1, 0]}}
+})"), "s.json:4:46: textures.s.tex must have components >= 0");
+  EXPECT_ERROR(scene(R"(  "textures": {"m": {"type": "mix", "amount": 1.5}}
+})"), "s.json:4:47: textures.m.amount must be in [0,1], got 1.5");
+  EXPECT_ERROR(scene(R"(  "textures": {"p": {"type": "power", "tex": 1, "exponent": 0}}
+})"), "s.json:4:61: textures.p.exponent must be > 0, got 0");
+  EXPECT_ERROR(scene(R"(  "textures": {"p": {"type": "power", "tex": 1}}
+})"), "textures.p");
+  EXPECT_ERROR(scene(R"(  "textures": {"i": {"type": "invert"}}
+})"), "textures.i");
+  EXPECT_ERROR(scene(R"(  "textures": {"i": {"type": "invert", "tex": 1, "exponent": 2}}
+})"), "s.json:4:50: textures.i.exponent");
+}
+
+// l(k) mixes l(k-1) with itself: 2^k - 1 nodes per lookup. l10 (1023) is accepted, l11 is not.
+TEST_F(TextureLoading, TextureGraphsTooCostlyToEvaluateAreRefused) {
+  std::string t = "  \"textures\": {\n    \"l0\": {\"type\": \"constant\", \"value\": 0.5}";
+  for (int k = 1; k <= 11; ++k)
+    t += ",\n    \"l" + std::to_string(k) + "\": {\"type\": \"mix\", \"tex1\": \"l" + std::to_string(k - 1) + "\", \"tex2\": \"l" +
+         std::to_string(k - 1) + "\"}";
+  // l0 is on line 5, so l11 on line 16, its object at column 12.
+  EXPECT_ERROR(scene(t + "\n  }\n}\n"), "s.json:16:12: textures.l11 evaluates 2047 scale/mix/invert/power nodes per lookup (at most 1024)");
+  std::string ok = "  \"textures\": {\n    \"l0\": {\"type\": \"constant\", \"value\": 0.5}";
+  for (int k = 1; k <= 10; ++k)
+    ok += ",\n    \"l" + std::to_string(k) + "\": {\"type\": \"mix\", \"tex1\": \"l" + std::to_string(k - 1) + "\", \"tex2\": \"l" +
+          std::to_string(k - 1) + "\"}";
+  EXPECT_EQ(load_scene(scene(ok + "\n  }\n}\n")).textures.size(), 11u);
 }

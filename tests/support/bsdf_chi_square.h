@@ -62,7 +62,9 @@ struct FitResult {
   int64_t delta_mismatches = 0;  // delta samples reporting another probability than the first one
 };
 
-inline FitResult chi_square_fit(const Bsdf& bsdf, const Vec3& wo, uint64_t seed, int64_t n) {
+// B: Bsdf, or anything with its sample() and pdf() (a mix material's routine, test_mix_material.cpp).
+template <class B>
+FitResult chi_square_fit(const B& bsdf, const Vec3& wo, uint64_t seed, int64_t n) {
   FitResult r;
   // The bins, then the delta lobe's category, then the failures'.
   std::vector<double> observed(kCosBins * kPhiBins + 2, 0.0), expected(observed.size(), 0.0);

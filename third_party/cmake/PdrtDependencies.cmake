@@ -39,6 +39,11 @@ endforeach()
 pdrt_require(tinyobjloader libtinyobjloader-dev CONFIG)
 pdrt_require(assimp libassimp-dev CONFIG)
 pdrt_require(TBB libtbb-dev CONFIG)
+# Open MPI (distributed renders, docs/distributed.md); mpirun itself is in openmpi-bin.
+find_package(MPI QUIET COMPONENTS CXX)
+if(NOT MPI_CXX_FOUND)
+  message(FATAL_ERROR "pdrt: missing dependency MPI (Debian packages libopenmpi-dev openmpi-bin); ${PDRT_DEPS_HINT}")
+endif()
 # OpenSubdiv (pbrt's loopsubdiv): Debian 12's OpenSubdivConfig.cmake names static libraries
 # the package does not ship and fails, so the header and the CPU library are found directly.
 find_path(OSD_INCLUDE_DIR opensubdiv/far/topologyRefinerFactory.h)

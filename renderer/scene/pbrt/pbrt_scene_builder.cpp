@@ -206,27 +206,71 @@ class Builder {
   }
 
   // pbrt-v4 roughness (alpha when remaproughness is false, else alpha = sqrt(roughness)) as
-  // pdrt's perceptual roughness (alpha = roughness^2).
-  float roughness(const PbrtDirective& d, const PbrtParams& ps) {
-    auto one = [&](const char* n) -> std::optional<double> {
+  // pdrt's perceptual roughness (alpha = roughness^2): roughness^(1/4) under remapping, else
+  // roughness^(1/2). A texture is bound through a power texture of that exponent (after the
+  // mean of uroughness and vroughness, when they differ): the filtered pbrt value is remapped
+  // per hit, exactly as pbrt-v4 remaps its evaluated roughness texture.
+  float roughness(const PbrtDirective& d, const PbrtParams& ps, Material& m) {
+    struct Rough {
+      double value = 0;
+      int texture = -1;
+      TextureInput input() const {
+        TextureInput in;
+        in.value = Vec3(float(value)), in.texture = texture;
+        return in;
+      }
+    };
+    auto one = [&](const char* n) -> std::optional<Rough> {
       const PbrtParam* p = ps.find(n);
       if (!p) return std::nullopt;
+      Rough r;
       if (pbrt_canonical_type(p->type) == "texture") {
         p->used = true;
-        note(p->at, std::string("texture roughness \"") + n + "\" is not supported yet (0 used)");
-        return 0.0;
+        if (auto t = texture_ref(*p, "float")) r.texture = *t;  // else reported, 0 used
+        return r;
       }
-      double v = *ps.find_float(n);
-      if (!(v >= 0) || !std::isfinite(v)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(v));
-      return v;
+      r.value = *ps.find_float(n);
+      if (!(r.value >= 0) || !std::isfinite(r.value)) fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + fmt(r.value));
+      return r;
     };
-    std::optional<double> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
-    double ru = u ? *u : r.value_or(0), rv = v ? *v : r.value_or(0);
-    if (ru != rv) note(d.at, "anisotropic roughness (" + fmt(ru) + ", " + fmt(rv) + ") is not supported (their mean used)");
-    double rough = 0.5 * (ru + rv);
-    bool remap = ps.get_bool("remaproughness", true);
-    double alpha = remap ? std::sqrt(rough) : rough;
-    return float(std::min(1.0, std::sqrt(alpha)));
+    std::optional<Rough> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
+    const Rough ru = u ? *u : r.value_or(Rough{}), rv = v ? *v : r.value_or(Rough{});
+    const bool remap = ps.get_bool("remaproughness", true);
+    if (ru.texture < 0 && rv.texture < 0) {
+      if (ru.value != rv.value)
+        note(d.at, "anisotropic roughness (" + fmt(ru.value) + ", " + fmt(rv.value) + ") is not supported (their mean used)");
+      double rough = 0.5 * (ru.value + rv.value);
+      double alpha = remap ? std::sqrt(rough) : rough;
+      return float(std::min(1.0, std::sqrt(alpha)));
+    }
+    TextureInput mean = ru.input();
+    if (ru.texture != rv.texture || (ru.texture < 0 && ru.value != rv.value)) {
+      note(d.at, "anisotropic roughness (uroughness and vroughness differ) is not supported (their mean used)");
+      TextureDesc t;
+      t.kind = TextureDesc::Kind::Mix;
+      t.tex1 = ru.input(), t.tex2 = rv.input(), t.amount.value = Vec3(0.5f);
+      mean.texture = add_texture(std::move(t), "mean roughness of " + m.name, d.at);
+    }
+    TextureDesc t;
+    t.kind = TextureDesc::Kind::Power;
+    t.tex = mean;
+    t.exponent = remap ? 0.25f : 0.5f;
+    m.textures.push_back({MaterialParam::Roughness, add_texture(std::move(t), "roughness of " + m.name, d.at)});
+    return 0;
+  }
+
+  // A texture the importer adds (a roughness remap, an imagemap's scale or invert): appended
+  // after its inputs, so the evaluation cost is known from theirs (kMaxTextureEvaluation).
+  int add_texture(TextureDesc t, const std::string& name, const PbrtLocation& at) {
+    t.name = name;
+    t.where = at.str();
+    const long long cost = texture_node_cost(t, texture_cost_);
+    if (cost > kMaxTextureEvaluation)
+      fail(at, "texture \"" + name + "\" evaluates " + (cost >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost)) +
+                   " scale/mix/invert/power nodes per lookup (at most " + std::to_string(kMaxTextureEvaluation) + ")");
+    out_.scene.textures.push_back(std::move(t));
+    texture_cost_.push_back(cost);
+    return int(out_.scene.textures.size()) - 1;
   }
 
   // ---- directives
@@ -468,7 +512,23 @@ class Builder {
     if (!(t.scale_u > 0 && t.scale_v > 0)) fail(d.at, "\"uscale\" and \"vscale\" must be > 0");
     for (const char* k : {"udelta", "vdelta"})
       if (ps.get_float(k, 0) != 0) note(ps.find(k)->at, std::string("\"") + k + "\" is not supported (0 used)");
-    if (cls == "constant") {
+    // pbrt-v4's ScaleTexture and MixTexture (their inputs come before them: no cycles).
+    auto non_negative = [&](const char* name, float fallback) {
+      TextureInput in = texture_input(ps, name, fallback, kind);
+      for (int c = 0; c < 3; ++c)
+        if (!(in.value[c] >= 0)) fail(ps.find(name)->at, std::string("\"") + name + "\" must be >= 0, got " + fmt(in.value[c]));
+      return in;
+    };
+    if (cls == "scale") {
+      t.kind = TextureDesc::Kind::Scale;
+      t.tex = non_negative("tex", 1);
+      t.scale = non_negative("scale", 1);
+    } else if (cls == "mix") {
+      t.kind = TextureDesc::Kind::Mix;
+      t.tex1 = non_negative("tex1", 0);
+      t.tex2 = non_negative("tex2", 1);
+      t.amount = texture_input(ps, "amount", 0.5f, "float");
+    } else if (cls == "constant") {
       t.kind = TextureDesc::Kind::Constant;
       t.value = color(ps, "value", Vec3(1.0f), false);
     } else if (cls == "checkerboard") {
@@ -505,8 +565,27 @@ class Builder {
         else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
         else note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
       }
-      if (ps.get_float("scale", 1) != 1) note(ps.find("scale")->at, "an image texture's \"scale\" is not supported (1 used)");
-      if (ps.get_bool("invert", false)) note(ps.find("invert")->at, "\"invert\" is not supported (ignored)");
+      // pbrt-v4's image textures: ClampZero(invert ? 1 - scale x : scale x), as a scale and an
+      // invert texture on top of the image (the name then means the outermost).
+      const double scale = ps.get_float("scale", 1);
+      if (!(scale >= 0) || !std::isfinite(scale)) fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + fmt(scale));
+      const bool invert = ps.get_bool("invert", false);
+      if (scale != 1 || invert) {
+        TextureInput in;
+        in.texture = add_texture(std::move(t), d.strings[0] + " (image)", d.at);
+        t = TextureDesc{};
+        t.name = d.strings[0], t.where = d.at.str();
+        if (scale != 1) {
+          t.kind = TextureDesc::Kind::Scale;
+          t.tex = in, t.scale.value = Vec3(float(scale));
+          if (invert) {
+            in.texture = add_texture(std::move(t), d.strings[0] + " (scaled image)", d.at);
+            t = TextureDesc{};
+            t.name = d.strings[0], t.where = d.at.str();
+          }
+        }
+        if (invert) t.kind = TextureDesc::Kind::Invert, t.tex = in;
+      }
     } else {
       note(d.at, "Texture class \"" + cls + "\" is not supported (materials using it get their default value)");
       supported = false;
@@ -516,8 +595,8 @@ class Builder {
       textures_[key] = -1;
       return;
     }
-    out_.scene.textures.push_back(std::move(t));
-    textures_[key] = int(out_.scene.textures.size()) - 1;
+    const std::string name = t.name;
+    textures_[key] = add_texture(std::move(t), name, d.at);
   }
 
   void camera(const PbrtDirective& d, const TransformPair& camera_from_world, bool implicit = false) {
@@ -677,17 +756,16 @@ class Builder {
     } else if (type == "conductor" || type == "coatedconductor") {
       if (type == "coatedconductor") note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
       m.type = MaterialType::Conductor;
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
       const std::string pre = type == "coatedconductor" ? "conductor." : "";
       const PbrtParam* refl = ps.find(pre + "reflectance");
       if (refl) {
-        // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same).
+        // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same); a texture
+        // binds the same mapping per hit (MaterialParam::Reflectance).
+        bind_to_ = &m.textures, bind_param_ = MaterialParam::Reflectance;
         Vec3 r = color(ps, pre + "reflectance", Vec3(0.0f), false);
-        m.eta = Vec3(1.0f);
-        for (int c = 0; c < 3; ++c) {
-          float rc = std::clamp(r[c], 0.0f, 0.9999f);
-          m.k[c] = 2 * std::sqrt(rc) / std::sqrt(1 - rc);
-        }
+        bind_to_ = nullptr;
+        conductor_from_reflectance(r, &m);
       } else {
         m.eta = metal_param(ps, pre + "eta", true);
         m.k = metal_param(ps, pre + "k", false);
@@ -699,7 +777,7 @@ class Builder {
       m.type = MaterialType::CoatedDiffuse;
       m.albedo = albedo(ps, m);
       for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
       float eta = index_of_refraction(ps);
       if (eta < 1 || eta > 3) {
         note(d.at, "a coat index of " + fmt(eta) + " is outside pdrt's [1, 3] (clamped)");
@@ -712,12 +790,36 @@ class Builder {
       m.coat_color = Vec3(std::exp(-thickness));
       m.coat_thickness = 1;
       for (const char* k : {"g", "maxdepth", "nsamples"}) ps.find(k) && (ps.find(k)->used = true);
-    } else if (type == "dielectric" || type == "thindielectric") {
-      if (type == "thindielectric") note(d.at, "thindielectric is not supported (a solid dielectric is used)");
+    } else if (type == "dielectric") {
       m.type = MaterialType::Dielectric;
       m.albedo = Vec3(1.0f);
       m.ior = index_of_refraction(ps);
-      m.roughness = roughness(d, ps);
+      m.roughness = roughness(d, ps, m);
+    } else if (type == "thindielectric") {
+      m.type = MaterialType::ThinDielectric;  // pbrt-v4's ThinDielectricBxDF: smooth only
+      m.albedo = Vec3(1.0f);
+      m.ior = index_of_refraction(ps);
+    } else if (type == "mix") {
+      // pbrt-v4's MixMaterial: two named materials, defined before, and the probability of the
+      // second (amount <= 0 and >= 1 choose one outright, as pbrt-v4 does).
+      m.type = MaterialType::Mix;
+      const PbrtParam* p = ps.find("materials");
+      if (!p || pbrt_canonical_type(p->type) != "string" || p->strings.size() != 2)
+        fail(p ? p->at : d.at, "a \"mix\" material needs \"string materials\" with two named materials");
+      p->used = true;
+      for (size_t i = 0; i < 2; ++i) {
+        auto it = named_materials_.find(p->strings[i]);
+        if (it == named_materials_.end()) fail(p->at, "unknown named material \"" + p->strings[i] + "\" in \"materials\"");
+        if (it->second == -2) fail(p->at, "a mix of \"" + p->strings[i] + "\" (an interface, no surface) is not supported");
+        m.mix[i] = it->second;
+      }
+      if (const PbrtParam* a = ps.find("amount"); a && pbrt_canonical_type(a->type) == "texture") {
+        a->used = true;
+        if (auto t = texture_ref(*a, "float")) m.textures.push_back({MaterialParam::Amount, *t});
+      } else if (std::optional<double> v = ps.find_float("amount")) {
+        if (!std::isfinite(*v)) fail(ps.find("amount")->at, "\"float amount\" must be finite");
+        m.amount = float(std::clamp(*v, 0.0, 1.0));
+      }
     } else {
       note(d.at, "material \"" + type + "\" is not supported (diffuse 0.5 used)");
       for (const PbrtParam& p : ps.list) p.used = true;
@@ -1093,6 +1195,7 @@ class Builder {
   bool in_world_ = false, camera_seen_ = false;
   float fov_ = 90;
   int default_material_ = -1;
+  std::vector<long long> texture_cost_;  // per scene texture: texture_node_cost
   std::map<std::string, int> textures_;  // "float:name" / "spectrum:name" -> index, -1 unsupported
   std::vector<TextureBinding>* bind_to_ = nullptr;  // where color() binds a texture parameter
   MaterialParam bind_param_ = MaterialParam::Albedo;

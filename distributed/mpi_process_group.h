@@ -1,0 +1,33 @@
+#pragma once
+// MPI ranks as pdrt's ProcessGroup (renderer/render/process_group.h). pdrt initialises MPI
+// only when `mpirun` started it (the launcher's environment says so), so a plain `pdrt render`
+// starts no MPI runtime and behaves as a single process.
+#include "renderer/render/process_group.h"
+
+#include <memory>
+
+namespace pdrt {
+
+// True when this process was started by an MPI launcher (Open MPI's OMPI_COMM_WORLD_SIZE or
+// PMIx's PMIX_RANK in the environment).
+bool launched_by_mpi();
+
+// Initialises MPI (thread level FUNNELED: only the main thread calls MPI) on first use and
+// finalises it at exit. Errors abort the whole job (MPI_ERRORS_ARE_FATAL): a rank that fails
+// takes the others down instead of leaving them waiting.
+class MpiProcessGroup final : public ProcessGroup {
+ public:
+  static MpiProcessGroup& instance();
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  std::vector<std::vector<std::byte>> all_gather(const std::vector<std::byte>& mine) const override;
+
+ private:
+  MpiProcessGroup();
+  int rank_ = 0, size_ = 1;
+};
+
+// The group this process belongs to: MPI's under mpirun, else the single local process.
+const ProcessGroup& process_group();
+
+}  // namespace pdrt

@@ -1,5 +1,7 @@
 #include "renderer/render/embree_scene.h"
 
+#include "renderer/render/instance_keys.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -13,12 +15,13 @@ namespace {
 // range, so the steps must cover the shutter, not just the keys. Evenly spaced keys extend
 // their grid by clamped copies (exact); other keys are resampled finely enough that Embree's
 // linear interpolation follows ours.
-std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys, float open, float close) {
+// `fine`: always resample (instances whose decomposition Embree cannot follow between keys).
+std::vector<MotionKey> time_steps(const std::vector<MotionKey>& keys, float open, float close, bool fine = false) {
   constexpr int kMaxSteps = 129;
   const int n = int(keys.size());
   const float t0 = keys.front().time, t1 = keys.back().time, dt = (t1 - t0) / (n - 1);
   const float tol = 1e-6f * (1 + std::max(std::abs(open), std::abs(close)));
-  bool even = true;
+  bool even = !fine;
   for (int i = 0; i < n; ++i) even = even && std::abs(keys[i].time - (t0 + i * dt)) <= tol;
   if (even) {
     const int before = int(std::ceil((t0 - open) / dt - 1e-4f)), after = int(std::ceil((close - t1) / dt - 1e-4f));
@@ -82,29 +85,70 @@ RTCGeometry EmbreeScene::make_geometry(const Shape& s) const {
   return g;
 }
 
+void EmbreeScene::add_shape(Shape& s, const ShapeDesc& d) {
+  const Affine& m = d.transform;
+  s.desc = &d;
+  if (d.kind == ShapeDesc::Kind::Sphere) {
+    s.sphere = true;
+    s.center = m.point(d.center);
+    // Spheres stay spheres: a non-uniform scale is replaced by its geometric mean.
+    s.radius = d.radius * std::cbrt(std::abs(m.determinant()));
+    s.to_world = m, s.to_object = m.inverse(), s.object_radius = d.radius;
+  } else {
+    s.positions.reserve(d.mesh.positions.size());
+    for (const Vec3& p : d.mesh.positions) s.positions.push_back(m.point(p));
+    for (const Vec3& n : d.mesh.normals) s.normals.push_back(normalize(m.normal(n)));
+    s.indices = d.mesh.indices;
+    s.uvs = d.mesh.uvs;
+    triangles_ += s.indices.size() / 3;
+  }
+}
+
+// An instance of `child` keyframed over the shutter: world(t) = interpolate(motion, t) *
+// static_part, each time step decomposed for Embree (instance_keys.h).
+RTCGeometry EmbreeScene::make_moving_instance(RTCScene child, const std::vector<MotionKey>& motion,
+                                              const Affine& static_part) const {
+  const CameraDesc& c = desc_.camera;
+  const float span = c.shutter_close - c.shutter_open;
+  const bool fine = !embree_follows_keys(motion, static_part);
+  std::vector<MotionKey> steps = span > 0 ? time_steps(motion, c.shutter_open, c.shutter_close, fine)
+                                          : std::vector<MotionKey>{interpolate(motion.data(), int(motion.size()), c.shutter_open)};
+  RTCGeometry inst = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(inst, child);
+  rtcSetGeometryTimeStepCount(inst, unsigned(steps.size()));
+  if (steps.size() > 1)
+    rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span, (steps.back().time - c.shutter_open) / span);
+  Quat previous;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    InstanceKey key = instance_key(steps[k], static_part);
+    Quat& q = key.rotate;
+    // Neighbouring steps on one hemisphere: the slerp between them takes the short arc.
+    if (k > 0 && q.w * previous.w + q.x * previous.x + q.y * previous.y + q.z * previous.z < 0) q = {-q.w, -q.x, -q.y, -q.z};
+    previous = q;
+    RTCQuaternionDecomposition d;
+    rtcInitQuaternionDecomposition(&d);
+    rtcQuaternionDecompositionSetScale(&d, key.scale[0], key.scale[1], key.scale[2]);
+    rtcQuaternionDecompositionSetSkew(&d, key.skew[0], key.skew[1], key.skew[2]);
+    rtcQuaternionDecompositionSetShift(&d, key.shift[0], key.shift[1], key.shift[2]);
+    rtcQuaternionDecompositionSetQuaternion(&d, q.w, q.x, q.y, q.z);
+    rtcQuaternionDecompositionSetTranslation(&d, key.translate.x, key.translate.y, key.translate.z);
+    rtcSetGeometryTransformQuaternion(inst, unsigned(k), &d);
+  }
+  rtcCommitGeometry(inst);
+  return inst;
+}
+
 EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : desc_(desc), device_(device) {
   RTCDevice dev = device.get();
   scene_ = rtcNewScene(dev);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  shapes_.resize(desc.shapes.size());
+  std::size_t total = desc.shapes.size();
+  for (const PrototypeDesc& p : desc.prototypes) total += p.shapes.size();
+  shapes_.resize(total);
   for (std::size_t i = 0; i < desc.shapes.size(); ++i) {
     const ShapeDesc& d = desc.shapes[i];
     Shape& s = shapes_[i];
-    const Affine& m = d.transform;
-    if (d.kind == ShapeDesc::Kind::Sphere) {
-      s.sphere = true;
-      s.center = m.point(d.center);
-      // Spheres stay spheres: a non-uniform scale is replaced by its geometric mean.
-      s.radius = d.radius * std::cbrt(std::abs(m.determinant()));
-      s.to_world = m, s.to_object = m.inverse(), s.object_radius = d.radius;
-    } else {
-      s.positions.reserve(d.mesh.positions.size());
-      for (const Vec3& p : d.mesh.positions) s.positions.push_back(m.point(p));
-      for (const Vec3& n : d.mesh.normals) s.normals.push_back(normalize(m.normal(n)));
-      s.indices = d.mesh.indices;
-      s.uvs = d.mesh.uvs;
-      triangles_ += s.indices.size() / 3;
-    }
+    add_shape(s, d);
     RTCGeometry g = make_geometry(s);
     if (d.motion.empty()) {
       rtcAttachGeometryByID(scene_, g, unsigned(i));
@@ -139,6 +183,46 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
     rtcAttachGeometryByID(scene_, inst, unsigned(i));
     s.instance = inst;  // keeps a reference for transform queries (released in the destructor)
   }
+  // Prototypes: one child scene each, committed once, geometry IDs the prototype's shape
+  // order. Their shapes' motion is not supported (one level of instancing; the loader refuses it).
+  std::size_t next = desc.shapes.size();
+  for (const PrototypeDesc& p : desc.prototypes) {
+    prototype_first_.push_back(int(next));
+    RTCScene child = rtcNewScene(dev);
+    rtcSetSceneFlags(child, RTC_SCENE_FLAG_ROBUST);
+    for (std::size_t k = 0; k < p.shapes.size(); ++k, ++next) {
+      add_shape(shapes_[next], p.shapes[k]);
+      RTCGeometry g = make_geometry(shapes_[next]);
+      rtcAttachGeometryByID(child, g, unsigned(k));
+      rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(child);
+    prototypes_.push_back(child);
+  }
+  instances_.resize(desc.instances.size());
+  for (std::size_t j = 0; j < desc.instances.size(); ++j) {
+    const InstanceDesc& d = desc.instances[j];
+    Instance& in = instances_[j];
+    RTCScene child = prototypes_[std::size_t(d.prototype)];
+    RTCGeometry inst;
+    if (d.motion.empty()) {
+      inst = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(inst, child);
+      rtcSetGeometryTimeStepCount(inst, 1);
+      float m[12];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) m[r * 4 + c] = d.transform.m[r][c];
+      rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+      rtcCommitGeometry(inst);
+      in.to_world = d.transform, in.to_prototype = d.transform.inverse();
+    } else {
+      inst = make_moving_instance(child, d.motion, d.transform);
+      in.geometry = inst;
+      rtcRetainGeometry(inst);
+    }
+    rtcAttachGeometryByID(scene_, inst, unsigned(desc.shapes.size() + j));
+    rtcReleaseGeometry(inst);
+  }
   rtcCommitScene(scene_);
   device.check();
 
@@ -148,7 +232,7 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
           std::min(lb.bounds0.lower_z, lb.bounds1.lower_z));
   Vec3 hi(std::max(lb.bounds0.upper_x, lb.bounds1.upper_x), std::max(lb.bounds0.upper_y, lb.bounds1.upper_y),
           std::max(lb.bounds0.upper_z, lb.bounds1.upper_z));
-  if (desc.shapes.empty() || !(hi.x >= lo.x)) lo = hi = Vec3(0.0f);
+  if ((desc.shapes.empty() && desc.instances.empty()) || !(hi.x >= lo.x)) lo = hi = Vec3(0.0f);
   bounds_radius_ = std::max(length(hi - lo) * 0.5f, 1e-3f);
 }
 
@@ -157,6 +241,9 @@ EmbreeScene::~EmbreeScene() {
     if (s.instance) rtcReleaseGeometry(s.instance);
     if (s.child) rtcReleaseScene(s.child);
   }
+  for (Instance& in : instances_)
+    if (in.geometry) rtcReleaseGeometry(in.geometry);
+  for (RTCScene p : prototypes_) rtcReleaseScene(p);
   if (scene_) rtcReleaseScene(scene_);
 }
 
@@ -166,6 +253,19 @@ Affine EmbreeScene::transform(int shape, float time) const {
   float m[12];
   rtcGetGeometryTransform(s.instance, time, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
   return from_row_major(m);
+}
+
+Affine EmbreeScene::instance_transform(int i, float time) const {
+  const Instance& in = instances_[std::size_t(i)];
+  if (!in.geometry) return in.to_world;
+  float m[12];
+  rtcGetGeometryTransform(in.geometry, time, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+  return from_row_major(m);
+}
+
+Affine EmbreeScene::hit_transform(const SurfaceHit& hit, float time) const {
+  if (hit.instance >= 0) return instance_transform(hit.instance, time);
+  return transform(hit.shape, time);
 }
 
 bool EmbreeScene::intersect(const Ray& ray, SurfaceHit* hit) const {
@@ -213,15 +313,25 @@ void EmbreeScene::intersect4(const Ray* rays, const bool* live, SurfaceHit* hits
 void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id, unsigned prim_id, float u, float v,
                              const Vec3& embree_ng, float t, SurfaceHit* hit) const {
   const bool inst = inst_id != RTC_INVALID_GEOMETRY_ID;
-  const int shape = int(inst ? inst_id : geom_id);
+  const unsigned n_shapes = unsigned(desc_.shapes.size());
+  // Top-level IDs past the scene's shapes are prototype instances: geom_id is the shape's
+  // index within the prototype.
+  const int instance = inst && inst_id >= n_shapes ? int(inst_id - n_shapes) : -1;
+  const int shape = instance >= 0 ? prototype_first_[std::size_t(desc_.instances[std::size_t(instance)].prototype)] + int(geom_id)
+                                  : int(inst ? inst_id : geom_id);
   const Shape& s = shapes_[shape];
   hit->t = t;
   hit->shape = shape;
+  hit->instance = instance;
   hit->prim = int(prim_id);
   // The hit point is rebuilt from the primitive (pbrt-v4 §6.8): org + t dir carries an
   // error that grows with |org| + t, the reprojected point one bounded by the surface's own size.
   Affine m, inv;
-  if (inst) m = transform(shape, ray.time), inv = m.inverse();
+  if (instance >= 0 && !instances_[std::size_t(instance)].geometry) {
+    m = instances_[std::size_t(instance)].to_world, inv = instances_[std::size_t(instance)].to_prototype;
+  } else if (inst) {
+    m = hit_transform(*hit, ray.time), inv = m.inverse();
+  }
   ErrorPoint x;
   Vec3 ng, ns;
   if (s.sphere) {
@@ -294,8 +404,8 @@ void EmbreeScene::texture_coords(SurfaceHit* hit, float time) const {
     }
     if (!ok) tangents(normalize(cross(b - a, c - a)), &dpdu, &dpdv);
   }
-  if (s.instance) {
-    const Affine m = transform(hit->shape, time);
+  if (s.instance || hit->instance >= 0) {
+    const Affine m = hit_transform(*hit, time);
     dpdu = m.vector(dpdu), dpdv = m.vector(dpdv);
   }
   hit->dpdu = dpdu, hit->dpdv = dpdv;

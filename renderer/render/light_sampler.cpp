@@ -450,6 +450,8 @@ float LightSampler::sphere_pdf(int shape, const Vec3& ref, const Vec3& p, const 
 }
 
 float LightSampler::pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, float time) const {
+  // Emitters inside instances are not in the sampler: BSDF sampling alone reaches them (weight 1).
+  if (hit.instance >= 0 || std::size_t(hit.shape) >= first_entry_.size()) return 0;
   int64_t first = first_entry_[hit.shape];
   if (first < 0) return 0;
   const ShapeDesc& s = scene_.desc().shapes[hit.shape];
@@ -472,7 +474,7 @@ float LightSampler::environment_pdf(const Vec3& ref, const Vec3& n, const Vec3& 
 }
 
 Vec3 LightSampler::emitted(const SurfaceHit& hit) const {
-  const Material& m = scene_.desc().materials[scene_.desc().shapes[hit.shape].material];
+  const Material& m = scene_.desc().materials[scene_.material(hit.shape)];
   if (m.type != MaterialType::Emitter) return Vec3(0.0f);
   return (hit.front || m.two_sided) ? emitter_radiance(m, hit) : Vec3(0.0f);
 }

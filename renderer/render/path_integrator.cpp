@@ -69,7 +69,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     const std::vector<Material>& materials = scene_.desc().materials;
     const Vec3 wo_world = -ray.dir;
     bool have_coords = false;
-    int mi = scene_.desc().shapes[hit.shape].material;
+    int mi = scene_.material(hit.shape);  // a prototype's shape inside an instance
     if (materials[size_t(mi)].type == MaterialType::Mix) {
       // pbrt-v4's MixMaterial: this hit shades with one component (mix_material.h).
       mi = resolve_mix(materials, mi, hit.p, wo_world, [&](int k) {

@@ -120,6 +120,26 @@ struct ShapeDesc {
   std::string where;                // "scene.json: objects[2]" for messages
 };
 
+// A named group of shapes placed any number of times by instances (docs/scene-format.md,
+// "prototypes"). Its shapes are in the prototype's own space (each with its static transform,
+// no motion: Embree instances one level deep) and carry no emitter material: pbrt-v4 refuses
+// area lights in instances, and the loader does too. A renderer given emitters here anyway
+// sees them only through BSDF sampling (they are not in the light sampler).
+struct PrototypeDesc {
+  std::string name;
+  std::vector<ShapeDesc> shapes;
+  std::string where;                // "scene.json: prototypes.tree" for messages
+};
+
+// One placement of a prototype: world(t) = interpolate(motion, t) * transform * prototype
+// shape's transform, traced as an Embree instance of the prototype's one BVH.
+struct InstanceDesc {
+  int prototype = 0;                // index into SceneDesc::prototypes
+  Affine transform;                 // prototype to world (static part)
+  std::vector<MotionKey> motion;    // optional, as ShapeDesc::motion
+  std::string where;                // "scene.json: objects[4]" for messages
+};
+
 // The environment light (docs/scene-format.md, "environment"): a constant radiance, or an
 // equirectangular image (renderer/render/equirect.h: row 0 is +y, the image centre -z)
 // times `scale`, turned by rotation_deg about +y.
@@ -165,6 +185,8 @@ struct SceneDesc {
   EnvironmentDesc environment;
   std::vector<DeltaLightDesc> delta_lights;  // point, spot and distant lights
   int64_t degenerate_triangles = 0; // skipped while loading (the loader warns once)
+  std::vector<PrototypeDesc> prototypes;  // shape groups placed by `instances`
+  std::vector<InstanceDesc> instances;
 };
 
 }  // namespace pdrt

@@ -50,7 +50,11 @@ class SceneParser {
   void textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const;
   void textured_unit(const JsonNode& n, Material& m, MaterialParam p, float& field) const;
   void materials(const JsonNode& n);
-  void objects(const JsonNode& n);
+  // `prototype` >= 0: the objects of that prototype (no instances, motion or emitters).
+  void objects(const JsonNode& n, int prototype = -1);
+  void prototypes(const JsonNode& n);
+  void instance(const JsonNode& on, const JsonObject& o);
+  void refuse_emitter(const JsonNode& at, int material, int prototype) const;
   void lights(const JsonNode& n);
   void delta_light(const JsonNode& ln, const JsonObject& o, const std::string& type);
   void environment_light(const JsonNode& ln, const JsonObject& o);
@@ -83,19 +87,22 @@ class SceneParser {
     JsonNode file;
     int material;  // -1: the MTL's
     ShapeDesc placement;
+    int prototype = -1;  // >= 0: its parts go to that prototype, at shape_slot of its shapes
   };
+  std::map<std::string, int> prototype_index_;
   std::vector<PendingObj> pending_;
 };
 
 SceneDesc SceneParser::parse() {
   JsonObject top(root_);
-  top.allow({"camera", "film", "sampler", "integrator", "textures", "materials", "objects", "lights"});
+  top.allow({"camera", "film", "sampler", "integrator", "textures", "materials", "objects", "lights", "prototypes"});
   camera(top.require("camera").object());
   film(top.require("film").object());
   if (auto n = top.get("sampler")) sampler(n->object());
   if (auto n = top.get("integrator")) integrator(n->object());
   if (auto n = top.get("textures")) textures(*n);
   if (auto n = top.get("materials")) materials(*n);
+  if (auto n = top.get("prototypes")) prototypes(*n);
   if (auto n = top.get("objects")) objects(*n);
   if (auto n = top.get("lights")) lights(*n);
   load_objs();
@@ -751,12 +758,22 @@ void SceneParser::keep_triangles(MeshData& mesh, const JsonNode& where) {
   if (kept == 0) where.fail("leaves no triangles (all " + std::to_string(skipped) + " are degenerate)");
 }
 
-void SceneParser::objects(const JsonNode& n) {
-  size_t count = n.array_size(0);
+void SceneParser::objects(const JsonNode& n, int prototype) {
+  size_t count = n.array_size(prototype >= 0 ? 1 : 0);
+  std::vector<ShapeDesc>& out = prototype >= 0 ? scene_.prototypes[size_t(prototype)].shapes : scene_.shapes;
   for (size_t i = 0; i < count; ++i) {
     JsonNode on = n.at(i);
     JsonObject o = on.object();
-    std::string type = o.require("type").choice({"sphere", "quad", "mesh", "obj"});
+    JsonNode type_node = o.require("type");
+    std::string type = type_node.choice({"sphere", "quad", "mesh", "obj", "instance"});
+    if (type == "instance") {
+      // pbrt-v4 does not nest instances either; Embree would need two instance levels.
+      if (prototype >= 0) type_node.fail_got("is not allowed inside a prototype (instances do not nest)");
+      instance(on, o);
+      continue;
+    }
+    if (prototype >= 0)
+      if (auto m = o.get("motion")) m->fail_key("is not allowed inside a prototype (give the instance a motion)");
     ShapeDesc s;
     if (type == "sphere") {
       o.allow({"type", "material", "transform", "motion", "center", "radius"});
@@ -805,14 +822,60 @@ void SceneParser::objects(const JsonNode& n) {
       if (!can_open_file(path, reason)) file.fail("cannot open " + json_quoted(file.string()) + ": " + reason);
       int material = -1;
       if (auto m = o.get("material")) material = material_named(*m);
+      if (auto m = o.get("material")) refuse_emitter(*m, material, prototype);
       place(s, o, on.path());
-      pending_.push_back({scene_.shapes.size(), path, file, material, std::move(s)});
+      pending_.push_back({out.size(), path, file, material, std::move(s), prototype});
       continue;
     }
-    s.material = material_named(o.require("material"));
+    JsonNode mn = o.require("material");
+    s.material = material_named(mn);
+    refuse_emitter(mn, s.material, prototype);
     place(s, o, on.path());
-    scene_.shapes.push_back(std::move(s));
+    out.push_back(std::move(s));
   }
+}
+
+// pbrt-v4 refuses area lights in instances: the light sampler knows each emitter once, in
+// world space, and an instanced emitter would be many.
+void SceneParser::refuse_emitter(const JsonNode& at, int material, int prototype) const {
+  if (prototype < 0 || material < 0 || scene_.materials[size_t(material)].type != MaterialType::Emitter) return;
+  at.fail_got("is an emitter; emitters cannot be inside a prototype (instanced area lights are not supported)");
+}
+
+// "prototypes": {"name": [object, ...], ...}: named shape groups, placed by "instance" objects.
+void SceneParser::prototypes(const JsonNode& n) {
+  JsonObject all = n.object();
+  for (auto it = n.value().begin(); it != n.value().end(); ++it) {
+    JsonNode pn = all.child(it.key());
+    if (it.key().empty()) pn.fail_key("prototype name must not be empty");
+    if (!pn.value().is_array()) pn.fail_got("must be an array of objects");
+    if (pn.value().empty()) pn.fail("must hold at least one object");
+    prototype_index_[it.key()] = int(scene_.prototypes.size());
+    PrototypeDesc p;
+    p.name = it.key();
+    p.where = doc_.name() + ": " + pn.path();
+    scene_.prototypes.push_back(std::move(p));
+    objects(pn, int(scene_.prototypes.size()) - 1);
+  }
+}
+
+// {"type": "instance", "prototype": name, "transform": ..., "motion": [...]}
+void SceneParser::instance(const JsonNode& on, const JsonObject& o) {
+  o.allow({"type", "prototype", "transform", "motion"});
+  JsonNode pn = o.require("prototype");
+  const std::string name = pn.string();
+  auto it = prototype_index_.find(name);
+  if (it == prototype_index_.end()) {
+    std::string known;
+    for (const auto& [k, v] : prototype_index_) known += (known.empty() ? "" : ", ") + json_quoted(k);
+    pn.fail_got("is not a prototype (" + (known.empty() ? std::string("the scene has no \"prototypes\"") : "prototypes: " + known) + ")");
+  }
+  InstanceDesc d;
+  d.prototype = it->second;
+  if (auto t = o.get("transform")) d.transform = transform(*t);
+  if (auto m = o.get("motion")) d.motion = motion(*m, false);
+  d.where = doc_.name() + ": " + on.path();
+  scene_.instances.push_back(std::move(d));
 }
 
 void SceneParser::lights(const JsonNode& n) {
@@ -996,6 +1059,7 @@ void SceneParser::load_objs() {
                                                      " are degenerate)"
                                                : " (no f lines)"));
     std::vector<ShapeDesc> shapes;
+    std::vector<ShapeDesc>& out = p->prototype >= 0 ? scene_.prototypes[size_t(p->prototype)].shapes : scene_.shapes;
     for (ObjPart& part : model.parts) {
       ShapeDesc s = p->placement;
       s.mesh = std::move(part.mesh);
@@ -1011,10 +1075,14 @@ void SceneParser::load_objs() {
           scene_.materials.push_back(*part.material);
         }
       }
+      if (p->prototype >= 0 && s.material >= 0 && part.material &&
+          scene_.materials[size_t(s.material)].type == MaterialType::Emitter)
+        p->file.fail(json_quoted(p->file.string()) + " has an emitting material (Ke) \"" + part.material->name +
+                     "\"; emitters cannot be inside a prototype (instanced area lights are not supported)");
       shapes.push_back(std::move(s));
     }
-    scene_.shapes.insert(scene_.shapes.begin() + std::ptrdiff_t(p->shape_slot), std::make_move_iterator(shapes.begin()),
-                         std::make_move_iterator(shapes.end()));
+    out.insert(out.begin() + std::ptrdiff_t(p->shape_slot), std::make_move_iterator(shapes.begin()),
+               std::make_move_iterator(shapes.end()));
   }
 }
 

@@ -275,8 +275,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
   const fs::path mesh_dir = json_file.parent_path() / (json_file.stem().string() + ".meshes");
   ojson objects = ojson::array();
   bool made_dir = false;
-  for (size_t i = 0; i < s.shapes.size(); ++i) {
-    const ShapeDesc& sh = s.shapes[i];
+  // A shape as an object; meshes go to `mesh_dir / name`.
+  auto shape_object = [&](const ShapeDesc& sh, const std::string& name) {
     ojson o;
     if (sh.kind == ShapeDesc::Kind::Sphere) {
       o = {{"type", "sphere"}, {"center", vec(sh.center)}, {"radius", sh.radius}};
@@ -289,14 +289,33 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
         if (ec) throw InputError(mesh_dir.string() + ": cannot create the mesh folder: " + ec.message());
         made_dir = true;
       }
-      std::string name = "shape";
-      name += std::to_string(i);
-      name += ".obj";
       write_obj(sh.mesh, mesh_dir / name);
       o = {{"type", "obj"}, {"file", (fs::path(mesh_dir.filename()) / name).string()}};
     }
     o["material"] = numbered('m', size_t(sh.material));
     place(o, sh.transform, sh.motion, sh.kind == ShapeDesc::Kind::Sphere);
+    return o;
+  };
+  // Prototypes as p0, p1, ...: each mesh written once, however many instances place it.
+  if (!s.prototypes.empty()) {
+    ojson protos = ojson::object();
+    for (size_t p = 0; p < s.prototypes.size(); ++p) {
+      ojson shapes = ojson::array();
+      for (size_t k = 0; k < s.prototypes[p].shapes.size(); ++k)
+        shapes.push_back(shape_object(s.prototypes[p].shapes[k], numbered('p', p) + "_shape" + std::to_string(k) + ".obj"));
+      protos[numbered('p', p)] = shapes;
+    }
+    j["prototypes"] = protos;
+  }
+  for (size_t i = 0; i < s.shapes.size(); ++i) {
+    std::string name = "shape";
+    name += std::to_string(i);
+    name += ".obj";
+    objects.push_back(shape_object(s.shapes[i], name));
+  }
+  for (const InstanceDesc& in : s.instances) {
+    ojson o = {{"type", "instance"}, {"prototype", numbered('p', size_t(in.prototype))}};
+    place(o, in.transform, in.motion);
     objects.push_back(o);
   }
   j["objects"] = objects;

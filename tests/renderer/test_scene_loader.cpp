@@ -1255,3 +1255,129 @@ TEST_F(SceneLoader, BadProjectionScreenOrCropWindow) {
     EXPECT_ERROR(f, message);
   }
 }
+
+// --- prototypes and instances -------------------------------------------------------------
+
+namespace {
+
+// kHead, a grey and a lamp material (line 4), a prototype "tree" of a sphere and a quad
+// (lines 5-6), then `rest` (line 7 on).
+std::string with_prototype(const std::string& rest) {
+  return kHead + R"(  "materials": {"grey": {"type": "diffuse"}, "lamp": {"type": "emitter", "radiance": [1, 1, 1]}},
+  "prototypes": {"tree": [{"type": "sphere", "material": "grey", "radius": 1, "transform": {"translate": [0, 2, 0]}},
+                          {"type": "quad", "material": "grey", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 0, 1]}]},
+)" + rest;
+}
+
+}  // namespace
+
+TEST_F(SceneLoader, PrototypesAndInstancesLoad) {
+  fs::path f = scene(with_prototype(R"(  "objects": [{"type": "instance", "prototype": "tree", "transform": {"translate": [5, 0, 0]}},
+              {"type": "sphere", "material": "grey", "radius": 0.5},
+              {"type": "instance", "prototype": "tree",
+               "motion": [{"time": 0}, {"time": 1, "translate": [0, 0, 1], "scale": [1, 2, 1]}]}]
+})"));
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.prototypes.size(), 1u);
+  EXPECT_EQ(s.prototypes[0].name, "tree");
+  ASSERT_EQ(s.prototypes[0].shapes.size(), 2u);
+  EXPECT_EQ(s.prototypes[0].shapes[0].kind, ShapeDesc::Kind::Sphere);
+  expect_vec(s.prototypes[0].shapes[0].transform.point({0, 0, 0}), 0, 2, 0);
+  EXPECT_EQ(s.prototypes[0].shapes[1].mesh.indices.size(), 6u);
+  ASSERT_EQ(s.shapes.size(), 1u);  // the plain sphere
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.instances[0].prototype, 0);
+  expect_vec(s.instances[0].transform.point({0, 0, 0}), 5, 0, 0);
+  EXPECT_TRUE(s.instances[0].motion.empty());
+  ASSERT_EQ(s.instances[1].motion.size(), 2u);  // an instance's keys may scale non-uniformly
+  EXPECT_FLOAT_EQ(s.instances[1].motion[1].scale.y, 2);
+  EXPECT_NE(s.instances[1].where.find("objects[2]"), std::string::npos);
+}
+
+TEST_F(SceneLoader, UnusedPrototypeIsFine) {
+  SceneDesc s = load_scene(scene(with_prototype("  \"objects\": []\n}")));
+  EXPECT_EQ(s.prototypes.size(), 1u);
+  EXPECT_TRUE(s.instances.empty());
+}
+
+TEST_F(SceneLoader, PrototypeObjectsMayComeFromAnObjFile) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "prototypes": {"box": [{"type": "obj", "file": "tri.obj", "material": "grey"}]},
+  "objects": [{"type": "instance", "prototype": "box"}, {"type": "instance", "prototype": "box"}]
+})");
+  write(f.parent_path() / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.prototypes.size(), 1u);
+  ASSERT_EQ(s.prototypes[0].shapes.size(), 1u);
+  EXPECT_EQ(s.prototypes[0].shapes[0].mesh.indices.size(), 3u);
+  EXPECT_TRUE(s.shapes.empty());
+  EXPECT_EQ(s.instances.size(), 2u);
+}
+
+TEST_F(SceneLoader, UnknownPrototypeIsRefusedNamingTheKnownOnes) {
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": \"bush\"}]\n}")),
+               "s.json:7:49: objects[0].prototype is not a prototype (prototypes: \"tree\"), got \"bush\"");
+  EXPECT_ERROR(scene(kHead + "  \"objects\": [{\"type\": \"instance\", \"prototype\": \"bush\"}]\n}"),
+               "s.json:4:49: objects[0].prototype is not a prototype (the scene has no \"prototypes\"), got \"bush\"");
+}
+
+TEST_F(SceneLoader, InstanceNeedsAPrototypeAndKnowsItsKeys) {
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\"}]\n}")), "s.json:7:15: objects[0] missing required key \"prototype\"");
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": \"tree\", \"material\": \"grey\"}]\n}")),
+               "objects[0].material");
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": 3}]\n}")),
+               "s.json:7:49: objects[0].prototype must be a string, got 3");
+}
+
+TEST_F(SceneLoader, EmptyPrototypeIsRefused) {
+  EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"tree\": []},\n  \"objects\": []\n}"),
+               "s.json:4:26: prototypes.tree must hold at least one object");
+  EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"tree\": {}},\n  \"objects\": []\n}"),
+               "s.json:4:26: prototypes.tree must be an array of objects, got {}");
+  EXPECT_ERROR(scene(kHead + "  \"prototypes\": [],\n  \"objects\": []\n}"), "s.json:4:17: prototypes must be an object");
+  EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"\": [{\"type\": \"sphere\", \"radius\": 1}]},\n  \"objects\": []\n}"),
+               "s.json:4:18: prototypes[\"\"] prototype name must not be empty");
+}
+
+TEST_F(SceneLoader, InstanceInsideAPrototypeIsRefused) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "prototypes": {"forest": [{"type": "instance", "prototype": "tree"}],
+                 "tree": [{"type": "sphere", "material": "grey", "radius": 1}]},
+  "objects": []
+})");
+  EXPECT_ERROR(f, "s.json:5:38: prototypes.forest[0].type is not allowed inside a prototype (instances do not nest), got \"instance\"");
+}
+
+TEST_F(SceneLoader, MotionInsideAPrototypeIsRefused) {
+  fs::path f = scene(kHead + R"(  "materials": {"grey": {"type": "diffuse"}},
+  "prototypes": {"tree": [{"type": "sphere", "material": "grey", "radius": 1, "motion": [{"time": 0}]}]},
+  "objects": []
+})");
+  EXPECT_ERROR(f, "s.json:5:79: prototypes.tree[0].motion is not allowed inside a prototype (give the instance a motion)");
+}
+
+TEST_F(SceneLoader, EmitterInsideAPrototypeIsRefused) {
+  fs::path f = scene(kHead + R"(  "materials": {"lamp": {"type": "emitter", "radiance": [1, 1, 1]}},
+  "prototypes": {"tree": [{"type": "sphere", "material": "lamp", "radius": 1}]},
+  "objects": []
+})");
+  EXPECT_ERROR(f, "s.json:5:58: prototypes.tree[0].material is an emitter; emitters cannot be inside a prototype (instanced area lights are not supported), got \"lamp\"");
+  fs::path obj = scene(kHead + R"(  "prototypes": {"tree": [{"type": "obj", "file": "lamp.obj"}]},
+  "objects": []
+})");
+  write(obj.parent_path() / "lamp.obj", "mtllib lamp.mtl\nusemtl glow\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write(obj.parent_path() / "lamp.mtl", "newmtl glow\nKe 1 1 1\n");
+  EXPECT_ERROR(obj, "s.json:4:51: prototypes.tree[0].file \"lamp.obj\" has an emitting material (Ke) \"lamp/glow\"; emitters cannot be inside a prototype");
+}
+
+TEST_F(SceneLoader, ExamplePrototypesAndInstances) {
+  SceneDesc s = load_scene(kExamples / "all-features.json");
+  ASSERT_EQ(s.prototypes.size(), 1u);
+  EXPECT_EQ(s.prototypes[0].name, "post");
+  EXPECT_EQ(s.prototypes[0].shapes.size(), 2u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  expect_vec(s.instances[0].transform.point({0, 0, 1}), -0.6f, 0, 1.5f);
+  EXPECT_TRUE(s.instances[0].motion.empty());
+  ASSERT_EQ(s.instances[1].motion.size(), 2u);
+  EXPECT_FLOAT_EQ(s.instances[1].motion[1].scale.y, 1.2f);
+}

@@ -93,6 +93,40 @@ TEST(SceneWriter, AnImportedPbrtSceneRoundTripsToTheSameImage) {
   fs::remove_all(dir);
 }
 
+// Prototypes and instances (static and moving) written as "prototypes" and instance objects:
+// each prototype mesh once, however many instances place it.
+TEST(SceneWriter, PrototypesAndInstancesRoundTripWithEachMeshWrittenOnce) {
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "s.pbrt") << "LookAt 0 2 -6  0 0.5 0  0 1 0\n"
+                                   "Camera \"perspective\" \"float fov\" 40\n"
+                                   "WorldBegin\n"
+                                   "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
+                                   "ObjectBegin \"tile\"\n"
+                                   "  Rotate 20 0 1 0\n"
+                                   "  Shape \"trianglemesh\" \"point3 P\" [-1 0 -1 1 0 -1 1 0 1 -1 0 1] \"integer indices\" [0 1 2 0 2 3]\n"
+                                   "  Translate 0 0.4 0\n"
+                                   "  Shape \"sphere\" \"float radius\" 0.4\n"
+                                   "ObjectEnd\n"
+                                   "AttributeBegin\n  Translate -1.2 0 0\n  ObjectInstance \"tile\"\nAttributeEnd\n"
+                                   "AttributeBegin\n  Translate 1.2 0 0\n  Scale 0.8 0.8 0.8\n  ObjectInstance \"tile\"\nAttributeEnd\n"
+                                   "AttributeBegin\n  ActiveTransform EndTime\n  Translate 0.4 0 0\n  ActiveTransform All\n"
+                                   "  Translate 0 0 2\n  ObjectInstance \"tile\"\nAttributeEnd\n";
+  SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
+  ASSERT_EQ(s.instances.size(), 3u);
+  write_scene_json(s, dir / "s.json");
+  std::size_t meshes = 0;
+  for (const auto& e : fs::directory_iterator(dir / "s.meshes")) meshes += e.path().extension() == ".obj";
+  EXPECT_EQ(meshes, 1u);  // the tile, once
+  SceneDesc back = load_scene(dir / "s.json");
+  ASSERT_EQ(back.prototypes.size(), 1u);
+  EXPECT_EQ(back.prototypes[0].shapes.size(), 2u);
+  ASSERT_EQ(back.instances.size(), 3u);
+  EXPECT_EQ(back.instances[2].motion.size(), 2u);
+  EXPECT_TRUE(back.shapes.empty());
+  EXPECT_LT(image_difference(s, back), 1e-3);
+  fs::remove_all(dir);
+}
+
 // The materials and textures of issue 18's second part: a mix (of a thin dielectric and a
 // conductor of textured reflectance and roughness), scale, mix, invert and power textures.
 TEST(SceneWriter, MixThinDielectricAndCombinedTexturesRoundTripToTheSameImage) {

@@ -87,13 +87,25 @@ class Builder {
       camera(d, TransformPair{}, true);
     }
     if (!attr_stack_.empty()) note(attr_stack_.back().first, "AttributeBegin is never closed (ignored)");
-    if (out_.scene.shapes.empty() && out_.scene.delta_lights.empty() && is_black(out_.scene.environment.radiance) &&
-        !out_.scene.environment.has_map())
+    drop_empty_prototypes();
+    if (out_.scene.shapes.empty() && out_.scene.instances.empty() && out_.scene.delta_lights.empty() &&
+        is_black(out_.scene.environment.radiance) && !out_.scene.environment.has_map())
       throw InputError((last_ ? last_->str() : std::string("<pbrt>")) + ": the scene has no shapes and no lights");
     return std::move(out_);
   }
 
  private:
+  // Objects without a shape pdrt renders have no instances (skipped with a note): they go, and
+  // the instances' indices follow.
+  void drop_empty_prototypes() {
+    std::vector<int> index(out_.scene.prototypes.size(), -1);
+    std::vector<PrototypeDesc> kept;
+    for (size_t i = 0; i < out_.scene.prototypes.size(); ++i)
+      if (!out_.scene.prototypes[i].shapes.empty()) index[i] = int(kept.size()), kept.push_back(std::move(out_.scene.prototypes[i]));
+    out_.scene.prototypes = std::move(kept);
+    for (InstanceDesc& in : out_.scene.instances) in.prototype = index[size_t(in.prototype)];
+  }
+
   // ---- reporting
   void report_unused(const std::vector<PbrtParam>& params) {
     for (const PbrtParam& p : params)
@@ -418,8 +430,13 @@ class Builder {
       object_ = d.strings[0];
       object_at_ = d.at;
       if (objects_.count(*object_)) fail(d.at, "object \"" + *object_ + "\" is defined twice");
-      objects_[*object_] = {};
-      object_ctm_ = cur_.ctm;
+      // A prototype (SceneDesc::prototypes): its shapes are stored once, traced through
+      // Embree instances.
+      objects_[*object_] = int(out_.scene.prototypes.size());
+      PrototypeDesc proto;
+      proto.name = *object_;
+      proto.where = d.at.str();
+      out_.scene.prototypes.push_back(std::move(proto));
       return;
     }
     if (n == "ObjectEnd") {
@@ -434,21 +451,19 @@ class Builder {
       if (object_) fail(d.at, "ObjectInstance inside an object definition");
       auto it = objects_.find(d.strings[0]);
       if (it == objects_.end()) fail(d.at, "unknown object \"" + d.strings[0] + "\"");
-      // Instances are copied (pdrt's scene has no instancing yet): instance(t) * object shapes.
-      for (const ShapeDesc& s0 : it->second) {
-        ShapeDesc s = s0;
-        Affine t;
-        std::vector<MotionKey> motion;
-        place(d.at, &t, &motion);
-        if (!s.motion.empty() && !motion.empty()) {
-          note(d.at, "a moving instance of a moving object is not supported (the instance's motion is dropped)");
-          motion.clear();
-        }
-        s.transform = t * s.transform;
-        if (!motion.empty()) s.motion = motion;
-        s.where = d.at.str();
-        out_.scene.shapes.push_back(std::move(s));
+      if (out_.scene.prototypes[size_t(it->second)].shapes.empty()) {
+        note(d.at, "object \"" + d.strings[0] + "\" has no shapes pdrt can render (instance skipped)");
+        return;
       }
+      // pbrt-v4's BasicSceneBuilder::ObjectInstance: render-from-instance is the CTM here (at
+      // the two TransformTimes when it moves), applied on top of the object's shapes' own CTMs.
+      InstanceDesc inst;
+      inst.prototype = it->second;
+      place(d.at, &inst.transform, &inst.motion);
+      if (!inst.motion.empty() && !(times_[0] >= out_.scene.camera.shutter_open && times_[1] <= out_.scene.camera.shutter_close))
+        note(d.at, "motion keys at TransformTimes outside the camera's shutter (the instance's motion is clamped to the shutter)");
+      inst.where = d.at.str();
+      out_.scene.instances.push_back(std::move(inst));
       return;
     }
     fail(d.at, "directive " + n + " is not handled");  // the parser knows no other names
@@ -1197,12 +1212,13 @@ class Builder {
       s.material = current_material();
     }
     if (object_) {
-      // Object space of an instance: the shape relative to the CTM at ObjectBegin.
-      auto inv = object_ctm_.t[0].inverse();
-      if (!inv) fail(d.at, "the transform at ObjectBegin is singular");
-      Mat4 rel = *inv * cur_.ctm.t[0];
-      s.transform = rel.to_affine();
-      objects_[*object_].push_back(std::move(s));
+      // pbrt-v4 keeps the whole CTM at the shape's definition (the CTM at ObjectBegin
+      // included) as the shape's transform within the object; instances apply theirs on top.
+      if (!cur_.ctm.t[0].affine()) fail(d.at, "the current transform is projective; shapes and lights need an affine one");
+      if (moving()) note(d.at, "a moving shape inside an object definition is not supported (its start transform is used)");
+      s.transform = cur_.ctm.t[0].to_affine();
+      s.where = d.at.str();
+      out_.scene.prototypes[size_t(objects_[*object_])].shapes.push_back(std::move(s));
       return;
     }
     place(d.at, &s.transform, &s.motion);
@@ -1219,11 +1235,10 @@ class Builder {
   std::vector<bool> attr_kind_;  // true: TransformBegin
   std::map<std::string, TransformPair> named_;
   std::map<std::string, int> named_materials_;
-  std::map<std::string, std::vector<ShapeDesc>> objects_;
+  std::map<std::string, int> objects_;  // object name -> index in out_.scene.prototypes
   std::optional<std::string> object_;
   PbrtLocation object_at_, camera_at_;
   std::optional<PbrtLocation> last_;
-  TransformPair object_ctm_;
   double times_[2] = {0, 1};
   bool in_world_ = false, camera_seen_ = false;
   float fov_ = 90;
@@ -1274,6 +1289,9 @@ PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool s
   swap_yz.m = {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, 1, 0, 0}}};
   for (ShapeDesc& s : out.scene.shapes)
     if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
+  for (PrototypeDesc& p : out.scene.prototypes)
+    for (ShapeDesc& s : p.shapes)
+      if (s.kind == ShapeDesc::Kind::Sphere) s.transform = s.transform * swap_yz;
   // pbrt's fov spans the film's shorter side; pdrt's is vertical.
   FilmDesc& f = out.scene.film;
   const double half = std::tan(0.5 * b.fov() * kPiD / 180);

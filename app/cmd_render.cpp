@@ -2,6 +2,7 @@
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/atomic_file.h"
 #include "app/commands.h"
+#include "distributed/mpi_process_group.h"
 #include "app/numeric_option.h"
 #include "app/output_path.h"
 #include "renderer/render/sample_budget.h"
@@ -160,17 +161,24 @@ void add_render_command(CLI::App& app) {
     // Ctrl-C from here on gives the partial image, even while the image module loads.
     auto previous = std::signal(SIGINT, on_sigint);
     require_image_io();  // the last check: a missing module is refused before anything is said or rendered
-    if (!o->quiet)
+    // Under mpirun the ranks share the render (docs/distributed.md); rank 0 reports and writes.
+    const bool lead = launcher_rank() == 0, quiet = o->quiet || !lead;
+    if (!quiet)
       std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
                    format_sample_cost(scene_sample_count(scene)).c_str());
 
     auto sampler = make_scene_sampler(scene.sampler);
     RenderOptions ro;
     ro.threads = o->threads;
-    ro.quiet = o->quiet;
+    ro.quiet = quiet;
     ro.cancel = &g_cancel;
+    ro.group = &process_group();
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
+    if (!lead) {
+      if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted");
+      return;
+    }
 
     Metadata md = {{"Software", std::string("pdrt ") + PDRT_VERSION},
                    {"pdrt:version", PDRT_VERSION},
@@ -217,6 +225,12 @@ void add_render_command(CLI::App& app) {
       j["triangles"] = r.stats.triangles;
       j["threads"] = r.stats.threads;
       j["partial"] = r.stats.partial;
+      if (r.stats.ranks.size() > 1) {
+        j["ranks"] = nlohmann::json::array();
+        for (const RankStats& k : r.stats.ranks)
+          j["ranks"].push_back({{"rank", k.rank}, {"seconds", k.seconds}, {"exchange_seconds", k.exchange_seconds},
+                                {"samples", k.samples}, {"rays", k.rays}, {"tiles", k.tiles}, {"bytes_sent", k.bytes_sent}});
+      }
       write_file_atomically(o->stats, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
     }
     std::string names;

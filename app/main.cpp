@@ -1,5 +1,6 @@
 // pdrt: the command-line front end over the sampling and renderer libraries.
 #include "app/commands.h"
+#include "distributed/mpi_process_group.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
 
@@ -11,7 +12,8 @@ namespace {
 
 // Every message quotes user text (paths, arguments, scene strings): one place makes it safe.
 int report(const char* what, int code) {
-  std::fprintf(stderr, "pdrt: %s\n", pdrt::printable(what).c_str());
+  // Under mpirun every rank meets the same error; rank 0 says it.
+  if (pdrt::launcher_rank() == 0) std::fprintf(stderr, "pdrt: %s\n", pdrt::printable(what).c_str());
   return code;
 }
 

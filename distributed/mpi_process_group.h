@@ -12,6 +12,10 @@ namespace pdrt {
 // PMIx's PMIX_RANK in the environment).
 bool launched_by_mpi();
 
+// This process's rank as the launcher's environment gives it (0 without a launcher), known
+// before MPI starts: only rank 0 speaks, so errors found while checking the input print once.
+int launcher_rank();
+
 // Initialises MPI (thread level FUNNELED: only the main thread calls MPI) on first use and
 // finalises it at exit. Errors abort the whole job (MPI_ERRORS_ARE_FATAL): a rank that fails
 // takes the others down instead of leaving them waiting.

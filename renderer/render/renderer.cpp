@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <optional>
 
@@ -210,32 +211,90 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   }
   const int RW = region.width(), RH = region.height();
 
+  // Distributed (docs/distributed.md): tile j of each wave belongs to rank j mod N. After the
+  // wave every rank sends the pixel state of its tiles' footprints (the tile, plus the splat
+  // margin when splatting) and copies the others' into its film. Footprints within a wave are
+  // disjoint and each was computed by one rank exactly as one process computes it, so every
+  // rank holds the single-process film, bit for bit, before the next wave.
+  const LocalProcessGroup alone;
+  const ProcessGroup& group = opt.group ? *opt.group : alone;
+  const int nranks = group.size(), me = group.rank();
+  RankStats mine;
+  mine.rank = me;
+  tbb::enumerable_thread_specific<int64_t> traced(0);
+  const int spread = mode == Reconstruction::Splat ? pr.splat_margin() : 0;  // pixels a tile's splats reach
+  auto footprint = [&](int t) {
+    return PixelRect{std::max((t % tx) * kTile - spread, region.x0), std::min((t % tx) * kTile + kTile + spread, region.x1),
+                     std::max((t / tx) * kTile - spread, region.y0), std::min((t / tx) * kTile + kTile + spread, region.y1)};
+  };
+  // Copies the footprints of `rank`'s tiles of `wave` to (pack) or from (unpack) `bytes`.
+  auto blocks = [&](const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes, bool pack) {
+    std::size_t at = 1;  // bytes[0]: the rank was interrupted
+    for (std::size_t j = std::size_t(rank); j < wave.size(); j += std::size_t(nranks)) {
+      const PixelRect f = footprint(wave[j]);
+      for (Film* fm : {&film, split ? &decision : nullptr}) {
+        if (!fm) continue;
+        for (int y = f.y0; y < f.y1; ++y) {
+          const std::size_t n = sizeof(PixelAccum) * std::size_t(f.width());
+          PixelAccum* row = &fm->at(f.x0 - region.x0, y - region.y0);
+          if (pack) bytes.resize(at + n), std::memcpy(bytes.data() + at, row, n);
+          else std::memcpy(row, bytes.data() + at, n);
+          at += n;
+        }
+      }
+    }
+  };
+
   // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
   auto pass = [&](const char* label, auto&& end_of) {
     std::atomic<bool> cancelled{false};
-    Progress progress(label, double(tiles), opt.quiet);
+    int64_t my_tiles = 0;
+    for (const std::vector<int>& wave : waves) my_tiles += (int64_t(wave.size()) + nranks - 1 - me) / nranks;
+    Progress progress(label, double(my_tiles), opt.quiet || me != 0);
     for (const std::vector<int>& wave : waves) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, wave.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t j = r.begin(); j != r.end(); ++j) {
+      std::vector<std::size_t> own;
+      for (std::size_t j = std::size_t(me); j < wave.size(); j += std::size_t(nranks)) own.push_back(j);
+      mine.tiles += int64_t(own.size());
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, own.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) {
           if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
             cancelled = true;
             return;
           }
-          const int t = wave[j];
+          const int t = wave[own[k]];
           int x0 = std::max((t % tx) * kTile, region.x0), y0 = std::max((t / tx) * kTile, region.y0);
           int x1 = std::min((t % tx) * kTile + kTile, region.x1), y1 = std::min((t / tx) * kTile + kTile, region.y1);
           int64_t& local = rays.local();
           PixelSampleState ps(sampler);
           std::optional<PixelSampleState> pd;
           if (decider) pd.emplace(*decider);
+          int64_t& count = traced.local();
           for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-              int64_t begin = film.at(x - region.x0, y - region.y0).prefix, end = end_of(x - region.x0, y - region.y0);
-              if (end > begin) local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps, pd ? &*pd : nullptr);
+              PixelAccum& px = film.at(x - region.x0, y - region.y0);
+              int64_t begin = px.prefix, end = end_of(x - region.x0, y - region.y0);
+              if (end <= begin) continue;
+              const int64_t before = px.traced + (split ? decision.at(x - region.x0, y - region.y0).traced : 0);
+              local += pr.run(x, y, begin, end, film, split ? &decision : nullptr, ps, pd ? &*pd : nullptr);
+              count += px.traced + (split ? decision.at(x - region.x0, y - region.y0).traced : 0) - before;
             }
           progress.advance();
         }
       });
+      if (nranks > 1) {
+        // Every rank takes part in every exchange, interrupted or not, so none waits forever;
+        // after one that any rank marks interrupted, all stop.
+        const auto e0 = std::chrono::steady_clock::now();
+        std::vector<std::byte> out(1, std::byte(cancelled ? 1 : 0));
+        blocks(wave, me, out, true);
+        mine.bytes_sent += int64_t(out.size()) * (nranks - 1);
+        std::vector<std::vector<std::byte>> in = group.all_gather(out);
+        for (int r = 0; r < nranks; ++r) {
+          if (in[std::size_t(r)][0] != std::byte(0)) cancelled = true;
+          if (r != me) blocks(wave, r, in[std::size_t(r)], false);
+        }
+        mine.exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count();
+      }
       if (cancelled) break;
     }
     stopped = stopped || cancelled;
@@ -302,7 +361,22 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.build_seconds = build_seconds;
   res.stats.cpu_seconds = process_cpu_seconds() - cpu0;
   res.stats.build_cpu_seconds = build_cpu_seconds;
-  for (int64_t r : rays) res.stats.rays += r;
+  for (int64_t r : rays) mine.rays += r;
+  for (int64_t n : traced) mine.samples += n;
+  mine.seconds = res.stats.seconds - build_seconds;
+  res.stats.ranks = {mine};
+  if (nranks > 1) {
+    // Every rank's stats on every rank; the ray total is their sum (integers: exact).
+    std::vector<std::byte> out(sizeof(RankStats));
+    std::memcpy(out.data(), &mine, sizeof mine);
+    res.stats.ranks.clear();
+    for (const std::vector<std::byte>& b : group.all_gather(out)) {
+      RankStats r;
+      std::memcpy(&r, b.data(), sizeof r);
+      res.stats.ranks.push_back(r);
+    }
+  }
+  for (const RankStats& r : res.stats.ranks) res.stats.rays += r.rays;
   int64_t crop_samples = 0;  // the margin's samples are work done, but not the image's spp
   for (int y = 0; y < RH; ++y)
     for (int x = 0; x < RW; ++x) {

@@ -3,6 +3,7 @@
 // sampler in index order, so the image is bit-identical for a seed at any thread count.
 #include "renderer/render/embree_device.h"
 #include "renderer/render/film.h"
+#include "renderer/render/process_group.h"
 #include "sampling/samplers/sampler.h"
 #include "renderer/scene/scene_desc.h"
 
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pdrt {
 
@@ -17,6 +19,20 @@ struct RenderOptions {
   int threads = 0;                        // 0 = all hardware threads
   bool quiet = false;                     // no progress on stderr
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
+  // The processes sharing the render (docs/distributed.md); nullptr = this one alone. Every
+  // process returns the same image, bit for bit the single process's.
+  const ProcessGroup* group = nullptr;
+};
+
+// One process's share of a distributed render.
+struct RankStats {
+  int rank = 0;
+  double seconds = 0;      // rendering, after the scene build (exchanges included)
+  double exchange_seconds = 0;  // of that, waiting for and copying the other ranks' blocks
+  int64_t samples = 0;     // camera samples this rank traced
+  int64_t rays = 0;
+  int64_t tiles = 0;       // tile passes it rendered
+  int64_t bytes_sent = 0;  // its blocks' pixel state, sent to every other rank
 };
 
 struct RenderStats {
@@ -33,6 +49,7 @@ struct RenderStats {
   std::size_t triangles = 0;
   int threads = 0;         // worker threads the render ran on (options' 0 resolved)
   SamplerProfile sampler_profile;  // CPU ticks of the passes, and those spent computing sample values
+  std::vector<RankStats> ranks;    // per process, by rank (one entry when not distributed)
 };
 
 struct RenderResult {

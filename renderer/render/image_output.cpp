@@ -117,35 +117,11 @@ void write_linear_rgb(const std::filesystem::path& path, int width, int height, 
 }
 
 Image read_image_rgb(const std::filesystem::path& path) {
-  struct Buffer {
-    std::vector<float> px;
-    int width = 0, height = 0, channels = 0;
-  } buf;
-  PdrtImageRead r{};
-  r.context = &buf;
-  r.alloc = [](void* ctx, int w, int h, int c) -> float* {
-    auto* b = static_cast<Buffer*>(ctx);
-    try {
-      b->px.resize(std::size_t(w) * h * c);
-    } catch (const std::bad_alloc&) {
-      return nullptr;
-    }
-    b->width = w, b->height = h, b->channels = c;
-    return b->px.data();
-  };
-  char error[1024];
-  if (image_module().read(path.c_str(), &r, error, sizeof error) != 0) throw InputError(path.string() + ": " + error);
+  LinearRgbImage in;
+  std::string reason;
+  if (!read_linear_rgb(path, 0, &in, &reason)) throw InputError(path.string() + ": " + reason);
   Image img;
-  img.width = buf.width, img.height = buf.height;
-  const int nc = buf.channels;
-  const bool srgb = r.integer_format != 0;
-  auto decode = [&](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
-  img.rgb.resize(std::size_t(buf.width) * buf.height * 3);
-  for (std::size_t i = 0; i < img.rgb.size() / 3; ++i)
-    for (int c = 0; c < 3; ++c) {
-      float v = buf.px[i * nc + std::min(c, nc - 1)];
-      img.rgb[3 * i + c] = srgb ? decode(v) : v;
-    }
+  img.width = in.width, img.height = in.height, img.rgb = std::move(in.rgb);
   return img;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // Reading the image of an environment light (docs/scene-format.md, "environment") through
 // the image module (OpenImageIO, loaded on first use): linear RGB floats, top row first.
-// One channel is grey; two or more give R, G, B from the first three (missing ones repeat
-// the last); 8- and 16-bit integer files are sRGB-decoded, as for images everywhere else.
+// The channels and the sRGB decoding are read_linear_rgb's (image_module.h), as for every
+// image pdrt reads.
 // Finding the file: the scene's directory first, then the generated assets (asset_path.h).
+#include "renderer/render/image_module.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,10 +16,7 @@ namespace pdrt {
 // 130 MB of sampling tables).
 inline constexpr long long kMaxEnvironmentTexels = 1ll << 24;
 
-struct EnvironmentImage {
-  int width = 0, height = 0;
-  std::vector<float> rgb;
-};
+using EnvironmentImage = LinearRgbImage;
 
 // False with a one-line reason (without the path) when the file cannot be read.
 bool read_environment_image(const std::filesystem::path& path, EnvironmentImage* out, std::string* reason);

@@ -23,7 +23,8 @@ struct PbrtParam {
   std::vector<std::string> strings;  // string, texture, spectrum given by name or file
   std::vector<bool> bools;
   mutable bool used = false;
-  std::string where() const { return at.str() + ": \"" + type + " " + name + "\""; }
+  std::string quoted() const { return "\"" + type + " " + name + "\""; }  // "rgb L", quotes included
+  std::string where() const { return at.str() + ": " + quoted(); }
 };
 
 // The declared type's canonical name (point -> point3, normal -> normal3, vector -> vector3,

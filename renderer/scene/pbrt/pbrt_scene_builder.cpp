@@ -109,7 +109,7 @@ class Builder {
   // ---- reporting
   void report_unused(const std::vector<PbrtParam>& params) {
     for (const PbrtParam& p : params)
-      if (!p.used) note(p.at, "\"" + p.type + " " + p.name + "\" is not used by pdrt (ignored)");
+      if (!p.used) note(p.at, p.quoted() + " is not used by pdrt (ignored)");
   }
   void note(const PbrtLocation& at, const std::string& what) {
     std::string line = at.str() + ": " + what;
@@ -156,7 +156,7 @@ class Builder {
     const std::string type = pbrt_canonical_type(p->type);
     p->used = true;
     if (type == "rgb") {
-      if (p->numbers.size() != 3) fail(p->at, p->where().substr(p->at.str().size() + 2) + " needs 3 values, got " + std::to_string(p->numbers.size()));
+      if (p->numbers.size() != 3) fail(p->at, p->quoted() + " needs 3 values, got " + std::to_string(p->numbers.size()));
       Vec3 c{float(p->numbers[0]), float(p->numbers[1]), float(p->numbers[2])};
       for (int i = 0; i < 3; ++i)
         if (!(c[i] >= 0)) fail(p->at, "\"" + p->type + " " + name + "\" must have components >= 0, got " + fmt(c[i]));
@@ -187,7 +187,7 @@ class Builder {
       if (auto t = texture_ref(*p, "spectrum")) bind_to_->push_back({bind_param_, *t});
       return fallback;
     }
-    fail(p->at, p->where().substr(p->at.str().size() + 2) + " must be rgb, spectrum, blackbody or a texture");
+    fail(p->at, p->quoted() + " must be rgb, spectrum, blackbody or a texture");
   }
 
   // "reflectance": an rgb/spectrum, or a texture bound to the material's albedo.

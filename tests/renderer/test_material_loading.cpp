@@ -4,6 +4,7 @@
 // lines 1-3 are the head, the materials start on line 4).
 #include "renderer/scene/scene_loader.h"
 #include "sampling/core/errors.h"
+#include "tests/support/scene_file_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -17,39 +18,7 @@ using namespace pdrt;
 
 namespace {
 
-class MaterialLoading : public ::testing::Test {
- protected:
-  fs::path dir() const {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() / ("pdrt_matload_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-  }
-  fs::path scene(const std::string& rest) {
-    fs::create_directories(dir());
-    std::ofstream(dir() / "s.json") << "{\n"
-                                       "  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-                                       "  \"film\": {\"width\": 8, \"height\": 8},\n" +
-                                           rest;
-    return dir() / "s.json";
-  }
-  std::string error(const fs::path& f) {
-    try {
-      load_scene(f);
-    } catch (const InputError& e) {
-      std::string m = e.what();
-      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-      return m;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir(), ec);
-  }
-};
-
-#define EXPECT_ERROR(f, text) \
-  do { std::string m_ = error(f); EXPECT_NE(m_.find(text), std::string::npos) << m_; } while (0)
+class MaterialLoading : public test::SceneFileTest {};
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 // file:line:col and the key. Positions are counted by hand (lines from 1 at the opening brace).
 #include "renderer/scene/scene_loader.h"
 #include "sampling/core/errors.h"
+#include "tests/support/scene_file_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -16,44 +17,7 @@ using namespace pdrt;
 
 namespace {
 
-class TextureLoading : public ::testing::Test {
- protected:
-  fs::path dir() const {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() / ("pdrt_texload_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-  }
-  // Lines 1-3 are the head; `rest` starts on line 4.
-  fs::path scene(const std::string& rest) {
-    fs::create_directories(dir());
-    std::ofstream(dir() / "s.json") << "{\n"
-                                       "  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-                                       "  \"film\": {\"width\": 8, \"height\": 8},\n" +
-                                           rest;
-    return dir() / "s.json";
-  }
-  void file(const std::string& name, const std::string& text) {
-    fs::create_directories(dir());
-    std::ofstream(dir() / name, std::ios::binary) << text;
-  }
-  std::string error(const fs::path& f) {
-    try {
-      load_scene(f);
-    } catch (const InputError& e) {
-      std::string m = e.what();
-      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-      return m;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return "";
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir(), ec);
-  }
-};
-
-#define EXPECT_ERROR(f, text) \
-  do { std::string m_ = error(f); EXPECT_NE(m_.find(text), std::string::npos) << m_; } while (0)
+class TextureLoading : public test::SceneFileTest {};
 
 }  // namespace
 

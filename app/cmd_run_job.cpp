@@ -8,6 +8,7 @@
 #include "renderer/render/image_output.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/printable.h"
 
 #include <chrono>
 #include <cstdio>
@@ -59,7 +60,16 @@ void add_run_job_command(CLI::App& app) {
     p.options.quiet = true;  // the job's own progress lines below say enough
     for (int i : mine) {
       const auto t0 = std::chrono::steady_clock::now();
-      const bool did = run_plan_job(plan, i, p.scene, p.options);
+      bool did = false;
+      try {
+        did = run_plan_job(plan, i, p.scene, p.options);
+      } catch (const std::exception& e) {
+        if (!o->all || process_group().size() == 1) throw;
+        // Only this rank knows: say it here, and end the others rather than let them wait.
+        std::fprintf(stderr, "pdrt: rank %d: job %d (%s): %s\n", process_group().rank(), i,
+                     describe(plan.jobs[std::size_t(i)]).c_str(), printable(e.what()).c_str());
+        abort_process_group(1);
+      }
       if (!o->quiet) {
         const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (did) std::fprintf(stderr, "pdrt run-job: job %d (%s) done in %.2f s\n", i, describe(plan.jobs[std::size_t(i)]).c_str(), s);

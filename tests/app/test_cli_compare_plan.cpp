@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <fstream>
 #include <set>
 
@@ -251,4 +252,24 @@ TEST(CliComparePlan, MpirunRanksShareTheJobsOnce) {
   EXPECT_NE(log.find("10 of 10 jobs finished"), std::string::npos) << log;
   auto r = run_pdrt("collect " + plan + " --no-plots --quiet");
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// A job that fails on one rank ends the whole run, naming the rank and the job, instead of
+// leaving the other ranks waiting.
+TEST(CliComparePlan, MpirunJobFailureNamesTheRankAndJob) {
+  const fs::path d = scratch_dir("plan_mpirun_fail");
+  write_scene(d);
+  const std::string plan = (d / "plan").string();
+  ASSERT_EQ(write_plan(d, " --samplers jitter,poisson --spp 2,8 --seeds 2 --reference-spp 64").exit_code, 0);
+  fs::create_directories(d / "plan" / "jobs" / "0007.exr");  // its image cannot be written
+  const fs::path err = d / "mpirun.txt";
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_NE(shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe --bind-to none "
+                  "--timeout 120 -np 2 " + kPdrt + " run-job " + plan + " --all --threads 1 >/dev/null 2>'" +
+                  err.string() + "'"),
+            0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30);
+  const std::string log = slurp(err);
+  // Job 7 is rank 1's in the longest-first share (not rank 0's, whose errors main prints anyway).
+  EXPECT_NE(log.find("pdrt: rank 1: job 7 (poisson 2 spp seed 1): "), std::string::npos) << log;
 }

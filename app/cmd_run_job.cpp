@@ -45,35 +45,40 @@ void add_run_job_command(CLI::App& app) {
       throw InputError(o->dir + "/plan.json: request: " + e.what());
     }
     const bool lead = launcher_rank() == 0;
-    r.quiet = o->quiet || !lead;
     r.threads = o->threads;
-    PreparedCompare p = prepare_compare(r, false);
-    check_plan_scene(plan, p.options);
-    require_image_io();
     std::vector<int> mine;
     if (o->all) {
       const ProcessGroup& group = process_group();
-      mine = jobs_for_rank(plan, p.options, group.rank(), group.size());
+      mine = jobs_for_rank(plan, compare_options(r), group.rank(), group.size());
     } else {
       for (long long i : o->indices) mine.push_back(int(i));
     }
-    p.options.quiet = true;  // the job's own progress lines below say enough
+    auto label = [&](int i) { return describe(plan.jobs[std::size_t(i)]); };
+    // Finished jobs need no scene: a resumed sweep skips them without loading it.
+    std::vector<int> todo;
     for (int i : mine) {
-      const auto t0 = std::chrono::steady_clock::now();
-      bool did = false;
-      try {
-        did = run_plan_job(plan, i, p.scene, p.options);
-      } catch (const std::exception& e) {
-        if (!o->all || process_group().size() == 1) throw;
-        // Only this rank knows: say it here, and end the others rather than let them wait.
-        std::fprintf(stderr, "pdrt: rank %d: job %d (%s): %s\n", process_group().rank(), i,
-                     describe(plan.jobs[std::size_t(i)]).c_str(), printable(e.what()).c_str());
-        abort_process_group(1);
-      }
-      if (!o->quiet) {
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        if (did) std::fprintf(stderr, "pdrt run-job: job %d (%s) done in %.2f s\n", i, describe(plan.jobs[std::size_t(i)]).c_str(), s);
-        else std::fprintf(stderr, "pdrt run-job: job %d (%s) had already finished\n", i, describe(plan.jobs[std::size_t(i)]).c_str());
+      if (!job_finished(plan, i)) todo.push_back(i);
+      else if (!o->quiet) std::fprintf(stderr, "pdrt run-job: job %d (%s) had already finished\n", i, label(i).c_str());
+    }
+    if (!todo.empty()) {
+      PreparedCompare p = prepare_compare(r, false);
+      check_plan_scene(plan, p.options);
+      require_image_io();
+      p.options.quiet = true;  // the job's own progress lines below say enough
+      for (int i : todo) {
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+          run_plan_job(plan, i, p.scene, p.options);
+        } catch (const std::exception& e) {
+          if (!o->all || process_group().size() == 1) throw;
+          // Only this rank knows: say it here, and end the others rather than let them wait.
+          std::fprintf(stderr, "pdrt: rank %d: job %d (%s): %s\n", process_group().rank(), i, label(i).c_str(),
+                       printable(e.what()).c_str());
+          abort_process_group(1);
+        }
+        if (!o->quiet)
+          std::fprintf(stderr, "pdrt run-job: job %d (%s) done in %.2f s\n", i, label(i).c_str(),
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }
     }
     if (o->all) {

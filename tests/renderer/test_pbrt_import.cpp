@@ -52,6 +52,26 @@ void expect_near(const Vec3& a, const Vec3& b, float tol, const std::string& wha
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tol) << what << " component " << i;
 }
 
+// The imported scene `p` renders the hand-built `j` (48 x 32): every pixel within 1e-4 of the
+// mean (float rounding in transforms), and the image not black. `j` takes p's camera up (pbrt's
+// is the LookAt frame's, orthogonalised to the last bit differently) and both a pinhole at the
+// same look-at distance (pbrt's 1e6 focal distance is one either way).
+void expect_renders_agree(SceneDesc p, SceneDesc j) {
+  j.camera.up = p.camera.up;
+  p.camera.focus_distance = 0;
+  j.camera.focus_distance = 0;
+  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
+  const Image a = render_quietly(p).image, b = render_quietly(j).image;
+  double worst = 0, sum = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 48; ++x) {
+      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
+      sum += mean_rgb(b, x, y);
+    }
+  EXPECT_GT(sum, 0);
+  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
+}
+
 }  // namespace
 
 TEST(PbrtImport, LookAtCameraIsMirroredLikePbrtsLeftHandedCamera) {
@@ -415,15 +435,7 @@ TEST(PbrtImport, ObjectInstancesRenderTheImageOfTheirJsonEquivalent) {
   }
   ASSERT_EQ(im.scene.prototypes.size(), 1u);
   ASSERT_EQ(im.scene.instances.size(), 2u);
-  Image a = render_quietly(im.scene).image, b = render_quietly(j).image;
-  double worst = 0, sum = 0;
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 48; ++x) {
-      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
-      sum += mean_rgb(b, x, y);
-    }
-  EXPECT_GT(sum, 0);
-  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
+  expect_renders_agree(im.scene, j);
 }
 
 TEST(PbrtImport, RendersTheImageOfItsJsonEquivalent) {
@@ -469,19 +481,7 @@ TEST(PbrtImport, RendersTheImageOfItsJsonEquivalent) {
   // same way, but not to the same last bit.
   EXPECT_NEAR(dot(p.camera.up, normalize(j.camera.look_at - j.camera.position)), 0, 1e-6);
   EXPECT_NEAR(dot(p.camera.up, Vec3(0, 1, 0)), std::cos(std::atan2(0.5, 6)), 1e-6);
-  j.camera.up = p.camera.up;
-  p.camera.focus_distance = 0;  // pbrt's 1e6 focal distance: a pinhole either way
-  j.camera.focus_distance = 0;
-  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
-  Image a = render_quietly(p).image, b = render_quietly(j).image;
-  double worst = 0, sum = 0;
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 48; ++x) {
-      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
-      sum += mean_rgb(b, x, y);
-    }
-  EXPECT_GT(sum, 0);
-  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
+  expect_renders_agree(p, j);
 }
 
 namespace {
@@ -888,19 +888,7 @@ TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent)
 
   SceneDesc& p = im.scene;
   ASSERT_EQ(p.materials.size(), j.materials.size());
-  j.camera.up = p.camera.up;
-  p.camera.focus_distance = 0;
-  j.camera.focus_distance = 0;
-  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
-  Image a = render_quietly(p).image, b = render_quietly(j).image;
-  double worst = 0, sum = 0;
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 48; ++x) {
-      worst = std::max(worst, std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y)));
-      sum += mean_rgb(b, x, y);
-    }
-  EXPECT_GT(sum, 0);
-  EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (48 * 32)));
+  expect_renders_agree(p, j);
 }
 
 // --- orthographic camera, screen window, frame aspect ratio, crop window ---------------------

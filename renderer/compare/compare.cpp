@@ -172,6 +172,15 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
     if (!o.quiet) std::fprintf(stderr, "pdrt compare: %s\n", s.c_str());
   };
 
+  // A job's render; a plan's job file of another size is refused rather than misread.
+  auto get = [&](const CompareJob& jb) {
+    CompareRender r = source(jb);
+    if (r.image.width != W || r.image.height != H)
+      throw InputError(describe(jb) + ": its image is " + std::to_string(r.image.width) + "x" +
+                       std::to_string(r.image.height) + ", the film " + std::to_string(W) + "x" + std::to_string(H));
+    return r;
+  };
+
   // The reference (compare_job.h): two halves whose difference measures its noise.
   const ReferenceSetup rs = reference_setup(base, o);
   const auto& half_spp = rs.half_spp;
@@ -183,8 +192,7 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
   for (int h = 0; h < 2; ++h) {
     CompareJob jb;
     jb.kind = CompareJob::Kind::Reference, jb.half = h;
-    CompareRender r = source(jb);
-    if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
+    CompareRender r = get(jb);
     halves[h] = std::move(r.image);
     ref_file[h] = r.file;
     cached = cached && r.cached;
@@ -219,8 +227,7 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
       for (int k = 0; k < o.seeds; ++k) {
         CompareJob jb;
         jb.kind = CompareJob::Kind::Uniform, jb.sampler = name, jb.spp = n, jb.seed_index = k;
-        CompareRender r = source(jb);
-        if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
+        CompareRender r = get(jb);
         threads_used = r.threads;
         SeedRun sr;
         sr.seed = compare_seed(base.sampler.seed, k);
@@ -469,8 +476,7 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
         const double threshold = sweep_threshold(base, o, k);
         CompareJob jb;
         jb.kind = CompareJob::Kind::Adaptive, jb.sampler = name, jb.sweep_step = k;
-        const CompareRender r = source(jb);
-        if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
+        const CompareRender r = get(jb);
         const double e = corrected_rmse(r.image), uniform = loglog_interp(x, y, r.spp_mean);
         cost.push_back(double(r.samples)), err.push_back(e);
         sweep.push_back({{"sampler", name},

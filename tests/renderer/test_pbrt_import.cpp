@@ -52,6 +52,42 @@ void expect_near(const Vec3& a, const Vec3& b, float tol, const std::string& wha
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tol) << what << " component " << i;
 }
 
+// The render comparisons' pbrt header (camera, 48 x 32 film, 8 spp, depth 4, box filter) and
+// lamp, and their hand-built twins.
+const std::string kTwinHeader =
+    "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
+    "Camera \"perspective\" \"float fov\" 35\n"
+    "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32\n"
+    "Sampler \"independent\" \"integer pixelsamples\" 8\n"
+    "Integrator \"path\" \"integer maxdepth\" 4\n"
+    "PixelFilter \"box\"\n"
+    "WorldBegin\n";
+const std::string kTwinLamp =
+    "AttributeBegin\n"
+    "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+    "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
+    "AttributeEnd\n";
+
+SceneDesc twin_scene() {
+  SceneDesc j = base_scene(48, 32, 8);
+  j.camera.position = {0, 1, -6};
+  j.camera.look_at = {0, 0.5, 0};
+  j.camera.vfov_deg = 35;
+  j.camera.flip_x = true;  // pbrt's camera space is left-handed
+  j.sampler.type = "random";
+  j.sampler.seed = 0;
+  j.integrator.max_depth = 4;
+  return j;
+}
+
+void add_twin_lamp(SceneDesc& j) {
+  ShapeDesc lq;
+  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
+  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
+  lq.material = add_material(j, emitter(4));
+  j.shapes.push_back(lq);
+}
+
 // The imported scene `p` renders the hand-built `j` (48 x 32): every pixel within 1e-4 of the
 // mean (float rounding in transforms), and the image not black. `j` takes p's camera up (pbrt's
 // is the LookAt frame's, orthogonalised to the last bit differently) and both a pinhole at the
@@ -387,18 +423,7 @@ TEST(PbrtImport, WhatObjectInstancesCannotHoldIsReported) {
 // prototypes and instances gives (identical descriptions: the same image bit for bit), and
 // the scene with the shapes copied instead within the instancing tolerance (test_instances.cpp).
 TEST(PbrtImport, ObjectInstancesRenderTheImageOfTheirJsonEquivalent) {
-  PbrtImport im = import(
-      "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
-      "Camera \"perspective\" \"float fov\" 35\n"
-      "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32\n"
-      "Sampler \"independent\" \"integer pixelsamples\" 8\n"
-      "Integrator \"path\" \"integer maxdepth\" 4\n"
-      "PixelFilter \"box\"\n"
-      "WorldBegin\n"
-      "AttributeBegin\n"
-      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
-      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
-      "AttributeEnd\n"
+  PbrtImport im = import(kTwinHeader + kTwinLamp +
       "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
       "ObjectBegin \"ball\"\n"
       "  Translate 0 0.5 0\n"
@@ -412,16 +437,9 @@ TEST(PbrtImport, ObjectInstancesRenderTheImageOfTheirJsonEquivalent) {
       "  Translate 0.8 0 0\n"
       "  ObjectInstance \"ball\"\n"
       "AttributeEnd\n");
-  SceneDesc j = base_scene(48, 32, 8);
+  SceneDesc j = twin_scene();
   j.camera = im.scene.camera;
-  j.sampler.type = "random";
-  j.sampler.seed = 0;
-  j.integrator.max_depth = 4;
-  ShapeDesc lq;
-  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
-  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
-  lq.material = add_material(j, emitter(4));
-  j.shapes.push_back(lq);
+  add_twin_lamp(j);
   Material red = diffuse(0);
   red.albedo = {0.6f, 0.5f, 0.4f};
   PrototypeDesc ball;
@@ -441,37 +459,14 @@ TEST(PbrtImport, ObjectInstancesRenderTheImageOfTheirJsonEquivalent) {
 TEST(PbrtImport, RendersTheImageOfItsJsonEquivalent) {
   // The same small scene written both ways: a pbrt file, and the SceneDesc a JSON file would
   // give. Identical descriptions render identical images (bit for bit: same floats).
-  PbrtImport im = import(
-      "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
-      "Camera \"perspective\" \"float fov\" 35\n"
-      "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32\n"
-      "Sampler \"independent\" \"integer pixelsamples\" 8\n"
-      "Integrator \"path\" \"integer maxdepth\" 4\n"
-      "PixelFilter \"box\"\n"
-      "WorldBegin\n"
-      "AttributeBegin\n"
-      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
-      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
-      "AttributeEnd\n"
+  PbrtImport im = import(kTwinHeader + kTwinLamp +
       "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
       "Translate 0 0.5 0\n"
       "Shape \"sphere\" \"float radius\" 0.5\n");
-  SceneDesc j = base_scene(48, 32, 8);
-  j.camera.position = {0, 1, -6};
-  j.camera.look_at = {0, 0.5, 0};
-  j.camera.vfov_deg = 35;
-  j.camera.flip_x = true;
-  j.sampler.type = "random";
-  j.sampler.seed = 0;
-  j.integrator.max_depth = 4;
+  SceneDesc j = twin_scene();
   j.film.filter.type = FilterType::Box;
   j.film.filter.radius = 0.5f;
-  Material light = emitter(4);
-  ShapeDesc lq;
-  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
-  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
-  lq.material = add_material(j, light);
-  j.shapes.push_back(lq);
+  add_twin_lamp(j);
   Material red = diffuse(0);
   red.albedo = {0.6f, 0.5f, 0.4f};
   j.shapes.push_back(sphere({0, 0.5f, 0}, 0.5f, add_material(j, red)));
@@ -829,35 +824,18 @@ TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {
 // sphere of a mix of diffuse and thin dielectric, a floor of a conductor with a texture
 // roughness (pbrt 0.04, remapped: pdrt roughness 0.04^(1/4)) and a texture reflectance.
 TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent) {
-  PbrtImport im = import(
-      "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
-      "Camera \"perspective\" \"float fov\" 35\n"
-      "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32\n"
-      "Sampler \"independent\" \"integer pixelsamples\" 8\n"
-      "Integrator \"path\" \"integer maxdepth\" 4\n"
-      "PixelFilter \"box\"\n"
-      "WorldBegin\n"
+  PbrtImport im = import(kTwinHeader +
       "MakeNamedMaterial \"d\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
       "MakeNamedMaterial \"t\" \"string type\" \"thindielectric\" \"float eta\" 1.5\n"
       "Texture \"r\" \"float\" \"constant\" \"float value\" 0.04\n"
       "Texture \"f0\" \"spectrum\" \"constant\" \"rgb value\" [0.9 0.6 0.3]\n"
-      "AttributeBegin\n"
-      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
-      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
-      "AttributeEnd\n"
+      + kTwinLamp +
       "Material \"conductor\" \"texture roughness\" \"r\" \"texture reflectance\" \"f0\"\n"
       "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3  3 0 -3  3 0 3  -3 0 3] \"integer indices\" [0 2 1 0 3 2]\n"
       "Material \"mix\" \"string materials\" [\"d\" \"t\"] \"float amount\" 0.3\n"
       "Translate 0 0.5 0\n"
       "Shape \"sphere\" \"float radius\" 0.5\n");
-  SceneDesc j = base_scene(48, 32, 8);
-  j.camera.position = {0, 1, -6};
-  j.camera.look_at = {0, 0.5, 0};
-  j.camera.vfov_deg = 35;
-  j.camera.flip_x = true;
-  j.sampler.type = "random";
-  j.sampler.seed = 0;
-  j.integrator.max_depth = 4;
+  SceneDesc j = twin_scene();
   // Materials in the importer's order (a mix's choice hashes its index): d, t, light, floor, mix.
   Material d = diffuse(0);
   d.albedo = {0.6f, 0.5f, 0.4f};
@@ -867,11 +845,7 @@ TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent)
   t.albedo = Vec3(1.0f);
   t.ior = 1.5f;
   const int ti = add_material(j, t);
-  ShapeDesc lq;
-  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
-  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
-  lq.material = add_material(j, emitter(4));
-  j.shapes.push_back(lq);
+  add_twin_lamp(j);
   Material floor;
   floor.type = MaterialType::Conductor;
   floor.roughness = std::pow(0.04f, 0.25f);
@@ -1024,10 +998,7 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
       "Integrator \"path\" \"integer maxdepth\" 4\n"
       "PixelFilter \"box\"\n"
       "WorldBegin\n"
-      "AttributeBegin\n"
-      "  AreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
-      "  Shape \"trianglemesh\" \"point3 P\" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] \"integer indices\" [0 1 2 0 2 3]\n"
-      "AttributeEnd\n"
+      + kTwinLamp +
       "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
       "Translate 0.4 0.5 0\n"
       "Shape \"sphere\" \"float radius\" 0.5\n");
@@ -1043,11 +1014,7 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
   j.sampler.type = "random";
   j.sampler.seed = 0;
   j.integrator.max_depth = 4;
-  ShapeDesc lq;
-  lq.mesh.positions = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}};
-  lq.mesh.indices = {0, 1, 2, 0, 2, 3};
-  lq.material = add_material(j, emitter(4));
-  j.shapes.push_back(lq);
+  add_twin_lamp(j);
   Material red = diffuse(0);
   red.albedo = {0.6f, 0.5f, 0.4f};
   j.shapes.push_back(sphere({0.4f, 0.5f, 0}, 0.5f, add_material(j, red)));

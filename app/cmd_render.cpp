@@ -29,7 +29,7 @@ namespace pdrt::cli {
 namespace {
 
 std::atomic<bool> g_cancel{false};
-extern "C" void on_sigint(int) { g_cancel.store(true); }
+extern "C" void on_interrupt(int) { g_cancel.store(true); }
 
 // Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
 // power-of-two bins [2^k, 2^(k+1)); the first bin, [0, 2), also holds pixels an interrupted
@@ -158,8 +158,16 @@ void add_render_command(CLI::App& app) {
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
 
+    // MPI starts here under mpirun (before the handlers below, so that they are pdrt's).
+    const ProcessGroup& group = process_group();
     // Ctrl-C from here on gives the partial image, even while the image module loads.
-    auto previous = std::signal(SIGINT, on_sigint);
+    auto previous = std::signal(SIGINT, on_interrupt);
+    // Under mpirun, Ctrl-C reaches the ranks as SIGTERM (Open MPI's mpirun ends the job so, a
+    // SIGKILL following a second later), and mpirun passes SIGUSR1 on without ending the job:
+    // both interrupt like SIGINT (docs/distributed.md).
+    const bool mpi = launched_by_mpi();
+    auto previous_term = mpi ? std::signal(SIGTERM, on_interrupt) : SIG_DFL;
+    auto previous_usr1 = mpi ? std::signal(SIGUSR1, on_interrupt) : SIG_DFL;
     require_image_io();  // the last check: a missing module is refused before anything is said or rendered
     // Under mpirun the ranks share the render (docs/distributed.md); rank 0 reports and writes.
     const bool lead = launcher_rank() == 0, quiet = o->quiet || !lead;
@@ -172,9 +180,10 @@ void add_render_command(CLI::App& app) {
     ro.threads = o->threads;
     ro.quiet = quiet;
     ro.cancel = &g_cancel;
-    ro.group = &process_group();
+    ro.group = &group;
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
+    if (mpi) std::signal(SIGTERM, previous_term), std::signal(SIGUSR1, previous_usr1);
     if (!lead) {
       if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted");
       return;

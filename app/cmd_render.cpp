@@ -162,8 +162,8 @@ void add_render_command(CLI::App& app) {
     const ProcessGroup& group = process_group();
     // Ctrl-C from here on gives the partial image, even while the image module loads.
     auto previous = std::signal(SIGINT, on_interrupt);
-    // Under mpirun, Ctrl-C reaches the ranks as SIGTERM (Open MPI's mpirun ends the job so, a
-    // SIGKILL following a second later), and mpirun passes SIGUSR1 on without ending the job:
+    // Under mpirun, Ctrl-C reaches the ranks as SIGTERM (Open MPI's mpirun ends the job with
+    // it, and a SIGKILL a second later), and mpirun passes SIGUSR1 on without ending the job:
     // both interrupt like SIGINT (docs/distributed.md).
     const bool mpi = launched_by_mpi();
     auto previous_term = mpi ? std::signal(SIGTERM, on_interrupt) : SIG_DFL;

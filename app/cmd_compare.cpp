@@ -1,24 +1,19 @@
 // `pdrt compare`: progressive jitter vs Poisson (and random, Sobol) noise in real images, measured.
 #include "app/commands.h"
+#include "app/compare_request.h"
 #include "app/numeric_option.h"
 #include "app/output_path.h"
+#include "app/python_plots.h"
+#include "renderer/compare/compare_plan.h"
+#include "renderer/render/image_output.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
-#include "renderer/compare/compare.h"
 #include "sampling/core/errors.h"
-#include "sampling/core/hash.h"
-#include "sampling/core/input_file.h"
-#include "app/python_plots.h"
-#include "renderer/render/image_output.h"
-#include "renderer/render/renderer.h"
-#include "renderer/scene/scene_loader.h"
+
+#include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <memory>
-#include <optional>
-#include <sstream>
 
 namespace pdrt::cli {
 
@@ -26,20 +21,18 @@ namespace pdrt::cli {
 inline constexpr IntRange kCompareSeedsRange{1, 1024};
 
 void add_compare_command(CLI::App& app) {
-  struct Opts {
-    std::string scene, out, samplers = "random,jitter,poisson,poisson-02,sobol", spp = "1,4,16,64,256", cache;
-    std::optional<int> width, height;
-    int reference_spp = 4096, threads = 0, seeds = 4;
-    double adaptive_threshold = 0;
-    int adaptive_target_spp = 64;
-    std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
-    bool adaptive = false, quiet = false, no_plots = false, allow_long = false, strict = false;
+  struct Opts : CompareRequest {
+    std::string out, plan;
+    bool no_plots = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("compare", "Compare samplers by the error of rendered images against a reference.");
   cmd->add_option("scene", o->scene, "Scene file: pdrt JSON, or pbrt-v4 (*.pbrt)")->required();
   cmd->add_flag("--strict", o->strict, "pbrt scenes: refuse anything pdrt cannot represent instead of listing it");
-  cmd->add_option("--out,-o", o->out, "Output directory (report, images, plots)")->required();
+  auto* out_opt = cmd->add_option("--out,-o", o->out, "Output directory (report, images, plots)");
+  auto* plan_opt = cmd->add_option("--plan", o->plan,
+                  "Write the comparison as a plan of independent jobs into this directory instead of rendering "
+                  "(run them with `pdrt run-job`, then `pdrt collect` writes the report there)");
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
   cmd->add_flag("--adaptive", o->adaptive,
@@ -68,77 +61,44 @@ void add_compare_command(CLI::App& app) {
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--no-plots", o->no_plots, "Skip the matplotlib plots and index.html");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress on stderr");
-  cmd->callback([o] {
-    CompareOptions c;
-    auto split = [](const std::string& s) {
-      std::vector<std::string> v;
-      std::stringstream ss(s);
-      for (std::string t; std::getline(ss, t, ',');) v.push_back(t);
-      return v;
-    };
-    c.samplers = split(o->samplers);
-    c.spp.clear();
-    for (const auto& t : split(o->spp)) c.spp.push_back(int(parse_integer_option("--spp", t, kSppRange)));
-    c.adaptive = o->adaptive;
-    c.adaptive_threshold = o->adaptive_threshold;
-    c.adaptive_metric = o->adaptive_metric;
-    c.adaptive_variance = o->adaptive_variance;
-    c.adaptive_decision = o->adaptive_decision;
-    c.adaptive_target_spp = o->adaptive_target_spp;
-    c.reference_spp = o->reference_spp;
-    c.seeds = o->seeds;
-    c.threads = o->threads;
-    c.quiet = o->quiet;
-    c.out = o->out;
-    c.cache_dir = o->cache;
-    c.scene_label = o->scene;
-    require_output_path("-o/--out", o->out);
-    validate_compare_options(c);
-    Reconstruction recon{};
-    if (!o->reconstruction.empty() && !parse_reconstruction(o->reconstruction, &recon))
-      throw UsageError("--reconstruction: unknown mode \"" + o->reconstruction + "\" (importance, splat, rank)");
+  cmd->callback([o, out_opt, plan_opt] {
+    const bool planning = plan_opt->count() > 0;
+    if (out_opt->count() > 0 && planning)
+      throw UsageError("--out and --plan: give one (a plan's report is written into its directory)");
+    if (out_opt->count() == 0 && !planning) throw UsageError("give --out DIR (the report) or --plan DIR (a plan of jobs)");
+    require_output_path(planning ? "--plan" : "-o/--out", planning ? o->plan : o->out);
+    compare_options(*o);  // usage errors first
     std::string python;
-    if (!o->no_plots) python = find_plot_python();
-
-    SceneDesc scene = load_scene(o->scene, o->strict);
-    {
-      std::ifstream in = open_for_reading(o->scene);
-      std::stringstream ss;
-      ss << in.rdbuf();
-      c.scene_content = ss.str();
+    if (!o->no_plots && !planning) python = find_plot_python();
+    if (planning) {
+      // The jobs run elsewhere and later: absolute paths, the label as given.
+      CompareRequest r = *o;
+      r.label = o->scene;
+      r.scene = std::filesystem::absolute(o->scene).string();
+      if (!r.cache.empty()) r.cache = std::filesystem::absolute(r.cache).string();
+      r.quiet = false;
+      const PreparedCompare p = prepare_compare(r, true);
+      char exe[4096];
+      const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+      const std::string self = n > 0 ? std::string(exe, std::size_t(n)) : std::string("pdrt");
+      const ComparePlan plan = write_compare_plan(o->plan, request_json(r), p.options, self);
+      const std::size_t left = unfinished_jobs(plan).size();
+      if (!o->quiet)
+        std::fprintf(stderr,
+                     "pdrt compare: wrote the plan %s/plan.json: %zu jobs (%zu to run); run them with\n"
+                     "  xargs -P 2 -n 1 %s run-job %s < %s/jobs.txt\n"
+                     "then write the report with `pdrt collect %s` (or see docs/distributed.md)\n",
+                     o->plan.c_str(), plan.jobs.size(), left, self.c_str(), o->plan.c_str(), o->plan.c_str(),
+                     o->plan.c_str());
+      return;
     }
-    // An environment image is part of the scene's content too: a regenerated sky must not
-    // reuse a reference cached for the old one.
-    if (scene.environment.has_map()) {
-      const EnvironmentDesc& e = scene.environment;
-      const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));
-      c.scene_content += "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " +
-                         std::to_string(fnv1a(px));
-    }
-    if (!o->reconstruction.empty()) scene.film.filter.reconstruction = recon;
-    const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;
-    if (c.adaptive && decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
-      throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
-    if (o->width) scene.film.width = *o->width;
-    if (o->height) scene.film.height = *o->height;
-    check_film_memory(scene.film.width, scene.film.height,
-                      o->width || o->height ? "--width/--height" : scene.film.size_where);
-    check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
-                        "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
-                            " pixels x (reference + " + std::to_string(c.seeds) + " seeds x every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),
-                        o->allow_long);
+    PreparedCompare p = prepare_compare(*o, true);
+    p.options.out = o->out;
     require_image_io();
-    std::filesystem::path results = run_compare(scene, c);
-    if (!o->no_plots) {
-      ::setenv("MPLBACKEND", "Agg", 1);
-      const std::string script = std::string(PDRT_SOURCE_DIR) + "/renderer/compare/plot_compare.py";
-      std::string log = (c.out / "plot.log").string();
-      if (run_program({python, script, c.out.string()}, log) != 0)
-        throw std::runtime_error("plotting with " + python + " " + script + " failed (see " + log + ")");
-      std::filesystem::remove(log);
-    }
+    const std::filesystem::path results = run_compare(p.scene, p.options);
+    if (!o->no_plots) write_compare_plots(python, p.options.out);
     if (!o->quiet) std::fprintf(stderr, "pdrt compare: wrote %s and %s\n", results.c_str(),
-                                o->no_plots ? "no plots" : (c.out / "index.html").c_str());
+                                o->no_plots ? "no plots" : (p.options.out / "index.html").c_str());
   });
 }
 

@@ -11,5 +11,7 @@ void add_tables_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
+void add_run_job_command(CLI::App& app);
+void add_collect_command(CLI::App& app);
 
 }  // namespace pdrt::cli

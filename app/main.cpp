@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
   pdrt::cli::add_render_command(app);
   pdrt::cli::add_compare_command(app);
   pdrt::cli::add_convert_command(app);
+  pdrt::cli::add_run_job_command(app);
+  pdrt::cli::add_collect_command(app);
   try {
     check_subcommand(app, argc, argv);
     app.parse(argc, argv);

@@ -70,4 +70,12 @@ const ProcessGroup& process_group() {
   return MpiProcessGroup::instance();
 }
 
+void abort_process_group(int code) {
+  int started = 0, done = 0;
+  MPI_Initialized(&started);
+  MPI_Finalized(&done);
+  if (started && !done) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
+}
+
 }  // namespace pdrt

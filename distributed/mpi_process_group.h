@@ -34,4 +34,8 @@ class MpiProcessGroup final : public ProcessGroup {
 // The group this process belongs to: MPI's under mpirun, else the single local process.
 const ProcessGroup& process_group();
 
+// Ends every process of the group with `code`: a rank that fails alone must not leave the
+// others waiting in their next exchange (MPI_Abort when MPI runs, else exit).
+[[noreturn]] void abort_process_group(int code);
+
 }  // namespace pdrt

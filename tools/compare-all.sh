@@ -3,17 +3,37 @@
 # per-scene tuning) into OUT/<scene>/index.html.
 # Usage: tools/compare-all.sh [OUT=out/compare] [SCALE=1] [SPP=1,4,16,64,256] [REF_SPP=4096] [SEEDS=4]
 #   SCALE divides each scene's resolution (2 = half width and height) to save time.
+# MODE=plan writes every scene's comparison as a plan (OUT/<scene>/plan.json) and OUT/jobs.txt,
+# one "DIR INDEX" line per job of every plan, to run anywhere (docs/distributed.md), e.g.
+#   xargs -P 2 -L 1 build/pdrt run-job --quiet < OUT/jobs.txt
+# then MODE=collect writes every report and the summary.
 set -euo pipefail
 OUT=${1:-out/compare}; SCALE=${2:-1}; SPP=${3:-1,4,16,64,256}; REF=${4:-4096}; SEEDS=${5:-4}
-B=${PDRT_BUILD:-build}
+B=${PDRT_BUILD:-build}; MODE=${MODE:-run}
+case "$MODE" in run|plan|collect) ;; *) echo "compare-all.sh: MODE must be run, plan or collect, got \"$MODE\"" >&2; exit 2 ;; esac
 mkdir -p "$OUT"
+[ "$MODE" = plan ] && : > "$OUT/jobs.txt"
 for scene in scenes/*.json; do
   name=$(basename "$scene" .json)
+  if [ "$MODE" = collect ]; then
+    "$B/pdrt" collect "$OUT/$name" --quiet
+    continue
+  fi
   read -r w h < <(/usr/bin/env python3 -c "import json,sys; f=json.load(open('$scene'))['film']; print(f['width']//$SCALE, f['height']//$SCALE)")
   echo "== $name (${w}x${h}, spp $SPP, $SEEDS seeds, reference $REF spp)"
-  "$B/pdrt" compare "$scene" --out "$OUT/$name" --samplers random,jitter,poisson,poisson-02,sobol --spp "$SPP" \
+  if [ "$MODE" = plan ]; then
+    target=(--plan "$OUT/$name" --quiet)
+  else
+    target=(--out "$OUT/$name")
+  fi
+  "$B/pdrt" compare "$scene" "${target[@]}" --samplers random,jitter,poisson,poisson-02,sobol --spp "$SPP" \
     --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive
+  if [ "$MODE" = plan ]; then sed "s|^|$OUT/$name |" "$OUT/$name/jobs.txt" >> "$OUT/jobs.txt"; fi
 done
+if [ "$MODE" = plan ]; then
+  echo "wrote $(wc -l < "$OUT/jobs.txt") jobs to $OUT/jobs.txt; run them, then MODE=collect $0 $*"
+  exit 0
+fi
 # One summary table over all scenes: mean RMSE +- 95 % interval per sampler at each spp, the
 # best (a tie with every sampler whose interval overlaps the best's), and the fitted slopes.
 /usr/bin/env python3 - "$OUT" <<'PY'

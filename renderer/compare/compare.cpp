@@ -2,11 +2,9 @@
 
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/atomic_file.h"
-#include "sampling/core/cache_dir.h"
+#include "renderer/compare/compare_job.h"
 #include "renderer/compare/convergence.h"
 #include "sampling/core/errors.h"
-#include "sampling/core/hash.h"
-#include "sampling/core/rng.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/compare/seed_statistics.h"
 #include "sampling/analysis/stream_analysis.h"
@@ -30,10 +28,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-// The reference cache's key hash started from 1469598103934665603, the FNV basis short of its
-// last digit; kept, so references cached by earlier versions are still found.
-constexpr uint64_t kReferenceKeyBasis = 1469598103934665603ull;
 
 // Pixels whose used samples are analysed per (sampler, spp, family): 1024 point sets make
 // an averaged periodogram smooth to a few percent.
@@ -96,14 +90,6 @@ struct Run {
   std::string image_file, error_file;
 };
 
-RenderResult render_with(const SceneDesc& s, const CompareOptions& o) {
-  auto sampler = make_scene_sampler(s.sampler);
-  RenderOptions ro;
-  ro.threads = o.threads;
-  ro.quiet = true;
-  return render(s, *sampler, ro);
-}
-
 // The crop window (side c) where the reference has the most detail (sum of gradient norms).
 std::array<int, 3> detail_window(const Image& ref) {
   const int W = ref.width, H = ref.height, c = std::max(8, std::min(W, H) / 4);
@@ -165,11 +151,12 @@ void validate_compare_options(const CompareOptions& o) {
 double compare_sample_count(const CompareOptions& o, int width, int height) {
   double per_pixel = o.reference_spp;
   for (int spp : o.spp) per_pixel += double(o.seeds) * double(o.samplers.size()) * spp;
-  if (o.adaptive && !o.spp.empty()) per_pixel += 13.0 * double(o.samplers.size()) * o.spp.back();
+  if (o.adaptive && !o.spp.empty())
+    per_pixel += double(kSweepLastStep - kSweepFirstStep + 1) * double(o.samplers.size()) * o.spp.back();
   return per_pixel * width * height;
 }
 
-fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
+fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, const CompareJobSource& source) {
   validate_compare_options(o);
   std::error_code ec;
   for (const char* sub : {"", "images", "errors"}) {
@@ -185,50 +172,23 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     if (!o.quiet) std::fprintf(stderr, "pdrt compare: %s\n", s.c_str());
   };
 
-  // The reference: another sampler and seeds than any test image, cached by content, rendered
-  // as two independent halves whose difference measures its own variance.
-  SceneDesc rs = base;
-  rs.sampler.type = o.reference_sampler;
-  rs.sampler.seed = base.sampler.seed ^ 0x5eedc0ffee123457ull;
-  rs.sampler.spp = o.reference_spp;
-  rs.sampler.adaptive.enabled = false;
-  const int half_spp[2] = {(o.reference_spp + 1) / 2, o.reference_spp / 2};
-  const uint64_t half_seed[2] = {rs.sampler.seed, mix64(rs.sampler.seed ^ 0x68616c6662ull)};  // "halfb"
-  std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" +
-                         rs.sampler.type + "|" + std::to_string(rs.sampler.spp) + "|" +
-                         std::to_string(rs.sampler.seed) + "|" + reconstruction_name(rs.film.filter.reconstruction) + "|" +
-                         PDRT_VERSION + "|samplers-v4|halves";  // bump when sampler output changes
-  if (W != base.film.width || H != base.film.height)
-    key_text += "|crop " + std::to_string(crop.x0) + "," + std::to_string(crop.y0) + " of " + std::to_string(base.film.width) +
-                "x" + std::to_string(base.film.height);
-  char key[32];
-  std::snprintf(key, sizeof key, "%016llx", (unsigned long long)fnv1a(key_text, kReferenceKeyBasis));
-  const fs::path cache_root = o.cache_dir.empty() ? cache_dir() / "references" : o.cache_dir;
-  fs::path cache[2];
+  // The reference (compare_job.h): two halves whose difference measures its noise.
+  const ReferenceSetup rs = reference_setup(base, o);
+  const auto& half_spp = rs.half_spp;
+  const auto& half_seed = rs.half_seed;
   Image halves[2];
+  std::string ref_file[2];
   bool cached = true;
   double ref_seconds = 0;
   for (int h = 0; h < 2; ++h) {
-    cache[h] = cache_root / (std::string("ref-") + key + (h ? "-b" : "-a") + ".exr");
-    bool hit = false;
-    if (fs::exists(cache[h])) {
-      halves[h] = read_image_rgb(cache[h]);
-      hit = halves[h].width == W && halves[h].height == H;
-    }
-    if (hit) {
-      say("using the cached reference half " + cache[h].string());
-      continue;
-    }
-    cached = false;
-    SceneDesc hs = rs;
-    hs.sampler.spp = half_spp[h], hs.sampler.seed = half_seed[h];
-    say("rendering the reference half " + std::to_string(h + 1) + "/2 (" + hs.sampler.type + ", " +
-        std::to_string(hs.sampler.spp) + " spp) -> " + cache[h].string());
-    fs::create_directories(cache[h].parent_path(), ec);
-    RenderResult r = render_with(hs, o);
+    CompareJob jb;
+    jb.kind = CompareJob::Kind::Reference, jb.half = h;
+    CompareRender r = source(jb);
+    if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
     halves[h] = std::move(r.image);
-    ref_seconds += r.stats.seconds;
-    write_image(cache[h], halves[h], {{"pdrt:reference", "true"}, {"pdrt:key", key}});
+    ref_file[h] = r.file;
+    cached = cached && r.cached;
+    if (!r.cached) ref_seconds += r.seconds;
   }
   Image ref = halves[0];
   for (std::size_t i = 0; i < ref.rgb.size(); ++i)
@@ -257,29 +217,27 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       run.sampler = name, run.spp = n;
       std::vector<Image> images;
       for (int k = 0; k < o.seeds; ++k) {
-        SceneDesc s = base;
-        s.sampler.type = name;
-        s.sampler.spp = n;
-        s.sampler.seed = compare_seed(base.sampler.seed, k);
-        s.sampler.adaptive.enabled = false;
-        RenderResult r = render_with(s, o);
-        threads_used = r.stats.threads;
+        CompareJob jb;
+        jb.kind = CompareJob::Kind::Uniform, jb.sampler = name, jb.spp = n, jb.seed_index = k;
+        CompareRender r = source(jb);
+        if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
+        threads_used = r.threads;
         SeedRun sr;
-        sr.seed = s.sampler.seed;
-        sr.seconds = r.stats.seconds;
-        sr.render_seconds = r.stats.seconds - r.stats.build_seconds;
-        sr.cpu_seconds = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
-        sr.samples = r.stats.samples;
+        sr.seed = compare_seed(base.sampler.seed, k);
+        sr.seconds = r.seconds;
+        sr.render_seconds = r.seconds - r.build_seconds;
+        sr.cpu_seconds = r.cpu_seconds - r.build_cpu_seconds;
+        sr.samples = r.samples;
         sr.relmse = relative_mse(r.image, ref);
-        sr.profile = r.stats.sampler_profile;
+        sr.profile = r.profile;
         run.profile += sr.profile;
         RadialSpectrum sp = error_spectrum(r.image, ref);
-        if (k == 0) run.spectrum = sp, run.samples = r.stats.samples;
+        if (k == 0) run.spectrum = sp, run.samples = r.samples;
         else
           for (std::size_t b = 0; b < sp.power.size(); ++b) run.spectrum.power[b] += sp.power[b];
         const double w = 1.0 / o.seeds;
         run.seconds += w * sr.seconds, run.render_seconds += w * sr.render_seconds;
-        run.cpu_seconds += w * sr.cpu_seconds, run.relmse += w * sr.relmse, run.spp_mean += w * r.stats.spp_mean;
+        run.cpu_seconds += w * sr.cpu_seconds, run.relmse += w * sr.relmse, run.spp_mean += w * r.spp_mean;
         run.seeds.push_back(sr);
         images.push_back(std::move(r.image));
       }
@@ -388,17 +346,17 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   j["samplers"] = o.samplers;
   j["spp"] = o.spp;
   j["threads"] = threads_used;
-  j["reference"] = {{"sampler", rs.sampler.type},
-                    {"spp", rs.sampler.spp},
-                    {"seed", rs.sampler.seed},
-                    {"halves", {{{"spp", half_spp[0]}, {"seed", half_seed[0]}, {"file", cache[0].string()}},
-                                {{"spp", half_spp[1]}, {"seed", half_seed[1]}, {"file", cache[1].string()}}}},
+  j["reference"] = {{"sampler", rs.scene.sampler.type},
+                    {"spp", rs.scene.sampler.spp},
+                    {"seed", rs.scene.sampler.seed},
+                    {"halves", {{{"spp", half_spp[0]}, {"seed", half_seed[0]}, {"file", ref_file[0]}},
+                                {{"spp", half_spp[1]}, {"seed", half_seed[1]}, {"file", ref_file[1]}}}},
                     {"variance", ref_var},
                     {"variance_rule", "mean over pixels and channels of (a - b)^2 na nb / (na + nb)^2, halves a, b"},
                     {"rmse", std::sqrt(ref_var)},
                     {"correction_se", ref_noise.correction_se},
                     {"cached", cached},
-                    {"file", cache[0].string()},
+                    {"file", ref_file[0]},
                     {"seconds", ref_seconds},
                     {"image", "images/reference.png"}};
   j["heat_colormap"] = kHeatStops;
@@ -495,16 +453,7 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
     json ja = json::array(), sweep = json::array(), target;
     std::vector<std::string> csv;
     for (const auto& name : o.samplers) {
-      SceneDesc s = base;
-      s.sampler.type = name;
-      AdaptiveDesc& ad = s.sampler.adaptive;
-      if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
-      ad.min_spp = std::max(2, o.spp.front());
-      ad.max_spp = std::max(ad.min_spp, o.spp.back());
-      if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
-      if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
-      if (!o.adaptive_decision.empty()) ad.decision = o.adaptive_decision;
-      const double base_threshold = o.adaptive_threshold > 0 ? o.adaptive_threshold : effective_threshold(ad);
+      const AdaptiveDesc ad = sweep_adaptive(base, o);
       std::vector<double> x, y;
       const Run* at_target = nullptr;
       for (const Run& u : runs)
@@ -515,28 +464,30 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
       std::vector<double> cost, err;
       // k = -4..4, and on (up to 8) while even the cheapest run reaches the target, so that
       // the crossing is interpolated rather than only bounded.
-      for (int k = -4; k <= 8; ++k) {
-        if (k > 4 && !cost_to_reach(cost, err, at_target->rmse).upper_bound) break;
-        const double threshold = std::ldexp(base_threshold, k);
-        ad.threshold = float(threshold);
-        RenderResult r = render_with(s, o);
-        const double e = corrected_rmse(r.image), uniform = loglog_interp(x, y, r.stats.spp_mean);
-        cost.push_back(double(r.stats.samples)), err.push_back(e);
+      for (int k = kSweepFirstStep; k <= kSweepLastStep; ++k) {
+        if (k > kSweepAlwaysLastStep && !cost_to_reach(cost, err, at_target->rmse).upper_bound) break;
+        const double threshold = sweep_threshold(base, o, k);
+        CompareJob jb;
+        jb.kind = CompareJob::Kind::Adaptive, jb.sampler = name, jb.sweep_step = k;
+        const CompareRender r = source(jb);
+        if (r.image.width != W || r.image.height != H) throw InputError(describe(jb) + ": image size differs from the film's");
+        const double e = corrected_rmse(r.image), uniform = loglog_interp(x, y, r.spp_mean);
+        cost.push_back(double(r.samples)), err.push_back(e);
         sweep.push_back({{"sampler", name},
                          {"threshold", threshold},
-                         {"samples", r.stats.samples},
-                         {"spp_mean", r.stats.spp_mean},
+                         {"samples", r.samples},
+                         {"spp_mean", r.spp_mean},
                          {"rmse", e},
-                         {"rounds", r.stats.adaptive_rounds},
-                         {"seconds", r.stats.seconds}});
+                         {"rounds", r.adaptive_rounds},
+                         {"seconds", r.seconds}});
         char row[200];
         std::snprintf(row, sizeof row, "%s,%s,%s,%.9g,%lld,%.6g,%.9g,%d,%.4g", name.c_str(), ad.metric.c_str(),
-                      ad.variance.c_str(), threshold, (long long)r.stats.samples, r.stats.spp_mean, e,
-                      r.stats.adaptive_rounds, r.stats.seconds);
+                      ad.variance.c_str(), threshold, (long long)r.samples, r.spp_mean, e,
+                      r.adaptive_rounds, r.seconds);
         csv.push_back(row);
         char buf[200];
         std::snprintf(buf, sizeof buf, "%-8s adaptive t=%.5g: %.1f spp mean, rmse %.5f (uniform at equal samples %.5f)",
-                      name.c_str(), threshold, r.stats.spp_mean, e, uniform);
+                      name.c_str(), threshold, r.spp_mean, e, uniform);
         say(buf);
         if (k != 0) continue;
         std::string img = "images/" + name + "-adaptive.png", map = "images/" + name + "-adaptive-samples.png";
@@ -554,10 +505,10 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
                       {"threshold", threshold},
                       {"min_spp", ad.min_spp},
                       {"max_spp", ad.max_spp},
-                      {"rounds", r.stats.adaptive_rounds},
-                      {"spp_mean", r.stats.spp_mean},
-                      {"samples", r.stats.samples},
-                      {"seconds", r.stats.seconds},
+                      {"rounds", r.adaptive_rounds},
+                      {"spp_mean", r.spp_mean},
+                      {"samples", r.samples},
+                      {"seconds", r.seconds},
                       {"rmse", e},
                       {"uniform_rmse_at_equal_samples", std::isnan(uniform) ? json(nullptr) : json(uniform)},
                       {"image", img},
@@ -606,6 +557,10 @@ fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
   fs::path results = o.out / "results.json";
   write_file_atomically(results, [&](std::ostream& os) { os << j.dump(1) << "\n"; });
   return results;
+}
+
+fs::path run_compare(const SceneDesc& base, const CompareOptions& o) {
+  return write_compare_report(base, o, [&](const CompareJob& job) { return render_job(base, o, job); });
 }
 
 }  // namespace pdrt

@@ -5,6 +5,7 @@
 #include "renderer/scene/scene_desc.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,18 @@ void validate_compare_options(const CompareOptions& o);
 // --spp with every seed and, with --adaptive, at most 13 sweep runs per sampler of at most the largest --spp.
 double compare_sample_count(const CompareOptions& o, int width, int height);
 
-// Renders and writes everything except the plots; returns the path of results.json.
+struct CompareJob;
+struct CompareRender;
+// Where the report gets a job's render: rendered now, or read from a plan's finished job.
+using CompareJobSource = std::function<CompareRender(const CompareJob&)>;
+
+// Writes the report (everything except the plots) into o.out from the jobs' renders, asked for
+// in compare_jobs() order (adaptive steps past kSweepAlwaysLastStep only while needed);
+// returns the path of results.json.
+std::filesystem::path write_compare_report(const SceneDesc& scene, const CompareOptions& o,
+                                           const CompareJobSource& source);
+
+// Renders every job in this process and writes the report; returns the path of results.json.
 std::filesystem::path run_compare(const SceneDesc& scene, const CompareOptions& o);
 
 }  // namespace pdrt

@@ -62,34 +62,29 @@ int radiance_texture(const Material& m) {
 
 Vec3 LightSampler::emitter_radiance(const Material& m, SurfaceHit h) const {
   const int t = radiance_texture(m);
-  if (t < 0 || !textures_) return m.radiance;
+  if (t < 0) return m.radiance;
   scene_.texture_coords(&h, 0);  // u, v do not depend on the time
   TextureCoords tc;
   tc.u = h.u, tc.v = h.v;  // a point lookup: a light sample is a point, not a pixel's footprint
-  return emission(m.radiance, textures_->eval(t, tc));
+  return emission(m.radiance, textures_.eval(t, tc));
 }
 
 float LightSampler::emitter_luminance(const Material& m) const {
   const int t = radiance_texture(m);
-  if (t < 0 || !textures_) return luminance(m.radiance);
+  if (t < 0) return luminance(m.radiance);
   double sum = 0;
   constexpr int n = 32;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       TextureCoords tc;
       tc.u = (i + 0.5f) / n, tc.v = (j + 0.5f) / n;
-      sum += luminance(emission(m.radiance, textures_->eval(t, tc)));
+      sum += luminance(emission(m.radiance, textures_.eval(t, tc)));
     }
   return float(sum / (n * n));
 }
 
-LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene) {
+LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene), textures_(scene.desc()) {
   const SceneDesc& d = scene.desc();
-  for (const Material& m : d.materials)
-    if (m.type == MaterialType::Emitter && radiance_texture(m) >= 0) {
-      textures_ = std::make_unique<TextureSet>(d);
-      break;
-    }
   first_entry_.assign(d.shapes.size(), -1);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {
     const ShapeDesc& s = d.shapes[i];

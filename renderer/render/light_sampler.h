@@ -36,6 +36,8 @@ struct LightSample {
 class LightSampler {
  public:
   LightSampler(const EmbreeScene& scene);
+  // The scene's textures, opened once: the path integrator shades with the same set.
+  const TextureSet& textures() const { return textures_; }
   bool empty() const { return light_count() == 0; }
 
   // u_pick chooses the light for the shading point `ref` with unit shading normal `n`
@@ -103,7 +105,7 @@ class LightSampler {
   float emitter_luminance(const Material& m) const;
 
   const EmbreeScene& scene_;
-  std::unique_ptr<TextureSet> textures_;  // only when some emitter's radiance is textured
+  TextureSet textures_;  // the scene's: textured emitters read them, and the integrator (textures())
   std::vector<Entry> entries_;
   LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1

@@ -21,7 +21,7 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lig
     : scene_(scene),
       lights_(lights),
       settings_(settings),
-      textures_(scene.desc()),
+      textures_(lights.textures()),
       footprint_(scene.desc().camera, scene.desc().film.width, scene.desc().film.height,
                  scene.desc().sampler.adaptive.enabled ? scene.desc().sampler.adaptive.max_spp : scene.desc().sampler.spp) {
   for (const Material& m : scene.desc().materials) {

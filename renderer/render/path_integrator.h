@@ -40,7 +40,7 @@ class PathIntegrator {
   std::vector<Bsdf> bsdfs_;  // per material (textured ones: with their constant values, unused)
   // Textured materials build their Bsdf per hit from `bare_` (the material without name and
   // bindings) with the textures evaluated at the hit; others use bsdfs_ as before.
-  TextureSet textures_;
+  const TextureSet& textures_;  // the light sampler's: one open set per render
   TextureFootprint footprint_;
   std::vector<Material> bare_;
 };

@@ -1,0 +1,141 @@
+#include "app/compare_request.h"
+
+#include "app/numeric_option.h"
+#include "app/python_plots.h"
+#include "renderer/render/renderer.h"
+#include "renderer/render/sample_budget.h"
+#include "renderer/scene/scene_limits.h"
+#include "renderer/scene/scene_loader.h"
+#include "sampling/core/errors.h"
+#include "sampling/core/hash.h"
+#include "sampling/core/input_file.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace pdrt::cli {
+
+using nlohmann::json;
+
+json request_json(const CompareRequest& r) {
+  json j = {{"scene", r.scene},
+            {"label", r.label},
+            {"strict", r.strict},
+            {"samplers", r.samplers},
+            {"spp", r.spp},
+            {"cache", r.cache},
+            {"reference_spp", r.reference_spp},
+            {"threads", r.threads},
+            {"seeds", r.seeds},
+            {"adaptive", r.adaptive},
+            {"adaptive_threshold", r.adaptive_threshold},
+            {"adaptive_target_spp", r.adaptive_target_spp},
+            {"adaptive_metric", r.adaptive_metric},
+            {"adaptive_variance", r.adaptive_variance},
+            {"adaptive_decision", r.adaptive_decision},
+            {"reconstruction", r.reconstruction},
+            {"width", r.width ? json(*r.width) : json(nullptr)},
+            {"height", r.height ? json(*r.height) : json(nullptr)}};
+  return j;
+}
+
+CompareRequest request_from_json(const json& j) {
+  CompareRequest r;
+  r.scene = j.at("scene").get<std::string>(), r.label = j.at("label").get<std::string>();
+  r.strict = j.at("strict").get<bool>();
+  r.samplers = j.at("samplers").get<std::string>(), r.spp = j.at("spp").get<std::string>();
+  r.cache = j.at("cache").get<std::string>();
+  r.reference_spp = j.at("reference_spp").get<int>(), r.threads = j.at("threads").get<int>();
+  r.seeds = j.at("seeds").get<int>();
+  r.adaptive = j.at("adaptive").get<bool>(), r.adaptive_threshold = j.at("adaptive_threshold").get<double>();
+  r.adaptive_target_spp = j.at("adaptive_target_spp").get<int>();
+  r.adaptive_metric = j.at("adaptive_metric").get<std::string>();
+  r.adaptive_variance = j.at("adaptive_variance").get<std::string>();
+  r.adaptive_decision = j.at("adaptive_decision").get<std::string>();
+  r.reconstruction = j.at("reconstruction").get<std::string>();
+  if (!j.at("width").is_null()) r.width = j.at("width").get<int>();
+  if (!j.at("height").is_null()) r.height = j.at("height").get<int>();
+  return r;
+}
+
+CompareOptions compare_options(const CompareRequest& r) {
+  CompareOptions c;
+  auto split = [](const std::string& s) {
+    std::vector<std::string> v;
+    std::stringstream ss(s);
+    for (std::string t; std::getline(ss, t, ',');) v.push_back(t);
+    return v;
+  };
+  c.samplers = split(r.samplers);
+  c.spp.clear();
+  for (const auto& t : split(r.spp)) c.spp.push_back(int(parse_integer_option("--spp", t, kSppRange)));
+  c.adaptive = r.adaptive;
+  c.adaptive_threshold = r.adaptive_threshold;
+  c.adaptive_metric = r.adaptive_metric;
+  c.adaptive_variance = r.adaptive_variance;
+  c.adaptive_decision = r.adaptive_decision;
+  c.adaptive_target_spp = r.adaptive_target_spp;
+  c.reference_spp = r.reference_spp;
+  c.seeds = r.seeds;
+  c.threads = r.threads;
+  c.quiet = r.quiet;
+  c.cache_dir = r.cache;
+  c.scene_label = r.label.empty() ? r.scene : r.label;
+  validate_compare_options(c);
+  Reconstruction recon{};
+  if (!r.reconstruction.empty() && !parse_reconstruction(r.reconstruction, &recon))
+    throw UsageError("--reconstruction: unknown mode \"" + r.reconstruction + "\" (importance, splat, rank)");
+  return c;
+}
+
+PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
+  PreparedCompare p;
+  CompareOptions& c = p.options;
+  c = compare_options(r);
+  Reconstruction recon{};
+  if (!r.reconstruction.empty()) parse_reconstruction(r.reconstruction, &recon);
+
+  SceneDesc& scene = p.scene;
+  scene = load_scene(r.scene, r.strict);
+  {
+    std::ifstream in = open_for_reading(r.scene);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    c.scene_content = ss.str();
+  }
+  // An environment image is part of the scene's content too: a regenerated sky must not
+  // reuse a reference cached for the old one.
+  if (scene.environment.has_map()) {
+    const EnvironmentDesc& e = scene.environment;
+    const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));
+    c.scene_content +=
+        "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " + std::to_string(fnv1a(px));
+  }
+  if (!r.reconstruction.empty()) scene.film.filter.reconstruction = recon;
+  const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;
+  if (c.adaptive && decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
+    throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
+  if (r.width) scene.film.width = *r.width;
+  if (r.height) scene.film.height = *r.height;
+  if (check_budget) {
+    check_film_memory(scene.film.width, scene.film.height, r.width || r.height ? "--width/--height" : scene.film.size_where);
+    check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
+                        "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
+                            " pixels x (reference + " + std::to_string(c.seeds) + " seeds x every sampler at every --spp" +
+                            (c.adaptive ? " + the sweep)" : ")"),
+                        r.allow_long);
+  }
+  return p;
+}
+
+void write_compare_plots(const std::string& python, const std::filesystem::path& out) {
+  ::setenv("MPLBACKEND", "Agg", 1);
+  const std::string script = std::string(PDRT_SOURCE_DIR) + "/renderer/compare/plot_compare.py";
+  const std::string log = (out / "plot.log").string();
+  if (run_program({python, script, out.string()}, log) != 0)
+    throw std::runtime_error("plotting with " + python + " " + script + " failed (see " + log + ")");
+  std::filesystem::remove(log);
+}
+
+}  // namespace pdrt::cli

@@ -1,0 +1,44 @@
+#pragma once
+// What `pdrt compare` was asked on its command line, and how that becomes a scene and
+// CompareOptions. A plan stores the request (as JSON), so `pdrt run-job` and `pdrt collect`
+// rebuild exactly the scene and options the in-process comparison would use.
+#include "renderer/compare/compare.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace pdrt::cli {
+
+struct CompareRequest {
+  std::string scene, label;  // the file to load; the name the report shows (default: scene)
+  bool strict = false;
+  std::string samplers = "random,jitter,poisson,poisson-02,sobol", spp = "1,4,16,64,256", cache;
+  std::optional<int> width, height;
+  int reference_spp = 4096, threads = 0, seeds = 4;
+  double adaptive_threshold = 0;
+  int adaptive_target_spp = 64;
+  std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
+  bool adaptive = false, quiet = false, allow_long = false;
+};
+
+nlohmann::json request_json(const CompareRequest& r);
+CompareRequest request_from_json(const nlohmann::json& j);  // std::exception on a malformed one
+
+// The options alone, validated (UsageError); out unset.
+CompareOptions compare_options(const CompareRequest& r);
+
+struct PreparedCompare {
+  SceneDesc scene;
+  CompareOptions options;  // out unset
+};
+
+// Validates the options (UsageError), loads the scene (InputError) and applies the overrides;
+// checks the film's memory and the sample budget when `check_budget`.
+PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget);
+
+// Runs plot_compare.py on a report directory (throws naming the log when it fails).
+void write_compare_plots(const std::string& python, const std::filesystem::path& out);
+
+}  // namespace pdrt::cli

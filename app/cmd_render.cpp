@@ -8,6 +8,7 @@
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/warnings.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
@@ -107,6 +108,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
+    // Under mpirun every rank loads the same scene and renders the same image: rank 0 speaks
+    // for all (errors: app/main.cpp), and the render hands the others' warnings to it.
+    if (launcher_rank() != 0) hold_warnings();
     // Validate every argument before loading or rendering anything (numbers are checked
     // while parsing: app/numeric_option.h).
     for (const auto& out : o->outs) require_output_path("-o/--out", out);

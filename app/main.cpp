@@ -3,7 +3,6 @@
 #include "distributed/mpi_process_group.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
-#include "sampling/core/warnings.h"
 
 #include <cstdio>
 #include <exception>
@@ -32,9 +31,6 @@ void check_subcommand(const CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Under mpirun every rank meets the same conditions; rank 0 speaks for all (errors above,
-  // warnings here: a distributed render hands the others' to rank 0).
-  if (pdrt::launcher_rank() != 0) pdrt::hold_warnings();
   CLI::App app{"pdrt — a distribution ray tracer with hierarchical Poisson-disk sampling"};
   app.set_version_flag("--version", PDRT_VERSION);
   app.require_subcommand(1);

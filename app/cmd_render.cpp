@@ -8,6 +8,7 @@
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/warnings.h"
 #include "renderer/render/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
@@ -29,7 +30,7 @@ namespace pdrt::cli {
 namespace {
 
 std::atomic<bool> g_cancel{false};
-extern "C" void on_sigint(int) { g_cancel.store(true); }
+extern "C" void on_interrupt(int) { g_cancel.store(true); }
 
 // Where the samples went (the `samples` AOV): min, max, quantiles and a histogram over
 // power-of-two bins [2^k, 2^(k+1)); the first bin, [0, 2), also holds pixels an interrupted
@@ -107,6 +108,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
+    // Under mpirun every rank loads the same scene and renders the same image: rank 0 speaks
+    // for all (errors: app/main.cpp), and the render hands the others' warnings to it.
+    if (launcher_rank() != 0) hold_warnings();
     // Validate every argument before loading or rendering anything (numbers are checked
     // while parsing: app/numeric_option.h).
     for (const auto& out : o->outs) require_output_path("-o/--out", out);
@@ -158,8 +162,16 @@ void add_render_command(CLI::App& app) {
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
 
+    // MPI starts here under mpirun (before the handlers below, so that they are pdrt's).
+    const ProcessGroup& group = process_group();
     // Ctrl-C from here on gives the partial image, even while the image module loads.
-    auto previous = std::signal(SIGINT, on_sigint);
+    auto previous = std::signal(SIGINT, on_interrupt);
+    // Under mpirun, Ctrl-C reaches the ranks as SIGTERM (Open MPI's mpirun ends the job with
+    // it, and a SIGKILL a second later), and mpirun passes SIGUSR1 on without ending the job:
+    // both interrupt like SIGINT (docs/distributed.md).
+    const bool mpi = launched_by_mpi();
+    auto previous_term = mpi ? std::signal(SIGTERM, on_interrupt) : SIG_DFL;
+    auto previous_usr1 = mpi ? std::signal(SIGUSR1, on_interrupt) : SIG_DFL;
     require_image_io();  // the last check: a missing module is refused before anything is said or rendered
     // Under mpirun the ranks share the render (docs/distributed.md); rank 0 reports and writes.
     const bool lead = launcher_rank() == 0, quiet = o->quiet || !lead;
@@ -172,9 +184,10 @@ void add_render_command(CLI::App& app) {
     ro.threads = o->threads;
     ro.quiet = quiet;
     ro.cancel = &g_cancel;
-    ro.group = &process_group();
+    ro.group = &group;
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
+    if (mpi) std::signal(SIGTERM, previous_term), std::signal(SIGUSR1, previous_usr1);
     if (!lead) {
       if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted");
       return;

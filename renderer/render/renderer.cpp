@@ -11,6 +11,7 @@
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
+#include "sampling/core/warnings.h"
 #include "renderer/render/thin_lens_camera.h"
 #include "renderer/scene/crop_window.h"
 
@@ -246,6 +247,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   };
 
   // One pass over the image: every pixel extends its prefix to end_of(x, y) samples.
+  const bool stop_in_tile = nranks > 1 && opt.cancel;
   auto pass = [&](const char* label, auto&& end_of) {
     std::atomic<bool> cancelled{false};
     int64_t my_tiles = 0;
@@ -269,8 +271,14 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
           std::optional<PixelSampleState> pd;
           if (decider) pd.emplace(*decider);
           int64_t& count = traced.local();
-          for (int y = y0; y < y1; ++y)
+          for (int y = y0; y < y1 && !(stop_in_tile && cancelled.load(std::memory_order_relaxed)); ++y)
             for (int x = x0; x < x1; ++x) {
+              // Under mpirun a SIGKILL follows the SIGTERM within a second (docs/distributed.md):
+              // stop at the next pixel, not after the tile, so the partial image gets out.
+              if (stop_in_tile && opt.cancel->load(std::memory_order_relaxed)) {
+                cancelled = true;
+                break;
+              }
               PixelAccum& px = film.at(x - region.x0, y - region.y0);
               int64_t begin = px.prefix, end = end_of(x - region.x0, y - region.y0);
               if (end <= begin) continue;
@@ -375,6 +383,23 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
       std::memcpy(&r, b.data(), sizeof r);
       res.stats.ranks.push_back(r);
     }
+    // Only rank 0 prints warnings (sampling/core/warnings.h); the others' held lines (a
+    // sampler's about a pixel only they rendered) go to it, each kind printed once.
+    std::vector<std::byte> held;
+    for (const std::string& h : take_held_warnings()) {
+      const auto* c = reinterpret_cast<const std::byte*>(h.c_str());
+      held.insert(held.end(), c, c + h.size() + 1);  // with its '\0'
+    }
+    const std::vector<std::vector<std::byte>> all = group.all_gather(held);
+    if (me == 0)
+      for (const std::vector<std::byte>& b : all) {
+        std::vector<std::string> lines;
+        for (std::size_t at = 0; at < b.size();) {
+          lines.emplace_back(reinterpret_cast<const char*>(b.data() + at));
+          at += lines.back().size() + 1;
+        }
+        print_held_warnings(lines);
+      }
   }
   for (const RankStats& r : res.stats.ranks) res.stats.rays += r.rays;
   int64_t crop_samples = 0;  // the margin's samples are work done, but not the image's spp
@@ -389,11 +414,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     }
   if (ad.enabled && (crop.width() < W || crop.height() < H) && !opt.quiet &&
       (rounds > margin_rounds || metric_needs_mean))
-    std::fprintf(stderr, "pdrt: warning: the crop window of an adaptive render may differ from the full render's crop (%s)\n",
-                 metric_needs_mean ? "error-per-sample compares with the crop's mean" : "refinement ran past the rounds the crop's margin covers");
+    warn(std::string("pdrt: warning: the crop window of an adaptive render may differ from the full render's crop (") +
+         (metric_needs_mean ? "error-per-sample compares with the crop's mean" : "refinement ran past the rounds the crop's margin covers") + ")");
   if (res.stats.nonfinite_samples > 0 && !opt.quiet)
-    std::fprintf(stderr, "pdrt: warning: %lld samples had a NaN or infinite value and were dropped\n",
-                 (long long)res.stats.nonfinite_samples);
+    warn("pdrt: warning: " + std::to_string(res.stats.nonfinite_samples) + " samples had a NaN or infinite value and were dropped");
   res.stats.spp_mean = double(crop_samples) / (double(crop.width()) * crop.height());
   res.stats.partial = stopped;
   res.stats.adaptive_rounds = rounds;

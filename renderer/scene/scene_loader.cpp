@@ -5,6 +5,7 @@
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
+#include "sampling/core/warnings.h"
 #include "renderer/scene/asset_path.h"
 #include "renderer/scene/crop_window.h"
 #include "renderer/scene/environment_image.h"
@@ -15,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -1093,7 +1093,7 @@ bool is_pbrt_scene(const fs::path& file) { return file.extension() == ".pbrt"; }
 SceneDesc load_scene(const fs::path& file, bool strict) {
   if (is_pbrt_scene(file)) {
     PbrtImport imported = load_pbrt_scene(file, strict);
-    for (const std::string& line : imported.report) std::cerr << printable(line) << "\n";
+    for (const std::string& line : imported.report) warn(printable(line));
     return std::move(imported.scene);
   }
   std::string reason;
@@ -1105,8 +1105,8 @@ SceneDesc load_scene(const fs::path& file, bool strict) {
   SceneDesc scene = parser.parse();
   scene.file = file;
   if (scene.degenerate_triangles > 0)
-    std::cerr << printable(doc.name()) << ": warning: skipped " << scene.degenerate_triangles << " degenerate triangle"
-              << (scene.degenerate_triangles == 1 ? "" : "s") << "\n";
+    warn(printable(doc.name()) + ": warning: skipped " + std::to_string(scene.degenerate_triangles) + " degenerate triangle" +
+         (scene.degenerate_triangles == 1 ? "" : "s"));
   return scene;
 }
 

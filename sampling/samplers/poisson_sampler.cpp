@@ -10,6 +10,7 @@
 #include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
+#include "sampling/core/warnings.h"
 
 #include <algorithm>
 #include <atomic>
@@ -246,11 +247,13 @@ class PoissonSampler final : public Sampler {
 
   static void warn_past_prefix(int px, int py, std::size_t n) {
     static std::atomic<bool> warned{false};
-    if (!warned.exchange(true))
-      std::fprintf(stderr,
-                   "pdrt: poisson: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
-                   "in another table and shift (docs/sampling.md)\n",
-                   px, py, n);
+    if (warned.exchange(true)) return;
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "pdrt: poisson: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
+                  "in another table and shift (docs/sampling.md)",
+                  px, py, n);
+    warn(line, "poisson: past the prefix");
   }
 
   // poisson-02 reads every stream through its own index shuffle (as jitter and sobol do):
@@ -322,7 +325,7 @@ const TableSet& default_tables(TableSetKind kind) {
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);
       if (ec) throw InputError(dir.string() + ": cannot create the table cache (" + ec.message() + ")");
-      std::fprintf(stderr, "pdrt: generating the %s sample tables into %s (once)\n", table_set_name(kind), dir.c_str());
+      warn(std::string("pdrt: generating the ") + table_set_name(kind) + " sample tables into " + dir.string() + " (once)");
       for (const TableParams& p : default_table_params(kind))
         write_table(dir / table_file_name(p.family, kind), generate_table(p));
     }

@@ -2,7 +2,8 @@
 // and exchange their pixel state, never a floating-point reduce, so the image is the single
 // process's bit for bit at any N and thread count, for every sampler, with motion blur, depth
 // of field and adaptive refinement, and for splatting and the split decision; a killed rank
-// fails the run within seconds, naming the rank.
+// fails the run within seconds, naming the rank; Ctrl-C at mpirun writes the partial image of
+// every rank's finished pixels; warnings are printed once, not once per rank.
 #include "sampling/samplers/sampler.h"
 #include "tests/support/cli_runner.h"
 
@@ -13,6 +14,9 @@
 #include <csignal>
 #include <fstream>
 #include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace pdrt::test;
@@ -84,6 +88,91 @@ void expect_same_at_every_rank_count(const std::string& name, const std::string&
   }
 }
 
+// The pid of rank `rank` of the pdrt job writing `out` (found by its command line and
+// environment), once it has installed a handler for `signal` (SigCgt in /proc); 0 if none
+// shows up within 10 s.
+pid_t rank_pid(const fs::path& out, int rank, int signal = 0) {
+  for (int tries = 0; tries < 100; ++tries) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    for (const auto& p : fs::directory_iterator("/proc")) {
+      const std::string pid = p.path().filename().string();
+      if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+      std::ifstream env(p.path() / "environ", std::ios::binary), cmdline(p.path() / "cmdline", std::ios::binary);
+      std::string e((std::istreambuf_iterator<char>(env)), {}), c((std::istreambuf_iterator<char>(cmdline)), {});
+      if (c.find(out.string()) == std::string::npos || c.find("mpirun") != std::string::npos ||
+          e.find("OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0') == std::string::npos)
+        continue;
+      if (signal) {
+        std::ifstream status(p.path() / "status");
+        std::string line;
+        uint64_t caught = 0;
+        while (std::getline(status, line))
+          if (line.rfind("SigCgt:", 0) == 0) caught = std::stoull(line.substr(7), nullptr, 16);
+        if (!(caught >> (signal - 1) & 1)) continue;
+      }
+      return pid_t(std::stoi(pid));
+    }
+  }
+  return 0;
+}
+
+// Stops a 2-rank render of 160 x 112 pixels at 4096 spp (about a minute of work) by sending
+// `signal` to mpirun 1.5 s after both ranks are ready for it; returns mpirun's exit status
+// and how long it took to end, and reads the image.
+struct Stopped {
+  int status = -1;
+  double seconds = 0;
+  std::string err;
+};
+Stopped stop_mpirun(const fs::path& dir, int signal) {
+  std::ofstream(dir / "s.json") << scene_text("random", "", "shared", false);
+  const fs::path out = dir / "o.exr";
+  const std::string cmd = "exec env " + kMpirun + "2 '" + PDRT_BINARY + "' render '" + (dir / "s.json").string() +
+                          "' --quiet --threads 1 --width 160 --height 112 --spp 4096 --allow-long-render -o '" +
+                          out.string() + "' >/dev/null 2>'" + (dir / "err.txt").string() + "'";
+  Stopped r;
+  const pid_t pid = ::fork();
+  if (pid < 0) return r;
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const bool ready = rank_pid(out, 0, SIGTERM) && rank_pid(out, 1, SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  const auto t0 = std::chrono::steady_clock::now();
+  ::kill(pid, ready ? signal : SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ifstream e(dir / "err.txt");
+  r.err.assign(std::istreambuf_iterator<char>(e), {});
+  if (ready && WIFEXITED(status)) r.status = WEXITSTATUS(status);
+  return r;
+}
+
+// The partial image of a stopped render: marked partial, with finished pixels of both ranks
+// (tile j, 16 x 16 row by row, is rank j mod 2's) and pixels short of their 4096 samples.
+void expect_partial_image_of_both_ranks(const fs::path& exr) {
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in) << "the partial image must be written";
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
+  const int nc = in->spec().nchannels, w = in->spec().width, h = in->spec().height;
+  const int s = in->spec().channelindex("samples");
+  ASSERT_GE(s, 0);
+  std::vector<float> px(std::size_t(w) * h * nc);
+  ASSERT_TRUE(in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()));
+  int64_t done[2] = {0, 0}, short_of_spp = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float n = px[(std::size_t(y) * w + x) * nc + s];
+      done[((y / 16) * ((w + 15) / 16) + x / 16) % 2] += n == 4096;
+      short_of_spp += n < 4096;
+    }
+  EXPECT_GT(done[0], 0);
+  EXPECT_GT(done[1], 0);
+  EXPECT_GT(short_of_spp, 0);
+}
+
 }  // namespace
 
 TEST(CliMpi, RanksRenderTheSingleProcessImageForEverySampler) {
@@ -119,21 +208,7 @@ TEST(CliMpi, AKilledRankFailsTheRunWithinSecondsNamingIt) {
   std::string err;
   const auto t0 = std::chrono::steady_clock::now();
   std::thread killer([&] {
-    // Find rank 1 by its environment and kill it.
-    for (int tries = 0; tries < 100; ++tries) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      for (const auto& p : fs::directory_iterator("/proc")) {
-        const std::string pid = p.path().filename().string();
-        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
-        std::ifstream env(p.path() / "environ", std::ios::binary), cmdline(p.path() / "cmdline", std::ios::binary);
-        std::string e((std::istreambuf_iterator<char>(env)), {}), c((std::istreambuf_iterator<char>(cmdline)), {});
-        if (c.find((dir / "o.exr").string()) != std::string::npos && c.find("mpirun") == std::string::npos &&
-            e.find(std::string("OMPI_COMM_WORLD_RANK=1") + '\0') != std::string::npos) {
-          ::kill(std::stoi(pid), SIGKILL);
-          return;
-        }
-      }
-    }
+    if (const pid_t rank1 = rank_pid(dir / "o.exr", 1)) ::kill(rank1, SIGKILL);
   });
   const int code = run(cmd, &err);
   killer.join();
@@ -142,4 +217,47 @@ TEST(CliMpi, AKilledRankFailsTheRunWithinSecondsNamingIt) {
   EXPECT_LT(seconds, 30);
   EXPECT_NE(err.find("rank 1"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(dir / "o.exr"));  // no partial output
+}
+
+// Ctrl-C at mpirun: Open MPI 4.1's mpirun sends the ranks SIGTERM and SIGKILL a second later
+// (odls_base_sigkill_timeout); the ranks stop at their next pixel, exchange what they
+// finished, and rank 0 writes the partial image in time. mpirun itself, having ended the job,
+// exits 1 whatever the ranks return.
+TEST(CliMpi, CtrlCAtMpirunWritesThePartialImageOfEveryRank) {
+  const fs::path dir = scratch_dir("mpi-sigint");
+  const Stopped r = stop_mpirun(dir, SIGINT);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_LT(r.seconds, 10) << r.err;
+  expect_partial_image_of_both_ranks(dir / "o.exr");
+}
+
+// SIGUSR1 to mpirun reaches the ranks without ending the job: the same partial image, and
+// mpirun passes on rank 0's exit status, 130 as for one interrupted process.
+TEST(CliMpi, SigusrOneToMpirunWritesThePartialImageAndExits130) {
+  const fs::path dir = scratch_dir("mpi-sigusr1");
+  const Stopped r = stop_mpirun(dir, SIGUSR1);
+  EXPECT_EQ(r.status, 130) << r.err;
+  EXPECT_LT(r.seconds, 10) << r.err;
+  expect_partial_image_of_both_ranks(dir / "o.exr");
+}
+
+// A warning every rank meets (degenerate triangles in the scene) is printed once, by rank 0.
+TEST(CliMpi, WarningsArePrintedOnce) {
+  const fs::path dir = scratch_dir("mpi-warn");
+  std::string text = scene_text("jitter", "", "shared", false);
+  const std::string mesh = R"({"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [0, 1, 2, 0, 0, 1]},)";
+  text.insert(text.find("\"objects\": [") + 12, "\n    " + mesh);
+  std::ofstream(dir / "s.json") << text;
+  const std::string warning = "warning: skipped 1 degenerate triangle";
+  for (int n : {1, 2, 3}) {
+    std::string err;
+    ASSERT_EQ(run(kMpirun + std::to_string(n) + " '" + PDRT_BINARY + "' render '" + (dir / "s.json").string() +
+                      "' --quiet --threads 1 --spp 4 -o '" + (dir / "o.exr").string() + "'",
+                  &err),
+              0)
+        << err;
+    std::size_t count = 0;
+    for (std::size_t at = err.find(warning); at != std::string::npos; at = err.find(warning, at + 1)) ++count;
+    EXPECT_EQ(count, 1u) << "np " << n << ": " << err;
+  }
 }

@@ -142,9 +142,14 @@ TEST(IndexShuffle, PermutesEveryPowerOfTwoBlockAndFillMatches) {
     std::vector<bool> seen(8192, false);
     for (uint32_t i = 0; i < 8192; ++i) {
       const uint64_t j = shuffle(i);
-      if (i < n) ASSERT_EQ(j, bulk[i]) << i;
-      if (i < 2) ASSERT_EQ(j, i);
-      else ASSERT_EQ(j >> (63 - __builtin_clzll(i)), 1u) << i;  // stays in its block
+      if (i < n) {
+        ASSERT_EQ(j, bulk[i]) << i;
+      }
+      if (i < 2) {
+        ASSERT_EQ(j, i);
+      } else {
+        ASSERT_EQ(j >> (63 - __builtin_clzll(i)), 1u) << i;  // stays in its block
+      }
       ASSERT_FALSE(seen[j]) << i;
       seen[j] = true;
     }

@@ -135,8 +135,8 @@ TEST(CliComparePlan, KilledJobIsRedoneFromScratch) {
   const fs::path d = scratch_dir("plan_killed");
   write_scene(d);
   const std::string plan = (d / "plan").string();
-  // Job 0, the first reference half (32768 spp at 16 x 12), runs for several seconds.
-  ASSERT_EQ(write_plan(d, " --samplers jitter --spp 2 --seeds 1 --reference-spp 65536").exit_code, 0);
+  // Job 0, the first reference half (131072 spp at 16 x 12), runs for much longer than a second.
+  ASSERT_EQ(write_plan(d, " --samplers jitter --spp 2 --seeds 1 --reference-spp 262144").exit_code, 0);
   const int status = shell("timeout -s KILL 1 " + kPdrt + " run-job " + plan + " 0 --quiet --threads 1 2>/dev/null");
   ASSERT_EQ(status, 137) << "killed by timeout";
   EXPECT_FALSE(fs::exists(d / "plan" / "jobs" / "0000.json")) << "no mark: the job did not finish";

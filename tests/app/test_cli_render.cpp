@@ -1,6 +1,7 @@
 // `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
 #include "tests/support/cli_runner.h"
 #include "renderer/render/image_output.h"
+#include "sampling/samplers/sampler.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -8,6 +9,8 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <regex>
+#include <set>
 #include <nlohmann/json.hpp>
 
 using namespace pdrt;
@@ -392,6 +395,27 @@ TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
   std::stringstream csv;
   csv << std::ifstream(d / "report" / "adaptive.csv").rdbuf();
   EXPECT_EQ(pdrt::test::line_count(csv.str()), int(j["adaptive_sweep"].size()) + 1) << "a header and one row per run";
+}
+
+// Every sampler `compare` accepts has a colour of its own in the report's plots
+// (plot_compare.py's COLORS): a missing one falls back to matplotlib's first, jitter's blue.
+TEST(CliCompare, PlotsGiveEverySamplerItsOwnColour) {
+  std::ifstream in(fs::path(PDRT_SCENES_DIR).parent_path() / "renderer" / "compare" / "plot_compare.py");
+  std::stringstream script;
+  script << in.rdbuf();
+  std::smatch line;
+  const std::string text = script.str();
+  ASSERT_TRUE(std::regex_search(text, line, std::regex("COLORS = \\{([^}]*)\\}")));
+  std::map<std::string, std::string> colours;
+  const std::string entries = line[1];
+  const std::regex entry("\"([^\"]+)\": \"(#[0-9a-fA-F]{6})\"");
+  for (auto it = std::sregex_iterator(entries.begin(), entries.end(), entry); it != std::sregex_iterator(); ++it)
+    colours[(*it)[1]] = (*it)[2];
+  std::set<std::string> used;
+  for (const std::string& name : pdrt::all_sampler_names()) {
+    ASSERT_TRUE(colours.count(name)) << name << " has no colour in plot_compare.py";
+    EXPECT_TRUE(used.insert(colours[name]).second) << name << " shares " << colours[name];
+  }
 }
 
 TEST(CliCompare, BadOptionsAreUsageErrors) {

@@ -32,12 +32,7 @@ void add_collect_command(CLI::App& app) {
       throw InputError(o->dir + ": " + std::to_string(left.size()) + " of " + std::to_string(plan.jobs.size()) +
                        " jobs have not finished (" + list + "); run them with `pdrt run-job " + o->dir + " INDEX`");
     }
-    CompareRequest r;
-    try {
-      r = request_from_json(plan.request);
-    } catch (const std::exception& e) {
-      throw InputError(o->dir + "/plan.json: request: " + e.what());
-    }
+    CompareRequest r = plan_request(plan);
     r.quiet = o->quiet;
     std::string python;
     if (!o->no_plots) python = find_plot_python();

@@ -38,12 +38,7 @@ void add_run_job_command(CLI::App& app) {
     for (long long i : o->indices)
       if (i < 0 || i >= n)
         throw UsageError("job index " + std::to_string(i) + ": the plan in " + o->dir + " has jobs 0.." + std::to_string(n - 1));
-    CompareRequest r;
-    try {
-      r = request_from_json(plan.request);
-    } catch (const std::exception& e) {
-      throw InputError(o->dir + "/plan.json: request: " + e.what());
-    }
+    CompareRequest r = plan_request(plan);
     const bool lead = launcher_rank() == 0;
     r.threads = o->threads;
     std::vector<int> mine;

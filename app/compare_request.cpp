@@ -59,6 +59,14 @@ CompareRequest request_from_json(const json& j) {
   return r;
 }
 
+CompareRequest plan_request(const ComparePlan& plan) {
+  try {
+    return request_from_json(plan.request);
+  } catch (const std::exception& e) {
+    throw InputError((plan.dir / "plan.json").string() + ": request: " + e.what());
+  }
+}
+
 CompareOptions compare_options(const CompareRequest& r) {
   CompareOptions c;
   auto split = [](const std::string& s) {

@@ -3,6 +3,7 @@
 // CompareOptions. A plan stores the request (as JSON), so `pdrt run-job` and `pdrt collect`
 // rebuild exactly the scene and options the in-process comparison would use.
 #include "renderer/compare/compare.h"
+#include "renderer/compare/compare_plan.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,9 @@ struct CompareRequest {
 
 nlohmann::json request_json(const CompareRequest& r);
 CompareRequest request_from_json(const nlohmann::json& j);  // std::exception on a malformed one
+
+// The request a plan was written for (InputError naming DIR/plan.json when it is malformed).
+CompareRequest plan_request(const ComparePlan& plan);
 
 // The options alone, validated (UsageError); out unset.
 CompareOptions compare_options(const CompareRequest& r);

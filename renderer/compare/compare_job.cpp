@@ -38,6 +38,10 @@ CompareRender from_result(RenderResult&& r) {
   return c;
 }
 
+// The adaptive sweep's spp range: from the smallest --spp (at least 2) to the largest.
+int sweep_min_spp(const CompareOptions& o) { return std::max(2, o.spp.front()); }
+int sweep_max_spp(const CompareOptions& o) { return std::max(sweep_min_spp(o), o.spp.back()); }
+
 }  // namespace
 
 ReferenceSetup reference_setup(const SceneDesc& base, const CompareOptions& o) {
@@ -95,7 +99,7 @@ double job_cost(const CompareJob& job, const CompareOptions& o) {
   switch (job.kind) {
     case CompareJob::Kind::Reference: return job.half == 0 ? (o.reference_spp + 1) / 2 : o.reference_spp / 2;
     case CompareJob::Kind::Uniform: return job.spp;
-    case CompareJob::Kind::Adaptive: return std::max(std::max(2, o.spp.front()), o.spp.back());
+    case CompareJob::Kind::Adaptive: return sweep_max_spp(o);
   }
   return 0;
 }
@@ -113,8 +117,8 @@ std::string describe(const CompareJob& job) {
 AdaptiveDesc sweep_adaptive(const SceneDesc& base, const CompareOptions& o) {
   AdaptiveDesc ad = base.sampler.adaptive;
   if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
-  ad.min_spp = std::max(2, o.spp.front());
-  ad.max_spp = std::max(ad.min_spp, o.spp.back());
+  ad.min_spp = sweep_min_spp(o);
+  ad.max_spp = sweep_max_spp(o);
   if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
   if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
   if (!o.adaptive_decision.empty()) ad.decision = o.adaptive_decision;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace pdrt {
@@ -64,6 +65,14 @@ fs::path job_file(const ComparePlan& p, int index, const char* suffix) {
   return p.dir / "jobs" / name;
 }
 
+// Job indices, most expensive first (estimated by job_cost; ties in plan order).
+std::vector<int> longest_first(const std::vector<CompareJob>& jobs, const CompareOptions& o) {
+  std::vector<int> order(jobs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return job_cost(jobs[a], o) > job_cost(jobs[b], o); });
+  return order;
+}
+
 // A path as one POSIX shell word.
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
@@ -115,6 +124,24 @@ void write_slurm_scripts(const ComparePlan& p, const fs::path& pdrt) {
   write_script(p.dir / "slurm" / "submit.sh", submit.str());
 }
 
+// Job `index`'s mark when the job finished (the mark names this plan and the job, and its
+// images are there); nothing otherwise.
+std::optional<json> finished_mark(const ComparePlan& plan, int index) {
+  std::ifstream in(job_file(plan, index, ".json"));
+  if (!in) return std::nullopt;
+  json mark;
+  try {
+    mark = json::parse(in);
+    if (mark.at("plan").get<std::string>() != plan.id || mark.at("index").get<int>() != index) return std::nullopt;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (!fs::exists(job_file(plan, index, ".exr"))) return std::nullopt;
+  if (plan.jobs[index].kind == CompareJob::Kind::Adaptive && !fs::exists(job_file(plan, index, "-samples.exr")))
+    return std::nullopt;
+  return mark;
+}
+
 }  // namespace
 
 ComparePlan write_compare_plan(const fs::path& dir, const json& request, const CompareOptions& o, const fs::path& pdrt) {
@@ -134,12 +161,8 @@ ComparePlan write_compare_plan(const fs::path& dir, const json& request, const C
   const json doc = {{"pdrt_plan", kPlanVersion}, {"id", p.id},      {"request", request},
                     {"scene_hash", hex(p.scene_hash)}, {"jobs", jobs}};
   write_file_atomically(dir / "plan.json", [&](std::ostream& os) { os << doc.dump(1) << "\n"; });
-  std::vector<int> order(p.jobs.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return job_cost(p.jobs[a], o) > job_cost(p.jobs[b], o); });
   write_file_atomically(dir / "jobs.txt", [&](std::ostream& os) {
-    for (int i : order) os << i << "\n";
+    for (int i : longest_first(p.jobs, o)) os << i << "\n";
   });
   write_slurm_scripts(p, pdrt);
   return p;
@@ -172,18 +195,7 @@ void check_plan_scene(const ComparePlan& plan, const CompareOptions& o) {
                      " was written; plan again");
 }
 
-bool job_finished(const ComparePlan& plan, int index) {
-  std::ifstream in(job_file(plan, index, ".json"));
-  if (!in) return false;
-  try {
-    const json v = json::parse(in);
-    if (v.at("plan").get<std::string>() != plan.id || v.at("index").get<int>() != index) return false;
-  } catch (const std::exception&) {
-    return false;
-  }
-  if (!fs::exists(job_file(plan, index, ".exr"))) return false;
-  return plan.jobs[index].kind != CompareJob::Kind::Adaptive || fs::exists(job_file(plan, index, "-samples.exr"));
-}
+bool job_finished(const ComparePlan& plan, int index) { return finished_mark(plan, index).has_value(); }
 
 std::vector<int> unfinished_jobs(const ComparePlan& plan) {
   std::vector<int> left;
@@ -192,8 +204,8 @@ std::vector<int> unfinished_jobs(const ComparePlan& plan) {
   return left;
 }
 
-bool run_plan_job(const ComparePlan& plan, int index, const SceneDesc& base, const CompareOptions& o) {
-  if (job_finished(plan, index)) return false;
+void run_plan_job(const ComparePlan& plan, int index, const SceneDesc& base, const CompareOptions& o) {
+  if (job_finished(plan, index)) return;
   const CompareJob& job = plan.jobs.at(index);
   const CompareRender r = render_job(base, o, job);
   const int W = r.image.width, H = r.image.height;
@@ -224,7 +236,6 @@ bool run_plan_job(const ComparePlan& plan, int index, const SceneDesc& base, con
                      {"cached", r.cached},
                      {"file", r.file}};
   write_file_atomically(job_file(plan, index, ".json"), [&](std::ostream& os) { os << mark.dump(1) << "\n"; });
-  return true;
 }
 
 CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job) {
@@ -232,14 +243,13 @@ CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job) {
   for (int i = 0; i < int(plan.jobs.size()) && index < 0; ++i)
     if (same_job(plan.jobs[i], job)) index = i;
   if (index < 0) throw InputError(plan.dir.string() + ": the plan has no job \"" + describe(job) + "\"");
-  if (!job_finished(plan, index))
-    throw InputError(job_file(plan, index, ".json").string() + ": job " + std::to_string(index) + " (" + describe(job) +
-                     ") has not finished");
   const fs::path mark_file = job_file(plan, index, ".json");
-  std::ifstream in(mark_file);
+  const std::optional<json> mark = finished_mark(plan, index);
+  if (!mark)
+    throw InputError(mark_file.string() + ": job " + std::to_string(index) + " (" + describe(job) + ") has not finished");
   CompareRender r;
   try {
-    const json v = json::parse(in);
+    const json& v = *mark;
     r.seconds = v.at("seconds").get<double>(), r.build_seconds = v.at("build_seconds").get<double>();
     r.cpu_seconds = v.at("cpu_seconds").get<double>(), r.build_cpu_seconds = v.at("build_cpu_seconds").get<double>();
     r.spp_mean = v.at("spp_mean").get<double>(), r.samples = v.at("samples").get<int64_t>();
@@ -263,13 +273,9 @@ CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job) {
 }
 
 std::vector<int> jobs_for_rank(const ComparePlan& plan, const CompareOptions& o, int rank, int size) {
-  std::vector<int> order(plan.jobs.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return job_cost(plan.jobs[a], o) > job_cost(plan.jobs[b], o); });
   std::vector<double> load(std::size_t(std::max(1, size)), 0.0);
   std::vector<int> mine;
-  for (int i : order) {
+  for (int i : longest_first(plan.jobs, o)) {
     const int r = int(std::min_element(load.begin(), load.end()) - load.begin());
     load[std::size_t(r)] += job_cost(plan.jobs[i], o);
     if (r == rank) mine.push_back(i);

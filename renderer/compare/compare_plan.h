@@ -40,8 +40,8 @@ bool job_finished(const ComparePlan& plan, int index);
 std::vector<int> unfinished_jobs(const ComparePlan& plan);
 
 // Renders job `index` and writes its result (atomically: a killed job leaves no mark and is
-// redone from scratch). Returns false without rendering when it had already finished.
-bool run_plan_job(const ComparePlan& plan, int index, const SceneDesc& base, const CompareOptions& o);
+// redone from scratch); does nothing when it has already finished.
+void run_plan_job(const ComparePlan& plan, int index, const SceneDesc& base, const CompareOptions& o);
 
 // The finished result of `job` (InputError when it is not finished).
 CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job);

@@ -6,6 +6,7 @@
 // every rank's finished pixels; warnings are printed once, not once per rank.
 #include "sampling/samplers/sampler.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/process_probe.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -102,14 +103,7 @@ pid_t rank_pid(const fs::path& out, int rank, int signal = 0) {
       if (c.find(out.string()) == std::string::npos || c.find("mpirun") != std::string::npos ||
           e.find("OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0') == std::string::npos)
         continue;
-      if (signal) {
-        std::ifstream status(p.path() / "status");
-        std::string line;
-        uint64_t caught = 0;
-        while (std::getline(status, line))
-          if (line.rfind("SigCgt:", 0) == 0) caught = std::stoull(line.substr(7), nullptr, 16);
-        if (!(caught >> (signal - 1) & 1)) continue;
-      }
+      if (signal && !pdrt::test::catches_signal(pid_t(std::stoi(pid)), signal)) continue;
       return pid_t(std::stoi(pid));
     }
   }
@@ -117,7 +111,8 @@ pid_t rank_pid(const fs::path& out, int rank, int signal = 0) {
 }
 
 // Stops a 2-rank render of 160 x 112 pixels at 4096 spp (about a minute of work) by sending
-// `signal` to mpirun 1.5 s after both ranks are ready for it; returns mpirun's exit status
+// `signal` to mpirun once both ranks are ready for it and have rendered for 2 CPU seconds
+// each (over 200 pixels at about 7 ms each); returns mpirun's exit status
 // and how long it took to end, and reads the image.
 struct Stopped {
   int status = -1;
@@ -137,8 +132,8 @@ Stopped stop_mpirun(const fs::path& dir, int signal) {
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  const bool ready = rank_pid(out, 0, SIGTERM) && rank_pid(out, 1, SIGTERM);
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  const pid_t rank[2] = {rank_pid(out, 0, SIGTERM), rank_pid(out, 1, SIGTERM)};
+  const bool ready = rank[0] && rank[1] && pdrt::test::wait_for_cpu_seconds(rank, 2, 2.0);
   const auto t0 = std::chrono::steady_clock::now();
   ::kill(pid, ready ? signal : SIGKILL);
   int status = 0;

@@ -1,5 +1,6 @@
 // `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
 #include "tests/support/cli_runner.h"
+#include "tests/support/process_probe.h"
 #include "renderer/render/image_output.h"
 #include "sampling/samplers/sampler.h"
 
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -433,14 +435,27 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   EXPECT_FALSE(fs::exists(d / "r" / "results.json"));
 }
 
-// Ctrl-C: the render stops, the image so far is written and marked partial, exit 130.
+// Ctrl-C: the render stops, the image so far is written and marked partial, exit 130. The
+// signal goes once pdrt handles SIGINT and has rendered for a CPU second, however loaded the
+// machine (a fixed delay could find it still loading, or done).
 TEST(CliRender, InterruptWritesPartialImage) {
   fs::path d = scratch_dir("render_int");
   fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
   fs::path out = d / "out.exr";
-  std::string cmd = "timeout --preserve-status -s INT 3 '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
-                    out.string() + " --spp 4096 --quiet 2>/dev/null";
-  int status = std::system(cmd.c_str());
+  const std::string cmd = "exec '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " + out.string() +
+                          " --spp 4096 --allow-long-render --quiet 2>/dev/null";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const bool ready = pdrt::test::wait_until([&] { return pdrt::test::catches_signal(pid, SIGINT); }, 120) &&
+                     pdrt::test::wait_for_cpu_seconds(&pid, 1, 1.0);
+  ::kill(pid, ready ? SIGINT : SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(ready) << "pdrt never installed its SIGINT handler and rendered";
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
   auto in = OIIO::ImageInput::open(out.string());

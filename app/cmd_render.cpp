@@ -85,7 +85,7 @@ void add_render_command(CLI::App& app) {
       ->required()
       ->allow_extra_args(false);
   add_integer_option(cmd, "--spp", o->spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
-  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | poisson-02 | sobol | regular (overrides sampler.type)");
+  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | poisson-065 | sobol | regular (overrides sampler.type)");
   add_integer_option(cmd, "--seed", o->seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)");
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width in pixels (overrides film.width)");

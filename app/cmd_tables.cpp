@@ -23,8 +23,8 @@ void add_tables_command(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("tables", "Generate the precomputed sample tables (one file per family and table set).");
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
-  cmd->add_option("--set", o->set, "Table set: poisson, poisson-02 or all")
-      ->check(CLI::IsMember({"poisson", "poisson-02", "all"}))
+  cmd->add_option("--set", o->set, "Table set: poisson, poisson-065 or all")
+      ->check(CLI::IsMember({"poisson", "poisson-065", "all"}))
       ->default_str("all");
   add_integer_option(cmd, "--seed,-s", o->seed, IntRange{0, UINT64_MAX}, "Seed of the table set")->default_str("1");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
@@ -32,7 +32,7 @@ void add_tables_command(CLI::App& app) {
     require_output_path("-o/--out", o->out);
     std::filesystem::path dir(o->out);
     std::vector<TableSetKind> kinds;
-    for (TableSetKind k : {TableSetKind::Poisson, TableSetKind::Poisson02})
+    for (TableSetKind k : kTableSets)
       if (o->set == "all" || o->set == table_set_name(k)) kinds.push_back(k);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);

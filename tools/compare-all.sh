@@ -26,7 +26,7 @@ for scene in scenes/*.json; do
   else
     target=(--out "$OUT/$name")
   fi
-  "$B/pdrt" compare "$scene" "${target[@]}" --samplers random,jitter,poisson,poisson-02,sobol --spp "$SPP" \
+  "$B/pdrt" compare "$scene" "${target[@]}" --samplers random,jitter,poisson,poisson-065,sobol --spp "$SPP" \
     --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive
   if [ "$MODE" = plan ]; then sed "s|^|$OUT/$name |" "$OUT/$name/jobs.txt" >> "$OUT/jobs.txt"; fi
 done

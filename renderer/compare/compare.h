@@ -12,7 +12,7 @@
 namespace pdrt {
 
 struct CompareOptions {
-  std::vector<std::string> samplers{"random", "jitter", "poisson", "poisson-02", "sobol"};
+  std::vector<std::string> samplers{"random", "jitter", "poisson", "poisson-065", "sobol"};
   std::vector<int> spp{1, 4, 16, 64, 256};
   bool adaptive = false;
   double adaptive_threshold = 0;    // > 0: the centre of the threshold sweep (else the scene's, else the metric's default)

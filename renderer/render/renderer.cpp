@@ -8,7 +8,6 @@
 #include "renderer/render/light_sampler.h"
 #include "renderer/render/path_integrator.h"
 #include "renderer/render/process_cpu_time.h"
-#include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/progress.h"
 #include "sampling/core/rng.h"
 #include "sampling/core/warnings.h"
@@ -30,10 +29,7 @@
 
 namespace pdrt {
 
-std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) {
-  if (d.type == "poisson") return make_poisson_sampler(d.seed, default_tables());
-  return make_sampler(d.type, d.seed);
-}
+std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) { return make_sampler(d.type, d.seed); }
 
 void check_film_memory(int width, int height, const std::string& where, int films) {
   double need = double(width) * double(height) * double(Film::kBytesPerPixel) * films;

@@ -1,10 +1,13 @@
-// `poisson` sampler (docs/sampling.md, "Decorrelation"). Non-pixel families: a pixel's
-// streams of one family take distinct tables (a per-pixel permutation of the tables indexed
-// by the bounce salt), each with its own symmetry of the square and its own toroidal
-// (Cranley–Patterson) shift. Pixel family: each P x P tile instance takes a table, a symmetry
-// and a shift of the tile pattern on its torus; a pixel's samples are the shifted pattern's
-// points inside it, in rank order. Sample i is the i-th point of the stream's prefix, so
-// raising a pixel's sample count only appends samples (McCool §5.1).
+// `poisson` and `poisson-065` samplers (docs/sampling.md, "Decorrelation"). Non-pixel
+// families: a pixel's streams of one family take distinct tables (a per-pixel permutation of
+// the tables indexed by the bounce salt), each with its own symmetry of the square and its
+// own shift: for `poisson` the half-period shifts and a digital shift of the bits below
+// 2^-12, which keep both the (0,2) strata and the distances, read through a per-stream index
+// shuffle; for `poisson-065` a toroidal (Cranley–Patterson) shift. Pixel family: untiled
+// tables are read like the other families; a P x P tile instance (P > 1) takes a table, a
+// symmetry and a shift of the tile pattern on its torus, and a pixel's samples are the
+// shifted pattern's points inside it, in rank order. Sample i is the i-th point of the
+// stream's prefix, so raising a pixel's sample count only appends samples (McCool §5.1).
 #include "sampling/samplers/poisson_sampler.h"
 
 #include "sampling/core/cache_dir.h"
@@ -60,7 +63,21 @@ int mod(int a, int b) { return a - floor_div(a, b) * b; }
 
 class PoissonSampler final : public Sampler {
  public:
-  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {}
+  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {
+    // `poisson`'s untiled 2-D families hold tables of one kind (owen-pd, same size), so they
+    // are read as one pool: 4x the tables per stream for the same generation time, which
+    // divides the bias its few randomisations leave by about 4 (docs/sampling.md).
+    if (!stratified() || tiled()) return;
+    const SampleTable& lens = *t.family[int(Family::Lens)];
+    for (Family f : kPlaneFamilies) {
+      const SampleTable& ft = *t.family[int(f)];
+      if (ft.dim != 2 || ft.params.points != lens.params.points || ft.params.construction != lens.params.construction) {
+        pool_.clear();
+        return;
+      }
+      for (const auto& c : ft.coords) pool_.push_back(c.data());
+    }
+  }
   std::string name() const override { return table_set_name(tables_.kind); }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
@@ -88,29 +105,33 @@ class PoissonSampler final : public Sampler {
     return p.value(table_index(px, py, f, bounce, round, uint64_t(index) % m), 0);
   }
 
-  // get_2d/get_1d read values through the same PreparedStream (and, for poisson-02, the same
+  // get_2d/get_1d read values through the same PreparedStream (and, for poisson, the same
   // index shuffle), so the fast path is exact.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
     map_stream(px, py, f, bounce, 0, out);
-    if (!digital() || !std::has_single_bit(out->count)) return;
-    // poisson-02: the table read through the stream's index shuffle, stored per stream.
-    const PreparedStream table = *out;
-    const uint32_t n = std::min(out->want, table.count);
+    if (!stratified() || !std::has_single_bit(out->count)) return;
+    // poisson: the table's points read through the stream's index shuffle, stored per
+    // stream; the stream's map (symmetry and shift) stays as map_stream set it, so a value is
+    // the same double as get_2d's.
+    const uint32_t* table = out->coords;
+    const uint32_t n = std::min(out->want, out->count);
     const int dim = family_dim(f);
     thread_local std::vector<uint32_t> perm;
     perm.resize(n);
     IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(n, perm.data());
-    fill_prepared(out, n, dim, [&](uint32_t i, uint32_t* v) {
-      for (int k = 0; k < dim; ++k) v[k] = table.coords[(std::size_t(perm[i]) << table.shift) + table.src[k]] ^ table.xr[k];
-    });
-    out->grows = n < table.count;
+    out->own.resize(std::size_t(n) * dim);
+    for (uint32_t i = 0; i < n; ++i)
+      for (int k = 0; k < dim; ++k) out->own[std::size_t(i) * dim + k] = table[(std::size_t(perm[i]) << out->shift) + k];
+    out->coords = out->own.data();
+    out->grows = n < out->count;
+    out->count = n;
   }
 
-  // Tiled pixel tables merge cells per pixel, poisson-02 shuffles; every other stream points
+  // Tiled pixel tables merge cells per pixel, poisson shuffles; every other stream points
   // into a table.
   bool prepare_computes(Family f) const override {
-    return (f == Family::Pixel && tiled()) || (digital() && std::has_single_bit(tables_.family[int(f)]->params.points));
+    return (f == Family::Pixel && tiled()) || (stratified() && std::has_single_bit(tables_.family[int(f)]->params.points));
   }
 
   int64_t samples_available(int px, int py) const override {
@@ -132,19 +153,24 @@ class PoissonSampler final : public Sampler {
   // another key, and later rounds pick by hash: such streams differ only by symmetry and shift.
   void map_stream(int px, int py, Family f, int bounce, uint64_t round, PreparedStream* out) const {
     const SampleTable& t = *tables_.family[int(f)];
-    const uint32_t T = t.table_count(), b = uint32_t(bounce);
+    const bool pooled = !pool_.empty() && f != Family::Time;
+    // Pooled: the 2-D families share one permutation of the pool, salt b of family f at
+    // slot 4 b + f's place, so no two 2-D streams of a path share a table up to depth 16.
+    const uint32_t T = pooled ? uint32_t(pool_.size()) : t.table_count();
+    const uint32_t b = pooled ? 4 * uint32_t(bounce) + plane_place(f) : uint32_t(bounce);
     uint64_t h = stream(px, py, f, bounce);
     uint32_t table;
     if (round == 0) {
-      const uint64_t key = stream(px, py, f, -1);  // the pixel's allocation, shared by its salts
+      // The pixel's allocation, shared by its salts (and, pooled, by its 2-D families).
+      const uint64_t key = stream(px, py, pooled ? Family::Pixel : f, -1);
       table = permute(b % T, T, hash_combine(key, b / T));
     } else {
       h = hash_combine(h, round);
       table = pick(h, T);
     }
     const unsigned sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
-    const uint64_t s = opt_.toroidal_shift ? mix64(h ^ kShiftSalt) : 0;
-    out->coords = t.coords[table].data();
+    const uint64_t s = opt_.shift ? mix64(h ^ kShiftSalt) : 0;
+    out->coords = pooled ? pool_[table] : t.coords[table].data();
     out->count = t.params.points;
     out->shift = t.dim == 2 ? 1 : 0;
     out->grows = false;
@@ -153,11 +179,16 @@ class PoissonSampler final : public Sampler {
       const bool flip = sym & (2u << k);
       out->src[k] = uint8_t(swap ? 1 - k : k);
       const uint32_t r = uint32_t(s >> (32 * out->src[k]));  // the shift belongs to the table's axis
-      if (digital()) {
-        // A digital shift and a flip as the complement 1 - 2^-32 - x: both map every
-        // elementary interval onto one, so the strata survive (a toroidal shift would cut
-        // the stratum that wraps), and the shift makes each point uniform over seeds.
-        out->xr[k] = r ^ (flip ? ~0u : 0u), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
+      const PoissonShift mode = shift_of(f);
+      if (mode != PoissonShift::Toroidal) {
+        // A flip as the complement 1 - 2^-32 - x and a digital shift: each maps every
+        // elementary interval onto one, so the strata survive (a toroidal shift would cut the
+        // stratum that wraps). Isometric: only the top bit (x + 1/2 on the torus) and the
+        // bits below 2^-12 are shifted; the first two are isometries of the torus and the
+        // last moves a point by < 2^-12, so the tables' distances survive too (a digital shift
+        // of the bits between would swap dyadic blocks and bring far points together).
+        const uint32_t keep = mode == PoissonShift::Digital ? ~0u : 0x80000000u | (~0u >> kShiftExactBits);
+        out->xr[k] = (r & keep) ^ (flip ? ~0u : 0u), out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = kFixed;
       } else {
         out->xr[k] = 0, out->add[k] = r;
         out->off[k] = flip ? 1.0 : 0.0;
@@ -199,7 +230,7 @@ class PoissonSampler final : public Sampler {
     const unsigned sym = unsigned(h) & 7u;
     uint32_t F[2] = {0, 0};
     int I[2] = {0, 0};
-    if (opt_.toroidal_shift) {
+    if (opt_.shift) {
       const uint64_t s = mix64(h ^ kShiftSalt), s2 = mix64(s);
       F[0] = uint32_t(s), F[1] = uint32_t(s >> 32);
       I[0] = int(pick(s2, uint32_t(P))), I[1] = int(pick(s2 << 32, uint32_t(P)));
@@ -256,29 +287,39 @@ class PoissonSampler final : public Sampler {
     warn(line, "poisson: past the prefix");
   }
 
-  // poisson-02 reads every stream through its own index shuffle (as jitter and sobol do):
-  // its stratified tables visit their strata in related orders (progressive jitter's fixed
+  // `poisson` reads every stream through its own index shuffle (as jitter and sobol do): its
+  // stratified tables visit their strata in related orders (progressive jitter's fixed
   // parent order in time, Sobol's index structure in 2-D) that a digital shift does not
   // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
-  // keep their point sets, so their strata. `poisson` keeps the tables' own order, which is
-  // what makes every prefix Poisson-disk.
+  // keep their point sets, so their strata and distances. `poisson-065` keeps the tables'
+  // own order, which is what makes its every prefix Poisson-disk at rho 0.65.
   uint64_t shuffle_key(int px, int py, Family f, int bounce, uint64_t round) const {
     return hash_combine(stream(px, py, f, bounce), round ^ 0x73687566666c6532ull);
   }
   // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
   int64_t table_index(int px, int py, Family f, int bounce, uint64_t round, uint64_t j) const {
-    if (!digital() || !std::has_single_bit(tables_.family[int(f)]->params.points)) return int64_t(j);
+    if (!stratified() || !std::has_single_bit(tables_.family[int(f)]->params.points)) return int64_t(j);
     return int64_t(IndexShuffle(shuffle_key(px, py, f, bounce, round))(j));
   }
 
   // Pixel tables of a P x P tile (P > 1) keep the Poisson-disk property across pixel borders;
   // the default P = 1 gives each pixel its own pattern on its torus like the other families.
   bool tiled() const { return tables_.family[int(Family::Pixel)]->params.tile > 1; }
-  // poisson-02 keeps its strata: digital shifts instead of toroidal ones.
-  bool digital() const { return tables_.kind == TableSetKind::Poisson02; }
+  // `poisson`'s tables are stratified and read through the index shuffle.
+  bool stratified() const { return tables_.kind == TableSetKind::Poisson; }
+  PoissonShift shift_of(Family f) const {
+    if (!stratified()) return PoissonShift::Toroidal;
+    return f == Family::Pixel ? opt_.pixel : f == Family::Time ? opt_.time : opt_.plane;
+  }
+
+  static constexpr Family kPlaneFamilies[] = {Family::Pixel, Family::Lens, Family::Light, Family::Gloss};
+  static uint32_t plane_place(Family f) {
+    return f == Family::Pixel ? 0 : f == Family::Lens ? 1 : f == Family::Light ? 2 : 3;
+  }
 
   TableSet tables_;
   PoissonOptions opt_;
+  std::vector<const uint32_t*> pool_;  // `poisson`'s 2-D tables of every family, when pooled
 };
 
 bool complete(const std::filesystem::path& dir, TableSetKind kind) {
@@ -295,8 +336,44 @@ TableSet load_tables(const std::filesystem::path& dir, TableSetKind kind) {
   set.kind = kind;
   for (int f = 0; f < kFamilyCount; ++f) {
     Family fam = Family(f);
-    set.family[f] = std::make_shared<const SampleTable>(read_table(dir / table_file_name(fam, kind), &fam));
+    const std::filesystem::path file = dir / table_file_name(fam, kind);
+    auto t = std::make_shared<const SampleTable>(read_table(file, &fam));
+    // The randomisation relies on the construction: a digital shift keeps owen-pd's strata,
+    // a toroidal one stratified-pd's distances; another set's tables would be read wrongly.
+    const Construction want = table_set_construction(kind, fam);
+    if (t->params.construction != want)
+      throw InputError(file.string() + ": construction is " + construction_name(t->params.construction) + ", the " +
+                       table_set_name(kind) + " sampler's " + family_name(fam) + " tables must be " +
+                       construction_name(want));
+    set.family[f] = std::move(t);
   }
+  return set;
+}
+
+TableSet cached_tables(const std::filesystem::path& dir, TableSetKind kind) {
+  if (complete(dir, kind)) return load_tables(dir, kind);
+  // Generated here and kept in memory; the cache only saves the next run the work. A cache
+  // that cannot be written costs one warning (each file is written atomically, so none is
+  // left half-written), never the render.
+  warn(std::string("pdrt: generating the ") + table_set_name(kind) + " sample tables into " + dir.string() + " (once)");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::string failed = ec ? ec.message() : "";
+  TableSet set;
+  set.dir = dir;
+  set.kind = kind;
+  for (const TableParams& p : default_table_params(kind)) {
+    auto t = std::make_shared<const SampleTable>(generate_table(p));
+    if (failed.empty()) try {
+        write_table(dir / table_file_name(p.family, kind), *t);
+      } catch (const std::exception& e) {
+        failed = e.what();
+      }
+    set.family[int(p.family)] = std::move(t);
+  }
+  if (!failed.empty())
+    warn("pdrt: warning: " + dir.string() + ": cannot write the table cache (" + failed +
+         "); using the tables generated in memory, which the next run generates again");
   return set;
 }
 
@@ -318,18 +395,9 @@ const TableSet& default_tables(TableSetKind kind) {
 #endif
     // The cache key names the file format and the generation rule (g2: draws that miss the
     // rho bar are redrawn; g3: balanced 1-D time tables; g4: 2048 of them; g5: 64 time tables;
-    // g6: untiled pixel tables; g7: stratified-pd and owen-pd sets), so an older pdrt's cache
-    // is not reused.
-    std::filesystem::path dir = cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g7-seed1");
-    if (!complete(dir, kind)) {
-      std::error_code ec;
-      std::filesystem::create_directories(dir, ec);
-      if (ec) throw InputError(dir.string() + ": cannot create the table cache (" + ec.message() + ")");
-      warn(std::string("pdrt: generating the ") + table_set_name(kind) + " sample tables into " + dir.string() + " (once)");
-      for (const TableParams& p : default_table_params(kind))
-        write_table(dir / table_file_name(p.family, kind), generate_table(p));
-    }
-    set = load_tables(dir, kind);
+    // g6: untiled pixel tables; g7: stratified-pd and owen-pd sets; g8: owen-pd is `poisson`,
+    // stratified-pd `poisson-065`), so an older pdrt's cache is not reused.
+    set = cached_tables(cache_dir() / ("tables-v" + std::to_string(kTableVersion) + "-g8-seed1"), kind);
   });
   return sets[i];
 }

@@ -365,7 +365,12 @@ const char* construction_name(Construction c) {
   return names[int(c) < kConstructionCount ? int(c) : 0];
 }
 
-const char* table_set_name(TableSetKind k) { return k == TableSetKind::Poisson02 ? "poisson-02" : "poisson"; }
+const char* table_set_name(TableSetKind k) { return k == TableSetKind::Poisson065 ? "poisson-065" : "poisson"; }
+
+Construction table_set_construction(TableSetKind kind, Family family) {
+  if (kind == TableSetKind::Poisson065) return family == Family::Time ? Construction::Balanced : Construction::StratifiedPD;
+  return family == Family::Time ? Construction::StratifiedBC : Construction::OwenPD;
+}
 
 std::vector<std::pair<std::string, double>> construction_params(const TableParams& p) {
   std::vector<std::pair<std::string, double>> v = {{"prefix_floor", p.prefix_floor}, {"whole_floor", p.whole_floor}};
@@ -397,12 +402,10 @@ std::vector<TableParams> default_table_params(TableSetKind kind) {
     // 2048 points, twice the samples a pixel uses, so 1024 spp reads a prefix, which is more
     // even than a whole table (its last points must saturate the gaps for the rho bar).
     p.points = 2048;
+    p.construction = table_set_construction(kind, f);
     if (kind == TableSetKind::Poisson) {
-      p.construction = f == Family::Time ? Construction::Balanced : Construction::StratifiedPD;
-    } else {
       // Strict strata: the bar is what a (0,2)-sequence can reach (stratified-pd.md: 0.41
       // at best over every prefix), and 1-D progressive jitter with best candidates.
-      p.construction = f == Family::Time ? Construction::StratifiedBC : Construction::OwenPD;
       p.points = f == Family::Time ? 2048 : 1024;
       p.prefix_floor = f == Family::Time ? 0.25 : 0.35;
       p.whole_floor = 0.0;
@@ -414,7 +417,7 @@ std::vector<TableParams> default_table_params(TableSetKind kind) {
 }
 
 std::string table_file_name(Family family, TableSetKind kind) {
-  return std::string(family_name(family)) + (kind == TableSetKind::Poisson02 ? ".02" : "") + ".pdrttbl";
+  return std::string(family_name(family)) + (kind == TableSetKind::Poisson065 ? ".065" : "") + ".pdrttbl";
 }
 
 }  // namespace pdrt

@@ -1,13 +1,13 @@
 #pragma once
 // Precomputed hierarchical tables (McCool & Fiume §4–5, Cook §5.1), one file per dimension
 // family and table set. Every table is stored in rank order, so every prefix is
-// Poisson-disk at its recorded radius. Two sets (issue 16):
-//   `poisson`:    2-D families "(0,2)-first" stratified Poisson-disk (stratified-pd), 2048
-//                 points, rho >= 0.65 on every prefix of >= 16 points and >= 0.72 whole;
-//                 time: balanced 1-D relaxation at the same bar.
-//   `poisson-02`: 2-D families owen-pd (every power-of-two prefix a (0,m,2)-net, scramble
-//                 chosen for distance, rho >= 0.35 on every prefix of >= 16 points); time:
-//                 stratified-bc (every 2^k prefix one point per 1/2^k stratum).
+// Poisson-disk at its recorded radius. Two sets (issues 16, 28):
+//   `poisson`:     2-D families owen-pd (every power-of-two prefix a (0,m,2)-net, scramble
+//                  chosen for distance, rho >= 0.35 on every prefix of >= 16 points); time:
+//                  stratified-bc (every 2^k prefix one point per 1/2^k stratum).
+//   `poisson-065`: 2-D families "(0,2)-first" stratified Poisson-disk (stratified-pd), 2048
+//                  points, rho >= 0.65 on every prefix of >= 16 points and >= 0.72 whole;
+//                  time: balanced 1-D relaxation at the same bar.
 // The pixel family holds one pattern per table spanning a tile of P x P pixels (P = 1 by
 // default); each pixel's samples are the points that fall in it, in rank order, stored as
 // offsets within the pixel. The format is in docs/table-format.md.
@@ -28,8 +28,9 @@ inline constexpr int kConstructionCount = 5;
 const char* construction_name(Construction c);  // "mccool", "balanced", "stratified-pd", "owen-pd", "stratified-bc"
 
 // The two table sets, read by the samplers of the same names.
-enum class TableSetKind : uint8_t { Poisson, Poisson02 };
-const char* table_set_name(TableSetKind k);  // "poisson", "poisson-02"
+enum class TableSetKind : uint8_t { Poisson, Poisson065 };
+inline constexpr TableSetKind kTableSets[] = {TableSetKind::Poisson, TableSetKind::Poisson065};
+const char* table_set_name(TableSetKind k);  // "poisson", "poisson-065"
 
 struct TableParams {
   Family family = Family::Lens;
@@ -74,6 +75,8 @@ void write_table(const std::filesystem::path& path, const SampleTable& table);
 // checksum. Throws InputError naming the file and the problem.
 SampleTable read_table(const std::filesystem::path& path, const Family* expected = nullptr);
 
+// The construction a set's tables of `family` must have (load_tables refuses others).
+Construction table_set_construction(TableSetKind kind, Family family);
 // A table set's parameters per family.
 std::vector<TableParams> default_table_params(TableSetKind kind = TableSetKind::Poisson);
 std::string table_file_name(Family family, TableSetKind kind = TableSetKind::Poisson);

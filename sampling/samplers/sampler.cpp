@@ -31,7 +31,7 @@ void Sampler::prepare(int, int, Family, int, PreparedStream* out) const { out->c
 int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
 
 const std::vector<std::string>& sampler_names() {
-  static const std::vector<std::string> names = {"random", "jitter", "poisson", "poisson-02", "sobol"};
+  static const std::vector<std::string> names = {"random", "jitter", "poisson", "poisson-065", "sobol"};
   return names;
 }
 
@@ -56,7 +56,7 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "jitter") return make_progressive_jitter_sampler(seed);
   if (name == "sobol") return make_sobol_sampler(seed);
   if (name == "poisson") return make_poisson_sampler(seed, default_tables());
-  if (name == "poisson-02") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson02));
+  if (name == "poisson-065") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
   throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
 }
 

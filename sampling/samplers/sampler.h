@@ -200,7 +200,7 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The Monte Carlo samplers (random, jitter, poisson, poisson-02, sobol): unbiased over seeds,
+// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol): unbiased over seeds,
 // the ones every sampler test and `compare`'s defaults cover.
 const std::vector<std::string>& sampler_names();
 // Every name `make_sampler` accepts: sampler_names() and the `regular` baseline (the same

@@ -120,7 +120,7 @@ TEST(CameraSample, RankKeepsTheSppAskedForOnAverageAt1_2_4Spp) {
   // before, it took few offsets near the centre and kept 0.93 / 1.83 / 3.87).
   for (auto [type, radius] : {std::pair{FilterType::Gaussian, 1.5f}, std::pair{FilterType::Mitchell, 2.0f}}) {
     Filter filter(filter_desc(type, radius));
-    for (const char* name : {"random", "jitter", "poisson", "poisson-02", "sobol"}) {
+    for (const char* name : {"random", "jitter", "poisson", "poisson-065", "sobol"}) {
       auto sampler = make_sampler(name, 9);
       PixelSampleState ps(*sampler);
       for (int n : {1, 2, 4}) {

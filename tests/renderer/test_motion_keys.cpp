@@ -48,7 +48,7 @@ TEST(MotionKeys, IdentityKeysInsideTheShutterKeepTheObjectForTheWholeShutter) {
                                    {0, 1, {0.3f, 0.4f, 0.9f}},     // uneven keys
                                    {2, 4, {2.5f, 3.0f, 3.5f}},     // a shutter away from 0
                                    {-1e3f, 1e3f, {-1.0f, 1.0f}}};  // keys far inside a long shutter
-  for (const char* sampler : {"random", "jitter", "poisson", "poisson-02", "sobol"})
+  for (const char* sampler : {"random", "jitter", "poisson", "poisson-065", "sobol"})
     for (int spp : {1, 2, 4})
       for (const Keys& c : cases) {
         SceneDesc s = filled_view(spp, sampler, {1e3f, -20, 3}, c.open, c.close);

@@ -14,7 +14,7 @@ namespace {
 using namespace test;
 
 const Reconstruction kModes[] = {Reconstruction::Importance, Reconstruction::Splat, Reconstruction::Rank};
-const char* const kSamplers[] = {"random", "jitter", "poisson", "poisson-02", "sobol"};
+const char* const kSamplers[] = {"random", "jitter", "poisson", "poisson-065", "sobol"};
 
 // The camera sees only the environment (radiance 1): every pixel's filtered value is 1.
 SceneDesc uniform_emitter(int spp, Reconstruction mode, const char* sampler) {

@@ -21,7 +21,7 @@ using namespace pdrt::test;
 TEST(RussianRoulette, SmoothGlassSphereInAFurnaceIsNoiseFree) {
   const int W = 24, H = 24;
   const Vec3 centre(-300, 40, 1e3f);
-  for (const char* sampler : {"random", "jitter", "poisson", "poisson-02", "sobol"})
+  for (const char* sampler : {"random", "jitter", "poisson", "poisson-065", "sobol"})
     for (int rr_depth : {1, 3})
       for (int spp : {1, 2, 4, 16}) {
         SceneDesc s = furnace_sphere(W, H, spp, centre, glass(1.5f));

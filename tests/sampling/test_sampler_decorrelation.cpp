@@ -3,6 +3,7 @@
 // never share a Poisson table up to a symmetry, and the seed-average of a pixel estimate
 // converges to the integral (a randomised quadrature, not a fixed one).
 #include "sampling/analysis/chi_square.h"
+#include "sampling/samplers/poisson_sampler.h"
 #include "sampling/samplers/sampler.h"
 
 #include <gtest/gtest.h>
@@ -126,3 +127,43 @@ TEST(SamplerDecorrelation, SeedAverageOfAPixelEstimateConvergesToTheIntegral) {
       EXPECT_NEAR(mean, 1.0 / 6.0, 4 * se) << name << " pixel " << px << "," << py << " se " << se;
     }
 }
+
+namespace pdrt {
+namespace {
+
+// Why `poisson` shifts digitally by default (docs/sampling.md, "Shifts that keep strata and
+// distances"): the isometric shift keeps the tables' distances, but a distance-optimised net
+// sits nearer the middle of its strata than a uniform one, like a midpoint rule, so on a
+// smooth convex integrand the seed-average stays below the integral. Here: a lens stream's
+// 4-sample estimate of the mean squared distance from the centre (1/6), 4096 seeds: measured
+// bias^2 1.1-1.5 % of the estimate's variance (2-3 % at 16 samples, 11-15 % at 64), at least
+// 4 standard errors below 1/6; the default digital shift's within 4 standard errors.
+TEST(SamplerDecorrelation, IsometricShiftBiasesASmoothEstimateLikeAMidpointRule) {
+  for (const bool isometric : {true, false}) {
+    const PoissonShift shift = isometric ? PoissonShift::Isometric : PoissonShift::Digital;
+    for (auto [px, py] : {std::pair{3, 5}, std::pair{100, 41}}) {
+      const int seeds = 4096, n = 4;
+      double s = 0, s2 = 0;
+      for (int k = 0; k < seeds; ++k) {
+        auto smp = make_poisson_sampler(uint64_t(k) + 1, default_tables(), {.plane = shift});
+        double e = 0;
+        for (int i = 0; i < n; ++i) {
+          const Vec2 u = smp->get_2d(px, py, i, Family::Lens, 0);
+          e += ((u[0] - 0.5) * (u[0] - 0.5) + (u[1] - 0.5) * (u[1] - 0.5)) / n;
+        }
+        s += e, s2 += e * e;
+      }
+      const double mean = s / seeds, sd = std::sqrt(s2 / seeds - mean * mean), se = sd / std::sqrt(double(seeds));
+      const double bias = mean - 1.0 / 6.0;
+      if (isometric) {
+        EXPECT_LT(bias, -4 * se) << px << "," << py;
+        EXPECT_GT(bias * bias, 0.005 * sd * sd) << px << "," << py;
+      } else {
+        EXPECT_LT(std::abs(bias), 4 * se) << px << "," << py;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pdrt

@@ -38,11 +38,12 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
-// `args` is appended to the command line as is (quote paths with spaces).
-inline CliResult run_pdrt(const std::string& args) {
+// `args` is appended to the command line as is (quote paths with spaces); `env`, when given,
+// is a shell prefix of variable assignments (NAME='value' ...).
+inline CliResult run_pdrt(const std::string& args, const std::string& env = "") {
   std::filesystem::create_directories(scratch_base());
   auto err_file = scratch_base() / "stderr.txt";
-  std::string cmd = "'";
+  std::string cmd = env.empty() ? "'" : env + " '";
   cmd += PDRT_BINARY;
   cmd += "' " + args + " >/dev/null 2>'" + err_file.string() + "'";
   int status = std::system(cmd.c_str());

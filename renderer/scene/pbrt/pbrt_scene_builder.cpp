@@ -759,7 +759,7 @@ class Builder {
     const std::string& t = d.strings[0];
     SamplerDesc& s = out_.scene.sampler;
     if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = "sobol";
-    else if (t == "pmj02bn") s.type = "poisson-02";
+    else if (t == "pmj02bn") s.type = "poisson";
     else if (t == "stratified") s.type = "jitter";
     else if (t == "independent") s.type = "random";
     else note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");

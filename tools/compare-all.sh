@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Renders the `pdrt compare` report of every scene in scenes/ with the same settings (no
-# per-scene tuning) into OUT/<scene>/index.html.
+# Renders the `pdrt compare` report of every scene in scenes/ (scenes/*.json and the pbrt-v4
+# scenes scenes/pbrt/*/*.pbrt) with the same settings (no per-scene tuning) into
+# OUT/<scene>/index.html.
 # Usage: tools/compare-all.sh [OUT=out/compare] [SCALE=1] [SPP=1,4,16,64,256] [REF_SPP=4096] [SEEDS=4]
 #   SCALE divides each scene's resolution (2 = half width and height) to save time.
 # MODE=plan writes every scene's comparison as a plan (OUT/<scene>/plan.json) and OUT/jobs.txt,
@@ -13,13 +14,28 @@ B=${PDRT_BUILD:-build}; MODE=${MODE:-run}
 case "$MODE" in run|plan|collect) ;; *) echo "compare-all.sh: MODE must be run, plan or collect, got \"$MODE\"" >&2; exit 2 ;; esac
 mkdir -p "$OUT"
 [ "$MODE" = plan ] && : > "$OUT/jobs.txt"
-for scene in scenes/*.json; do
-  name=$(basename "$scene" .json)
+shopt -s nullglob
+for scene in scenes/*.json scenes/pbrt/*/*.pbrt; do
+  name=$(basename "$scene"); name=${name%.*}
   if [ "$MODE" = collect ]; then
     "$B/pdrt" collect "$OUT/$name" --quiet
     continue
   fi
-  read -r w h < <(/usr/bin/env python3 -c "import json,sys; f=json.load(open('$scene'))['film']; print(f['width']//$SCALE, f['height']//$SCALE)")
+  # The film's size: JSON film.width/height; pbrt Film xresolution/yresolution (pbrt's
+  # defaults 1280x720 where absent).
+  read -r w h < <(/usr/bin/env python3 - "$scene" "$SCALE" <<'PY'
+import json, re, sys
+path, scale = sys.argv[1], int(sys.argv[2])
+if path.endswith(".pbrt"):
+    text = re.sub(r"#[^\n]*", "", open(path).read())
+    res = lambda k, d: int(re.search(r'"integer %s"\s*\[?\s*(\d+)' % k, text).group(1)) if re.search(r'"integer %s"' % k, text) else d
+    w, h = res("xresolution", 1280), res("yresolution", 720)
+else:
+    f = json.load(open(path))["film"]
+    w, h = f["width"], f["height"]
+print(w // scale, h // scale)
+PY
+)
   echo "== $name (${w}x${h}, spp $SPP, $SEEDS seeds, reference $REF spp)"
   if [ "$MODE" = plan ]; then
     target=(--plan "$OUT/$name" --quiet)

@@ -49,7 +49,10 @@ int main() {
   samplers.push_back({"poisson-065", make_poisson_sampler(1, p065)});
   samplers.push_back({"poisson-065, unshifted", make_poisson_sampler(1, p065, {.shift = false})});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
-  samplers.push_back({"poisson, digital shifts", make_poisson_sampler(1, default_tables(), {.plane = PoissonShift::Digital, .pixel = PoissonShift::Digital, .time = PoissonShift::Digital})});
+  samplers.push_back({"poisson, isometric shifts", make_poisson_sampler(1, default_tables(),
+                                                                       {.plane = PoissonShift::Isometric,
+                                                                        .pixel = PoissonShift::Isometric,
+                                                                        .time = PoissonShift::Isometric})});
   samplers.push_back({"poisson, unshifted", make_poisson_sampler(1, default_tables(), {.shift = false})});
   std::printf("RMSE over %d pixels' streams (slope of log RMSE vs log N over 16..1024); rho: mean relative\n"
               "radius of the same streams' N-point prefixes. Table samplers beyond a table's length continue\n"

@@ -1,9 +1,10 @@
 // `poisson` and `poisson-065` samplers (docs/sampling.md, "Decorrelation"). Non-pixel
 // families: a pixel's streams of one family take distinct tables (a per-pixel permutation of
 // the tables indexed by the bounce salt), each with its own symmetry of the square and its
-// own shift: for `poisson` the half-period shifts and a digital shift of the bits below
-// 2^-12, which keep both the (0,2) strata and the distances, read through a per-stream index
-// shuffle; for `poisson-065` a toroidal (Cranley–Patterson) shift. Pixel family: untiled
+// own shift: for `poisson` a digital shift, which keeps the (0,2) strata and makes every
+// value uniform, read through a per-stream index shuffle (PoissonShift has the alternatives
+// and why they are not the default); for `poisson-065` a toroidal (Cranley–Patterson)
+// shift, which keeps the tables' distances. Pixel family: untiled
 // tables are read like the other families; a P x P tile instance (P > 1) takes a table, a
 // symmetry and a shift of the tile pattern on its torus, and a pixel's samples are the
 // shifted pattern's points inside it, in rank order. Sample i is the i-th point of the
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <vector>
 
@@ -58,6 +60,9 @@ uint32_t permute(uint32_t i, uint32_t n, uint64_t key) {
   return i;
 }
 
+// std::has_single_bit without the popcount library call of a build for baseline x86-64.
+constexpr bool power_of_two(uint32_t n) { return n && !(n & (n - 1)); }
+
 int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 int mod(int a, int b) { return a - floor_div(a, b) * b; }
 
@@ -65,8 +70,8 @@ class PoissonSampler final : public Sampler {
  public:
   PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {
     // `poisson`'s untiled 2-D families hold tables of one kind (owen-pd, same size), so they
-    // are read as one pool: 4x the tables per stream for the same generation time, which
-    // divides the bias its few randomisations leave by about 4 (docs/sampling.md).
+    // are read as one pool: 4x the tables per stream for the same generation time, and no two
+    // 2-D streams of a path share one (docs/sampling.md, "Tables without replacement").
     if (!stratified() || tiled()) return;
     const SampleTable& lens = *t.family[int(Family::Lens)];
     for (Family f : kPlaneFamilies) {
@@ -110,7 +115,7 @@ class PoissonSampler final : public Sampler {
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
     map_stream(px, py, f, bounce, 0, out);
-    if (!stratified() || !std::has_single_bit(out->count)) return;
+    if (!stratified() || !power_of_two(out->count)) return;
     // poisson: the table's points read through the stream's index shuffle, stored per
     // stream; the stream's map (symmetry and shift) stays as map_stream set it, so a value is
     // the same double as get_2d's.
@@ -121,18 +126,21 @@ class PoissonSampler final : public Sampler {
     perm.resize(n);
     IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(n, perm.data());
     out->own.resize(std::size_t(n) * dim);
-    for (uint32_t i = 0; i < n; ++i)
-      for (int k = 0; k < dim; ++k) out->own[std::size_t(i) * dim + k] = table[(std::size_t(perm[i]) << out->shift) + k];
-    out->coords = out->own.data();
+    uint32_t* own = out->own.data();
+    if (dim == 2) {
+      for (uint32_t i = 0; i < n; ++i) std::memcpy(own + 2 * std::size_t(i), table + 2 * std::size_t(perm[i]), 8);
+    } else {
+      for (uint32_t i = 0; i < n; ++i) own[i] = table[perm[i]];
+    }
+    out->coords = own;
     out->grows = n < out->count;
     out->count = n;
   }
 
-  // Tiled pixel tables merge cells per pixel, poisson shuffles; every other stream points
-  // into a table.
-  bool prepare_computes(Family f) const override {
-    return (f == Family::Pixel && tiled()) || (stratified() && std::has_single_bit(tables_.family[int(f)]->params.points));
-  }
+  // Tiled pixel tables merge cells per pixel; every other stream points into a table or,
+  // for `poisson`, is a shuffled copy of one (about 1.5 ns a value against 30-40 ns for a value
+  // asked alone, so preparing pays even for the deep streams few samples reach).
+  bool prepare_computes(Family f) const override { return f == Family::Pixel && tiled(); }
 
   int64_t samples_available(int px, int py) const override {
     int64_t n = INT64_MAX;
@@ -298,7 +306,7 @@ class PoissonSampler final : public Sampler {
   }
   // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
   int64_t table_index(int px, int py, Family f, int bounce, uint64_t round, uint64_t j) const {
-    if (!stratified() || !std::has_single_bit(tables_.family[int(f)]->params.points)) return int64_t(j);
+    if (!stratified() || !power_of_two(tables_.family[int(f)]->params.points)) return int64_t(j);
     return int64_t(IndexShuffle(shuffle_key(px, py, f, bounce, round))(j));
   }
 

@@ -202,8 +202,11 @@ TEST(CliMpi, AKilledRankFailsTheRunWithinSecondsNamingIt) {
                           "' --quiet --threads 1 --spp 4096 --allow-long-render -o '" + (dir / "o.exr").string() + "'";
   std::string err;
   const auto t0 = std::chrono::steady_clock::now();
+  // Killed once it is rendering: its SIGTERM handler is installed after MPI_Init, and a rank
+  // killed before MPI_Init left mpirun waiting for its --timeout on a loaded machine.
   std::thread killer([&] {
-    if (const pid_t rank1 = rank_pid(dir / "o.exr", 1)) ::kill(rank1, SIGKILL);
+    pid_t rank1 = rank_pid(dir / "o.exr", 1, SIGTERM);
+    if (rank1 && pdrt::test::wait_for_cpu_seconds(&rank1, 1, 0.2)) ::kill(rank1, SIGKILL);
   });
   const int code = run(cmd, &err);
   killer.join();

@@ -264,14 +264,16 @@ PointSet stream_points(const Sampler& s, int px, int py, Family f, int bounce, i
 // toroidal shift would cut the strata at the seam.) The isometric shift keeps them too.
 TEST(PoissonSampler, EveryStreamKeepsItsStrata) {
   auto s = make_sampler("poisson", 11);
-  auto pixel = make_poisson_sampler(11, default_tables(), {.pixel = PoissonShift::Isometric});
-  for (auto [px, py] : {std::pair{0, 0}, std::pair{-7, 123}, std::pair{40000, 3}})
-    for (auto [f, bounce] : {std::pair{Family::Pixel, 0}, std::pair{Family::Lens, 0}, std::pair{Family::Light, 5},
-                             std::pair{Family::Gloss, 15}}) {
-      const PointSet ps = stream_points(f == Family::Pixel ? *pixel : *s, px, py, f, bounce, 1024);
-      for (std::size_t n = 1; n <= 1024; n *= 2)
-        ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " pixel " << px << "," << py << " n " << n;
-    }
+  const PoissonShift iso = PoissonShift::Isometric;
+  auto isometric = make_poisson_sampler(11, default_tables(), {.plane = iso, .pixel = iso, .time = iso});
+  for (const Sampler* smp : {s.get(), isometric.get()})
+    for (auto [px, py] : {std::pair{0, 0}, std::pair{-7, 123}, std::pair{40000, 3}})
+      for (auto [f, bounce] : {std::pair{Family::Pixel, 0}, std::pair{Family::Lens, 0}, std::pair{Family::Light, 5},
+                               std::pair{Family::Gloss, 15}}) {
+        const PointSet ps = stream_points(*smp, px, py, f, bounce, 1024);
+        for (std::size_t n = 1; n <= 1024; n *= 2)
+          ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " pixel " << px << "," << py << " n " << n;
+      }
   for (int bounce : {0, 48}) {
     for (uint64_t n = 1; n <= 2048; n *= 2) {
       std::vector<int> hits(n, 0);

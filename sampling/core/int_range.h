@@ -9,7 +9,14 @@ namespace pdrt {
 struct IntRange {
   uint64_t lo, hi;
   bool contains(uint64_t v) const { return v >= lo && v <= hi; }
-  std::string str() const { return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]"; }
+  std::string str() const {
+    std::string s = "[";  // appended, not literal + string: GCC 12's -Wrestrict false positive
+    s += std::to_string(lo);
+    s += ", ";
+    s += std::to_string(hi);
+    s += "]";
+    return s;
+  }
 };
 
 }  // namespace pdrt

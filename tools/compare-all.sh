@@ -2,14 +2,17 @@
 # Renders the `pdrt compare` report of every scene in scenes/ (scenes/*.json and the pbrt-v4
 # scenes scenes/pbrt/*/*.pbrt) with the same settings (no per-scene tuning) into
 # OUT/<scene>/index.html.
-# Usage: tools/compare-all.sh [OUT=out/compare] [SCALE=1] [SPP=1,4,16,64,256] [REF_SPP=4096] [SEEDS=4]
-#   SCALE divides each scene's resolution (2 = half width and height) to save time.
+# Usage: tools/compare-all.sh [OUT [SCALE [SPP [REF_SPP [SEEDS]]]]]   (positional; defaults
+#   out/compare 1 1,4,16,64,256 4096 4). SCALE divides each scene's resolution (2 = half width
+#   and height) to save time. The adaptive sweep targets the uniform RMSE at 64 spp when SPP
+#   holds 64, else at SPP's largest count.
 # MODE=plan writes every scene's comparison as a plan (OUT/<scene>/plan.json) and OUT/jobs.txt,
 # one "DIR INDEX" line per job of every plan, to run anywhere (docs/distributed.md), e.g.
 #   xargs -P 2 -L 1 build/pdrt run-job --quiet < OUT/jobs.txt
 # then MODE=collect writes every report and the summary.
 set -euo pipefail
 OUT=${1:-out/compare}; SCALE=${2:-1}; SPP=${3:-1,4,16,64,256}; REF=${4:-4096}; SEEDS=${5:-4}
+case ",$SPP," in *,64,*) TARGET=64 ;; *) TARGET=${SPP##*,} ;; esac
 B=${PDRT_BUILD:-build}; MODE=${MODE:-run}
 case "$MODE" in run|plan|collect) ;; *) echo "compare-all.sh: MODE must be run, plan or collect, got \"$MODE\"" >&2; exit 2 ;; esac
 mkdir -p "$OUT"
@@ -43,7 +46,7 @@ PY
     target=(--out "$OUT/$name")
   fi
   "$B/pdrt" compare "$scene" "${target[@]}" --samplers random,jitter,poisson,poisson-065,sobol --spp "$SPP" \
-    --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive
+    --seeds "$SEEDS" --reference-spp "$REF" --width "$w" --height "$h" --adaptive --adaptive-target-spp "$TARGET"
   if [ "$MODE" = plan ]; then sed "s|^|$OUT/$name |" "$OUT/$name/jobs.txt" >> "$OUT/jobs.txt"; fi
 done
 if [ "$MODE" = plan ]; then
@@ -55,23 +58,29 @@ fi
 /usr/bin/env python3 - "$OUT" <<'PY'
 import json, os, sys
 out = sys.argv[1]
-rows, names = [], []
+rows, names, one_seed = [], [], False
 for name in sorted(os.listdir(out)):
     p = os.path.join(out, name, "results.json")
     if not os.path.exists(p):
         continue
     r = json.load(open(p))
     names = r["samplers"]
+    # One seed has no interval: the lowest RMSE only, no ± and no ties.
+    single = len(r.get("seeds", [0])) < 2
+    one_seed = one_seed or single
     for n in r["spp"]:
         e = {u["sampler"]: (u["rmse"], u.get("rmse_ci95", 0.0)) for u in r["runs"] if u["spp"] == n}
         best = min(e, key=lambda s: e[s][0])
-        tied = [s for s in r["samplers"] if s != best and e[s][0] - e[s][1] <= e[best][0] + e[best][1]]
+        tied = [] if single else [s for s in r["samplers"] if s != best and e[s][0] - e[s][1] <= e[best][0] + e[best][1]]
         verdict = best if not tied else "tie: " + ", ".join([best] + tied)
-        rows.append("| %s | %d | %s | %s |" % (
-            name, n, " | ".join("%.4g ± %.2g" % e[s] for s in r["samplers"]), verdict))
+        cells = ("%.4g" % e[s][0] if single else "%.4g ± %.2g" % e[s] for s in r["samplers"])
+        rows.append("| %s | %d | %s | %s |" % (name, n, " | ".join(cells), verdict))
     rows.append("| %s | slope | %s | |" % (name, " | ".join("%.2f" % r["slopes"][s] for s in r["samplers"])))
 with open(os.path.join(out, "summary.md"), "w") as f:
     f.write("| scene | spp | " + " | ".join(names) + " | best |\n|---|---|" + "---|" * (len(names) + 1) + "\n")
     f.write("\n".join(rows) + "\n")
+    if one_seed:
+        f.write("\nOne seed: no intervals, so no ties; \"best\" is the lowest RMSE of one sample of each. "
+                "Intervals and ties need --seeds 2 or more (SEEDS, the fifth argument).\n")
 print("wrote", os.path.join(out, "summary.md"))
 PY

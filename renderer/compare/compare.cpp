@@ -262,12 +262,21 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
       run.image_file = "images/" + name + "-" + std::to_string(n) + ".png";
       run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
       write_display_png(o.out / run.image_file, W, H, display_rgb(run.image));
-      char buf[240];
-      std::snprintf(buf, sizeof buf,
-                    "%-8s %5d spp  rmse %.5f +- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g  %lld samples  %.3f s CPU"
-                    " (sampler %.1f%%)",
-                    name.c_str(), n, run.rmse, run.stats.rmse_ci95, o.seeds, run.stats.bias2, run.stats.variance,
-                    (long long)run.samples, run.cpu_seconds, 100 * run.profile.share());
+      // One seed has no interval and no split of its error into bias and variance: say so
+      // rather than print a zero-width interval and a zero variance.
+      char spread[120];
+      if (o.seeds > 1)
+        std::snprintf(spread, sizeof spread, "+- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g", run.stats.rmse_ci95,
+                      o.seeds, run.stats.bias2, run.stats.variance);
+      else
+        std::snprintf(spread, sizeof spread, "(1 seed: intervals, bias and variance need >= 2)");
+      char share[48];  // a render too short for a profiler tick has no measured share
+      const double sh = run.profile.share();
+      if (std::isnan(sh)) std::snprintf(share, sizeof share, "sampler share not measured: no profiler tick");
+      else std::snprintf(share, sizeof share, "sampler %.1f%%", 100 * sh);
+      char buf[340];
+      std::snprintf(buf, sizeof buf, "%-8s %5d spp  rmse %.5f %s  %lld samples  %.3f s CPU (%s)", name.c_str(), n, run.rmse,
+                    spread, (long long)run.samples, run.cpu_seconds, share);
       say(buf);
       runs.push_back(std::move(run));
     }
@@ -530,8 +539,12 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
                       {"ratio", std::isnan(ratio) ? json(nullptr) : json(ratio)},
                       {"upper_bound", c.upper_bound}};
       char buf[200];
-      std::snprintf(buf, sizeof buf, "%-8s adaptive reaches the uniform %d-spp RMSE %.5f with %s%.3f of its samples",
-                    name.c_str(), o.adaptive_target_spp, at_target->rmse, c.upper_bound ? "<= " : "", ratio);
+      if (std::isnan(ratio))  // the report's "not reached": no sweep step got down to it
+        std::snprintf(buf, sizeof buf, "%-8s adaptive does not reach the uniform %d-spp RMSE %.5f in its sweep",
+                      name.c_str(), o.adaptive_target_spp, at_target->rmse);
+      else
+        std::snprintf(buf, sizeof buf, "%-8s adaptive reaches the uniform %d-spp RMSE %.5f with %s%.3f of its samples",
+                      name.c_str(), o.adaptive_target_spp, at_target->rmse, c.upper_bound ? "<= " : "", ratio);
       say(buf);
     }
     j["adaptive"] = ja;

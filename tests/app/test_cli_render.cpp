@@ -311,6 +311,24 @@ TEST(CliCompare, SeedsWritePerSeedEntriesAndIntervals) {
   EXPECT_NE(csv.str().find("seed_index,seed,"), std::string::npos);
 }
 
+// Issue 29: with one seed the console gives no interval and no bias/variance split (it printed
+// "+- 0.00000 (95%, 1 seeds) ... variance 0"); with two it gives both.
+TEST(CliCompare, OneSeedPrintsNoIntervalOnTheConsole) {
+  fs::path d = scratch_dir("compare_one_seed");
+  fs::path scene = write_scene(d, R"("width": 12, "height": 8)");
+  for (int seeds : {1, 2}) {
+    auto r = run_pdrt("compare " + scene.string() + " --out " + (d / ("r" + std::to_string(seeds))).string() +
+                      " --samplers random --spp 2 --seeds " + std::to_string(seeds) + " --reference-spp 16 --cache-dir " +
+                      (d / "cache").string() + " --no-plots");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const bool one = seeds == 1;
+    EXPECT_EQ(r.err.find("+-") == std::string::npos, one) << r.err;
+    EXPECT_EQ(r.err.find("bias^2") == std::string::npos, one) << r.err;
+    EXPECT_EQ(r.err.find("nan"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("1 seed: intervals, bias and variance need >= 2") != std::string::npos, one) << r.err;
+  }
+}
+
 // Issue 28: the default sampler's seed-average on a render converges to the reference: over 64
 // seeds, bias^2 within 1 % of the variance at 4, 16 and 64 spp (the measure the issue asks of
 // any randomisation of the tables; its isometric shift, which keeps their distances, showed

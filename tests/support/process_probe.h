@@ -6,12 +6,12 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace pdrt::test {
 
@@ -53,7 +53,7 @@ bool wait_until(Pred&& ready, double timeout_s) {
 // (however loaded the machine, that much work is done); false after `timeout_s` or when one
 // is gone.
 inline bool wait_for_cpu_seconds(const pid_t* pids, int n, double seconds, double timeout_s = 300) {
-  double start[8];
+  std::vector<double> start(std::size_t(n > 0 ? n : 0));
   for (int i = 0; i < n; ++i)
     if ((start[i] = cpu_seconds(pids[i])) < 0) return false;
   bool gone = false;

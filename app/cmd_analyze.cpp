@@ -10,6 +10,7 @@
 #include "app/numeric_option.h"
 #include "app/output_path.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/output_directory.h"
 #include "sampling/core/point_csv.h"
 #include "app/python_plots.h"
 #include "sampling/analysis/table_analysis.h"
@@ -116,8 +117,7 @@ void add_analyze_command(CLI::App& app) {
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec))
       throw InputError(o->out + ": exists and is not a directory");
-    fs::create_directories(out, ec);
-    if (ec) throw InputError(o->out + ": cannot create directory (" + ec.message() + ")");
+    create_output_directory(out);
     check_writable(out / "stats.json");
 
     // 2. Compute.

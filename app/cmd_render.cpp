@@ -5,6 +5,7 @@
 #include "distributed/mpi_process_group.h"
 #include "app/numeric_option.h"
 #include "app/output_path.h"
+#include "app/partial_summary.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
@@ -248,12 +249,17 @@ void add_render_command(CLI::App& app) {
     }
     std::string names;
     for (const auto& out : o->outs) names += (names.empty() ? "" : ", ") + out;
+    // An interrupted render's mean spp says nothing of which pixels got samples: the line
+    // after this one counts them.
+    char spp[48] = "interrupted";
+    if (!r.stats.partial) std::snprintf(spp, sizeof spp, "%.1f spp", r.stats.spp_mean);
     if (!o->quiet)
-      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %.1f spp, %.2f s, %.2f Mrays/s%s\n", names.c_str(),
-                   scene.film.width, scene.film.height, scene.sampler.type.c_str(), r.stats.spp_mean, r.stats.seconds,
-                   r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
-                   r.stats.partial ? " (interrupted: partial image)" : "");
-    if (r.stats.partial && g_cancel.load()) throw InterruptedError("interrupted; wrote the partial image " + names);
+      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %s, %.2f s, %.2f Mrays/s\n", names.c_str(), scene.film.width,
+                   scene.film.height, scene.sampler.type.c_str(), spp, r.stats.seconds,
+                   r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0);
+    if (r.stats.partial && g_cancel.load())
+      throw InterruptedError("interrupted; wrote the partial image " + names + ": " +
+                             describe_partial_coverage(r.image.samples, ad.enabled ? 0 : scene.sampler.spp));
   });
 }
 

@@ -4,6 +4,7 @@
 #include "app/numeric_option.h"
 #include "app/output_path.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/output_directory.h"
 #include "sampling/core/progress.h"
 #include "sampling/samplers/sample_table.h"
 
@@ -34,9 +35,7 @@ void add_tables_command(CLI::App& app) {
     std::vector<TableSetKind> kinds;
     for (TableSetKind k : kTableSets)
       if (o->set == "all" || o->set == table_set_name(k)) kinds.push_back(k);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw InputError(o->out + ": cannot create directory (" + ec.message() + ")");
+    create_output_directory(dir);
     double total = 0;
     for (TableSetKind k : kinds)
       for (const TableParams& p : default_table_params(k)) {

@@ -1,5 +1,6 @@
 // pdrt: the command-line front end over the sampling and renderer libraries.
 #include "app/commands.h"
+#include "app/unknown_options.h"
 #include "distributed/mpi_process_group.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
   try {
     check_subcommand(app, argc, argv);
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError&) {
+    return report(pdrt::cli::describe_unexpected_arguments(app, argc, argv).c_str(), 2);
   } catch (const CLI::ParseError& e) {
     int rc = app.exit(e);
     return rc == 0 ? 0 : 2;

@@ -5,6 +5,7 @@
 #include "renderer/compare/compare_job.h"
 #include "renderer/compare/convergence.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/output_directory.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/compare/seed_statistics.h"
 #include "sampling/analysis/stream_analysis.h"
@@ -158,8 +159,9 @@ double compare_sample_count(const CompareOptions& o, int width, int height) {
 
 fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, const CompareJobSource& source) {
   validate_compare_options(o);
+  create_output_directory(o.out);
   std::error_code ec;
-  for (const char* sub : {"", "images", "errors"}) {
+  for (const char* sub : {"images", "errors"}) {
     fs::create_directories(o.out / sub, ec);
     if (ec) throw InputError((o.out / sub).string() + ": cannot create directory (" + ec.message() + ")");
   }

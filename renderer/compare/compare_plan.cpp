@@ -3,6 +3,7 @@
 #include "renderer/render/image_output.h"
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/output_directory.h"
 #include "sampling/core/hash.h"
 
 #include <algorithm>
@@ -153,6 +154,7 @@ ComparePlan write_compare_plan(const fs::path& dir, const json& request, const C
   json jobs = json::array();
   for (const CompareJob& j : p.jobs) jobs.push_back(job_json(j));
   p.id = hex(fnv1a(request.dump() + "|" + hex(p.scene_hash) + "|" + jobs.dump()));
+  create_output_directory(dir);
   std::error_code ec;
   for (const char* sub : {"jobs", "slurm"}) {
     fs::create_directories(dir / sub, ec);

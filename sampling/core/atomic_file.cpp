@@ -1,6 +1,7 @@
 #include "sampling/core/atomic_file.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/output_directory.h"
 
 #include <unistd.h>
 
@@ -48,9 +49,7 @@ void check_writable(const fs::path& path) {
 void write_path_atomically(const fs::path& path, const std::function<void(const fs::path&)>& writer) {
   check_writable(path);
   const fs::path dir = dir_of(path);
-  std::error_code mk;
-  fs::create_directories(dir, mk);
-  if (mk) throw InputError(path.string() + ": cannot create directory '" + dir.string() + "' (" + mk.message() + ")");
+  create_output_directory(dir);
   fs::path tmp = temp_beside(path);
   try {
     writer(tmp);

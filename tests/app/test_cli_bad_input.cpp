@@ -110,6 +110,23 @@ TEST_F(BadInput, UnknownSubcommandIsNamed) {
             std::string::npos) << r.err;
 }
 
+// Issue 29: CLI11 listed extras reversed ("16 --sampls") with no suggestion.
+TEST_F(BadInput, UnknownOptionsAreNamedInTheOrderTypedWithTheNearestValidOption) {
+  fs::path scene = write_scene(dir);
+  const fs::path out = dir / "o.png";
+  expect_refused("render " + scene.string() + " -o " + out.string() + " --sampls 16 --seeed 3 --zzzzzz", out, 2,
+                 "render: unknown options --sampls (did you mean --sampler?), --seeed (did you mean --seed?), --zzzzzz");
+  expect_refused("compare " + scene.string() + " --out " + (dir / "c").string() + " --sampler=sobol", dir / "c", 2,
+                 "compare: unknown option --sampler (did you mean --samplers?)");
+}
+
+TEST_F(BadInput, UnexpectedPositionalArgumentsAreNamedInTheOrderTyped) {
+  fs::path scene = write_scene(dir);
+  const fs::path out = dir / "o.png";
+  expect_refused("render " + scene.string() + " -o " + out.string() + " first second", out, 2,
+                 "render: unexpected arguments \"first\" \"second\"");
+}
+
 TEST_F(BadInput, EmptyOutputPathNamesTheOption) {
   fs::path scene = write_scene(dir);
   for (const std::string& args : std::vector<std::string>{"render " + scene.string() + " -o ''", std::string("sample -m random -n 4 -o ''"),

@@ -64,6 +64,21 @@ TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
   EXPECT_EQ(share["share"].is_null(), share["ticks"].get<int64_t>() == 0) << share.dump();
 }
 
+// Issue 29: `-o /nonexistent-dir/sub/t.png` created the directories without a word.
+TEST(CliRender, CreatedOutputDirectoryIsReportedOnStderr) {
+  fs::path d = scratch_dir("render_mkdir");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "new" / "sub" / "t.png").string() + " --spp 1 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("pdrt: created directory '" + (d / "new").string() + "' for '" + (d / "new" / "sub").string() + "'"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  // Writing into it again creates nothing and says nothing.
+  r = run_pdrt("render " + scene.string() + " -o " + (d / "new" / "sub" / "t.png").string() + " --spp 1 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+}
+
 // The spp asked for is what is traced and what every report says: the summary line, the
 // stats and the samples AOV (the old default traced about 50 of 64 and printed "50.0 spp").
 TEST(CliRender, SppAskedForIsTracedAndReportedInEveryMode) {
@@ -483,7 +498,7 @@ TEST(CliRender, InterruptWritesPartialImage) {
   fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
   fs::path out = d / "out.exr";
   const std::string cmd = "exec '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " + out.string() +
-                          " --spp 4096 --allow-long-render --quiet 2>/dev/null";
+                          " --spp 4096 --allow-long-render --quiet 2>'" + (d / "err.txt").string() + "'";
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
@@ -501,6 +516,12 @@ TEST(CliRender, InterruptWritesPartialImage) {
   auto in = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(in) << "the partial image must be written";
   EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
+  // The summary counts the pixels that got samples, not a mean spp (issue 29).
+  std::stringstream err;
+  err << std::ifstream(d / "err.txt").rdbuf();
+  EXPECT_TRUE(std::regex_search(err.str(), std::regex("wrote the partial image .*out\\.exr: [0-9]+ of 262144 pixels rendered "
+                                                      "at [0-9]+(–[0-9]+)? spp \\(of 4096\\)")))
+      << err.str();
 }
 
 // film.crop_window: the image written has the crop's size (pbrt-v4's ceil rule: 24 x 16 film,

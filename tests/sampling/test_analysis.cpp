@@ -307,7 +307,8 @@ TEST(AnalyzeCli, WritesStatsJsonAndPlots) {
   fs::path out = dir / "out" / "nested";  // created if missing
   test::CliResult r = run_pdrt("analyze '" + csv.string() + "' --periodic --quiet --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err, "");
+  // --quiet: the created directory is the only line.
+  EXPECT_EQ(r.err, "pdrt: created directory '" + (dir / "out").string() + "' for '" + out.string() + "'\n");
   std::ifstream in(out / "stats.json");
   nlohmann::json s = nlohmann::json::parse(in);
   for (const char* key : {"count", "dim", "min_distance", "relative_radius", "max_empty_radius", "chi2_p",

@@ -3,7 +3,9 @@
 #include "app/numeric_option.h"
 #include "app/python_plots.h"
 #include "renderer/render/renderer.h"
+#include "renderer/compare/scene_inputs.h"
 #include "renderer/render/sample_budget.h"
+#include "renderer/scene/input_files.h"
 #include "renderer/scene/scene_limits.h"
 #include "renderer/scene/scene_loader.h"
 #include "sampling/core/errors.h"
@@ -105,6 +107,7 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   if (!r.reconstruction.empty()) parse_reconstruction(r.reconstruction, &recon);
 
   SceneDesc& scene = p.scene;
+  InputFileRecord read;
   scene = load_scene(r.scene, r.strict);
   {
     std::ifstream in = open_for_reading(r.scene);
@@ -112,8 +115,9 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
     ss << in.rdbuf();
     c.scene_content = ss.str();
   }
-  // An environment image is part of the scene's content too: a regenerated sky must not
-  // reuse a reference cached for the old one.
+  // Meshes, included files, textures and environment images are the scene's content too.
+  c.scene_content += scene_inputs_text(scene, read.files());
+  // A resampled environment (a pbrt octahedral map) is also keyed by the pixels made from it.
   if (scene.environment.has_map()) {
     const EnvironmentDesc& e = scene.environment;
     const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));

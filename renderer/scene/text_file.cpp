@@ -1,5 +1,7 @@
 #include "renderer/scene/text_file.h"
 
+#include "renderer/scene/input_files.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -33,6 +35,7 @@ File open_regular(const std::filesystem::path& file, std::string& reason) {
 std::optional<std::string> read_text_file(const std::filesystem::path& file, std::string& reason) {
   File f = open_regular(file, reason);
   if (!f) return std::nullopt;
+  note_input_file(file);
   std::string text;
   char buf[1 << 16];
   size_t got;

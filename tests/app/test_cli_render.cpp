@@ -291,6 +291,42 @@ TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
 }
 
+// Issue 29: the reference cache key covers every file the scene reads, not only the scene file:
+// editing a mesh or a texture image must render a new reference; changing nothing reuses it.
+TEST(CliCompare, ReferenceCacheKeySeesTheMeshesAndTexturesTheSceneReads) {
+  fs::path d = scratch_dir("compare_inputs");
+  std::ofstream(d / "scene.json") << R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {"width": 8, "height": 6},
+  "textures": {"pic": {"type": "image", "file": "pic.ppm", "filter": "none"}},
+  "materials": {"m": {"type": "diffuse", "albedo": "pic"}},
+  "objects": [{"type": "obj", "file": "tri.obj", "material": "m"}],
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+}
+)";
+  auto write_obj = [&](float z) {
+    std::ofstream(d / "tri.obj") << "v -1 -1 " << z << "\nv 1 -1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+  };
+  auto write_ppm = [&](int grey) { std::ofstream(d / "pic.ppm") << "P3\n1 1\n255\n" << grey << " " << grey << " " << grey << "\n"; };
+  write_obj(0);
+  write_ppm(200);
+  int run = 0;
+  auto cached = [&] {
+    const fs::path out = d / ("report" + std::to_string(run++));
+    auto r = run_pdrt("compare " + (d / "scene.json").string() + " --out " + out.string() +
+                      " --samplers jitter --spp 2 --reference-spp 16 --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(std::ifstream(out / "results.json"))["reference"]["cached"].get<bool>();
+  };
+  EXPECT_FALSE(cached());
+  EXPECT_TRUE(cached()) << "nothing changed";
+  write_obj(0.5f);
+  EXPECT_FALSE(cached()) << "the mesh changed";
+  write_ppm(100);
+  EXPECT_FALSE(cached()) << "the texture changed";
+  EXPECT_TRUE(cached()) << "nothing changed since";
+}
+
 // Every (sampler, spp) over K seeds: per-seed entries (distinct seeds, seed 0 the scene's), the
 // mean RMSE with an interval around it, bias^2 + variance = MSE, the reference's variance, and
 // one CSV row per seed.

@@ -1,5 +1,6 @@
 #include "renderer/scene/pbrt/ply_mesh.h"
 
+#include "renderer/scene/input_files.h"
 #include "renderer/scene/pbrt/ply_check.h"
 
 #include "sampling/core/errors.h"
@@ -13,6 +14,7 @@
 namespace pdrt {
 
 PlyMesh load_ply(const std::filesystem::path& file, const std::string& shown) {
+  note_input_file(file);
   check_ply(file, shown);  // Assimp 5.2 hangs on some malformed headers and accepts truncated bodies
   Assimp::Importer importer;
   // Only triangulation: the vertices stay as the file has them (no joining, no generated

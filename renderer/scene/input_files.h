@@ -1,0 +1,29 @@
+#pragma once
+// The files a scene load reads (the scene file, included pbrt files, OBJ/MTL and PLY meshes,
+// environment images), in the order read. compare's reference cache key hashes their content,
+// so that editing any of them cannot reuse a reference cached for the old scene (issue 29).
+// Image textures are read at render time; SceneDesc::textures names them.
+#include <filesystem>
+#include <vector>
+
+namespace pdrt {
+
+// While one is alive on this thread, every file the loaders read is noted in it.
+class InputFileRecord {
+ public:
+  InputFileRecord();
+  ~InputFileRecord();
+  InputFileRecord(const InputFileRecord&) = delete;
+  InputFileRecord& operator=(const InputFileRecord&) = delete;
+  const std::vector<std::filesystem::path>& files() const { return files_; }
+
+ private:
+  friend void note_input_file(const std::filesystem::path& file);
+  std::vector<std::filesystem::path> files_;
+  InputFileRecord* outer_;
+};
+
+// Called by the loaders for each file they read; does nothing when no record is alive.
+void note_input_file(const std::filesystem::path& file);
+
+}  // namespace pdrt

@@ -148,7 +148,7 @@ void add_analyze_command(CLI::App& app) {
       write_raw(staging.path / "points.f64", sets.front().coords);
       if (sets.front().has_radius()) write_raw(staging.path / "radius.f64", sets.front().radius);
       ::setenv("MPLBACKEND", "Agg", 1);
-      const std::string script = std::string(PDRT_SOURCE_DIR) + "/sampling/analysis/plot_analysis.py";
+      const std::string script = plot_script("sampling/analysis/plot_analysis.py");
       int rc = run_program({python, script, staging.path.string()}, (staging.path / "plot.log").string());
       if (rc != 0) {
         std::string why = last_line_of(staging.path / "plot.log");

@@ -6,6 +6,7 @@
 #include "renderer/compare/compare_plan.h"
 #include "renderer/render/image_output.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/install_paths.h"
 
 #include <cstdio>
 #include <memory>
@@ -30,7 +31,7 @@ void add_collect_command(CLI::App& app) {
       for (std::size_t i = 0; i < left.size() && i < 10; ++i) list += (i ? " " : "") + std::to_string(left[i]);
       if (left.size() > 10) list += " ...";
       throw InputError(o->dir + ": " + std::to_string(left.size()) + " of " + std::to_string(plan.jobs.size()) +
-                       " jobs have not finished (" + list + "); run them with `pdrt run-job " + o->dir + " INDEX`");
+                       " jobs have not finished (" + list + "); run them with `" + command_name() + " run-job " + o->dir + " INDEX`");
     }
     CompareRequest r = plan_request(plan);
     r.quiet = o->quiet;

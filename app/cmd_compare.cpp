@@ -9,6 +9,7 @@
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/install_paths.h"
 
 #include <unistd.h>
 
@@ -78,18 +79,17 @@ void add_compare_command(CLI::App& app) {
       if (!r.cache.empty()) r.cache = std::filesystem::absolute(r.cache).string();
       r.quiet = false;
       const PreparedCompare p = prepare_compare(r, true);
-      char exe[4096];
-      const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
-      const std::string self = n > 0 ? std::string(exe, std::size_t(n)) : std::string("pdrt");
-      const ComparePlan plan = write_compare_plan(o->plan, request_json(r), p.options, self);
+      // Jobs may run on other machines: the absolute path, unless "pdrt" on PATH is this one.
+      const std::string self = command_name();
+      const ComparePlan plan = write_compare_plan(o->plan, request_json(r), p.options, executable_path());
       const std::size_t left = unfinished_jobs(plan).size();
       if (!o->quiet)
         std::fprintf(stderr,
                      "pdrt compare: wrote the plan %s/plan.json: %zu jobs (%zu to run); run them with\n"
                      "  xargs -P 2 -n 1 %s run-job %s < %s/jobs.txt\n"
-                     "then write the report with `pdrt collect %s` (or see docs/distributed.md)\n",
+                     "then write the report with `%s collect %s` (or see docs/distributed.md)\n",
                      o->plan.c_str(), plan.jobs.size(), left, self.c_str(), o->plan.c_str(), o->plan.c_str(),
-                     o->plan.c_str());
+                     self.c_str(), o->plan.c_str());
       return;
     }
     PreparedCompare p = prepare_compare(*o, true);

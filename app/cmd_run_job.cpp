@@ -8,6 +8,7 @@
 #include "renderer/render/image_output.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/install_paths.h"
 #include "sampling/core/printable.h"
 
 #include <chrono>
@@ -81,8 +82,9 @@ void add_run_job_command(CLI::App& app) {
       process_group().all_gather({});
       if (lead && !o->quiet) {
         const std::size_t left = unfinished_jobs(plan).size();
-        std::fprintf(stderr, "pdrt run-job: %zu of %zu jobs finished%s%s%s\n", plan.jobs.size() - left, plan.jobs.size(),
-                     left ? "" : "; write the report with `pdrt collect ", left ? "" : o->dir.c_str(), left ? "" : "`");
+        const std::string collect = left ? "" : "; write the report with `" + command_name() + " collect " + o->dir + "`";
+        std::fprintf(stderr, "pdrt run-job: %zu of %zu jobs finished%s\n", plan.jobs.size() - left, plan.jobs.size(),
+                     collect.c_str());
       }
     }
   });

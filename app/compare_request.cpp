@@ -143,7 +143,7 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
 
 void write_compare_plots(const std::string& python, const std::filesystem::path& out) {
   ::setenv("MPLBACKEND", "Agg", 1);
-  const std::string script = std::string(PDRT_SOURCE_DIR) + "/renderer/compare/plot_compare.py";
+  const std::string script = plot_script("renderer/compare/plot_compare.py");
   const std::string log = (out / "plot.log").string();
   if (run_program({python, script, out.string()}, log) != 0)
     throw std::runtime_error("plotting with " + python + " " + script + " failed (see " + log + ")");

@@ -1,11 +1,14 @@
 #include "app/python_plots.h"
 
+#include "sampling/core/install_paths.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
 extern char** environ;
@@ -29,6 +32,12 @@ int run_program(const std::vector<std::string>& argv, const std::string& log) {
   int status = 0;
   if (waitpid(pid, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string plot_script(const std::string& source_relative) {
+  const std::filesystem::path name = std::filesystem::path(source_relative).filename();
+  if (auto installed = installed_path(std::filesystem::path("share/pdrt/scripts") / name)) return installed->string();
+  return std::string(PDRT_SOURCE_DIR) + "/" + source_relative;
 }
 
 // The first interpreter that imports matplotlib: $PDRT_PYTHON if set, else python3 on PATH,

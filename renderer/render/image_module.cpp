@@ -1,6 +1,7 @@
 #include "renderer/render/image_module.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/install_paths.h"
 
 #include <dlfcn.h>
 
@@ -19,11 +20,12 @@ namespace {
 fs::path module_path() {
   if (const char* env = std::getenv("PDRT_IMAGE_MODULE"); env && *env) return env;
   std::error_code ec;
-  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
+  const fs::path exe = executable_path();
+  if (!exe.empty()) {
     fs::path beside = exe.parent_path() / PDRT_IMAGE_MODULE_FILE_NAME;
     if (fs::exists(beside, ec)) return beside;
   }
+  if (auto installed = installed_path(fs::path("lib/pdrt") / PDRT_IMAGE_MODULE_FILE_NAME)) return *installed;
   return PDRT_IMAGE_MODULE_BUILD_PATH;
 }
 

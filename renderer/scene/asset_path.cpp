@@ -1,5 +1,7 @@
 #include "renderer/scene/asset_path.h"
 
+#include "sampling/core/install_paths.h"
+
 #include <cstdlib>
 
 namespace pdrt {
@@ -7,6 +9,7 @@ namespace fs = std::filesystem;
 
 fs::path generated_asset_dir() {
   if (const char* env = std::getenv("PDRT_ASSETS"); env && *env) return env;
+  if (auto installed = installed_path("share/pdrt/assets")) return *installed;
 #ifdef PDRT_BUILD_ASSET_DIR
   return PDRT_BUILD_ASSET_DIR;
 #else

@@ -13,6 +13,7 @@
 
 #include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/install_paths.h"
 #include "sampling/core/rng.h"
 #include "sampling/core/warnings.h"
 
@@ -393,6 +394,10 @@ const TableSet& default_tables(TableSetKind kind) {
     TableSet& set = sets[i];
     if (const char* env = std::getenv("PDRT_TABLES"); env && *env) {
       set = load_tables(env, kind);
+      return;
+    }
+    if (auto installed = installed_path("share/pdrt/tables"); installed && complete(*installed, kind)) {
+      set = load_tables(*installed, kind);
       return;
     }
 #ifdef PDRT_BUILD_TABLE_DIR

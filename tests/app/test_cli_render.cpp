@@ -570,7 +570,7 @@ TEST(CliCompare, RendersUnregularizedUnlessAskedAndNamesIt) {
     text.insert(text.find("\"materials\""), "\"integrator\": {\"regularize\": true},\n  ");
     std::ofstream(scene) << text;
   }
-  const std::string common = " --samplers random --spp 1 --seeds 1 --reference-spp 2 --width 8 --height 8 --cache-dir " +
+  const std::string common = " --samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --cache-dir " +
                              (d / "cache").string() + " --no-plots";
   auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "plain").string() + common);
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -59,6 +59,8 @@ void add_compare_command(CLI::App& app) {
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width (overrides film.width)");
   add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height (overrides film.height)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")->default_str("0");
+  cmd->add_flag("--regularize", o->regularize,
+                "Biased: render with path regularisation (the reference stays unbiased; the report says so)");
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--no-plots", o->no_plots, "Skip the matplotlib plots and index.html");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress on stderr");

@@ -74,7 +74,7 @@ void add_render_command(CLI::App& app) {
     std::optional<double> threshold;
     std::string metric, variance, decision, reconstruction;
     int threads = 0;
-    bool quiet = false, adaptive = false, allow_long = false, strict = false;
+    bool quiet = false, adaptive = false, allow_long = false, strict = false, regularize = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
@@ -106,6 +106,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
   cmd->add_option("--adaptive-decision", o->decision,
                   "Adaptive: shared | split (split: odd samples decide, even samples estimate; unbiased)");
+  cmd->add_flag("--regularize", o->regularize,
+                "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
+                "(integrator.regularize)");
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
@@ -156,6 +159,7 @@ void add_render_command(CLI::App& app) {
     if (o->seed) scene.sampler.seed = *o->seed;
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
+    if (o->regularize) scene.integrator.regularize = true;
     check_film_memory(scene.film.width, scene.film.height,
                       o->width || o->height ? "--width/--height" : scene.film.size_where,
                       ad.enabled && ad.decision == "split" ? 2 : 1);
@@ -203,6 +207,8 @@ void add_render_command(CLI::App& app) {
                    {"pdrt:seed", std::to_string(scene.sampler.seed)},
                    {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
                    {"pdrt:partial", r.stats.partial ? "true" : "false"}};
+    // Biased options are named wherever the image goes.
+    if (scene.integrator.regularize) md.push_back({"pdrt:regularize", "true"});
     if (ad.enabled)
       md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
                                          ", " + ad.metric + " " + std::to_string(effective_threshold(ad)) +
@@ -222,6 +228,7 @@ void add_render_command(CLI::App& app) {
       }
       j["spp"] = scene.sampler.spp;
       j["reconstruction"] = reconstruction_name(scene.film.filter.reconstruction);
+      j["regularize"] = scene.integrator.regularize;  // biased when true
       j["seconds"] = r.stats.seconds;
       j["rays"] = r.stats.rays;
       j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
@@ -254,9 +261,10 @@ void add_render_command(CLI::App& app) {
     char spp[48] = "interrupted";
     if (!r.stats.partial) std::snprintf(spp, sizeof spp, "%.1f spp", r.stats.spp_mean);
     if (!o->quiet)
-      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %s, %.2f s, %.2f Mrays/s\n", names.c_str(), scene.film.width,
+      std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %s, %.2f s, %.2f Mrays/s%s\n", names.c_str(), scene.film.width,
                    scene.film.height, scene.sampler.type.c_str(), spp, r.stats.seconds,
-                   r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0);
+                   r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
+                   scene.integrator.regularize ? ", regularized (biased)" : "");
     if (r.stats.partial && g_cancel.load())
       throw InterruptedError("interrupted; wrote the partial image " + names + ": " +
                              describe_partial_coverage(r.image.samples, ad.enabled ? 0 : scene.sampler.spp));

@@ -13,5 +13,6 @@ void add_compare_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_run_job_command(CLI::App& app);
 void add_collect_command(CLI::App& app);
+void add_fireflies_command(CLI::App& app);
 
 }  // namespace pdrt::cli

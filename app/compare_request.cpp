@@ -12,6 +12,7 @@
 #include "sampling/core/hash.h"
 #include "sampling/core/input_file.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -37,6 +38,7 @@ json request_json(const CompareRequest& r) {
             {"adaptive_variance", r.adaptive_variance},
             {"adaptive_decision", r.adaptive_decision},
             {"reconstruction", r.reconstruction},
+            {"regularize", r.regularize},
             {"width", r.width ? json(*r.width) : json(nullptr)},
             {"height", r.height ? json(*r.height) : json(nullptr)}};
   return j;
@@ -56,6 +58,7 @@ CompareRequest request_from_json(const json& j) {
   r.adaptive_variance = j.at("adaptive_variance").get<std::string>();
   r.adaptive_decision = j.at("adaptive_decision").get<std::string>();
   r.reconstruction = j.at("reconstruction").get<std::string>();
+  r.regularize = j.value("regularize", false);  // absent from plans written before the option
   if (!j.at("width").is_null()) r.width = j.at("width").get<int>();
   if (!j.at("height").is_null()) r.height = j.at("height").get<int>();
   return r;
@@ -125,6 +128,16 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
         "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " + std::to_string(fnv1a(px));
   }
   if (!r.reconstruction.empty()) scene.film.filter.reconstruction = recon;
+  // Unbiased unless asked: a scene's own integrator.regularize is not what compare measures.
+  if (check_budget && !r.quiet) {
+    if (scene.integrator.regularize && !r.regularize)
+      std::fprintf(stderr, "pdrt compare: %s sets integrator.regularize; compare renders without it (unbiased) "
+                           "unless --regularize is given\n", r.scene.c_str());
+    if (r.regularize)
+      std::fprintf(stderr, "pdrt compare: --regularize: the renders are biased (path regularisation), the reference "
+                           "is not\n");
+  }
+  scene.integrator.regularize = r.regularize;
   const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;
   if (c.adaptive && decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
     throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");

@@ -22,6 +22,7 @@ struct CompareRequest {
   int adaptive_target_spp = 64;
   std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
   bool adaptive = false, quiet = false, allow_long = false;
+  bool regularize = false;  // biased path regularisation for the renders (never the reference); off unless asked
 };
 
 nlohmann::json request_json(const CompareRequest& r);

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   pdrt::cli::add_convert_command(app);
   pdrt::cli::add_run_job_command(app);
   pdrt::cli::add_collect_command(app);
+  pdrt::cli::add_fireflies_command(app);
   try {
     check_subcommand(app, argc, argv);
     app.parse(argc, argv);

@@ -336,6 +336,8 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
 
   json j;
   j["scene"] = o.scene_label;
+  // Biased options the renders used (the reference never uses them): named in the report.
+  j["regularize"] = base.integrator.regularize;
   j["width"] = W, j["height"] = H;
   j["seed"] = base.sampler.seed;
   {

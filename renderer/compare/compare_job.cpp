@@ -52,6 +52,7 @@ ReferenceSetup reference_setup(const SceneDesc& base, const CompareOptions& o) {
   rs.sampler.seed = base.sampler.seed ^ 0x5eedc0ffee123457ull;
   rs.sampler.spp = o.reference_spp;
   rs.sampler.adaptive.enabled = false;
+  rs.integrator.regularize = false;  // the reference is unbiased, so a regularized run shows its bias
   r.half_spp = {(o.reference_spp + 1) / 2, o.reference_spp / 2};
   r.half_seed = {rs.sampler.seed, mix64(rs.sampler.seed ^ 0x68616c6662ull)};  // "halfb"
   const PixelRect crop = crop_pixels(base.film.crop_window, base.film.width, base.film.height);

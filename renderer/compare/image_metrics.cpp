@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -52,6 +53,42 @@ std::vector<float> error_map(const Image& t, const Image& r) {
   std::vector<float> e(std::size_t(t.width) * t.height);
   for (std::size_t i = 0; i < e.size(); ++i) e[i] = std::abs(lum_at(t, i) - lum_at(r, i));
   return e;
+}
+
+std::vector<unsigned char> firefly_mask(const Image& im, double ratio) {
+  const int W = im.width, H = im.height;
+  std::vector<unsigned char> mask(std::size_t(W) * H, 0);
+  if (W <= 0 || H <= 0) return mask;
+  std::vector<float> lum(mask.size());
+  for (std::size_t i = 0; i < lum.size(); ++i) lum[i] = lum_at(im, i);
+  for (int y = 0; y < H; ++y) {
+    for (int x = 0; x < W; ++x) {
+      float v[9];
+      int n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          int xx = std::clamp(x + dx, 0, W - 1), yy = std::clamp(y + dy, 0, H - 1);
+          v[n++] = lum[std::size_t(yy) * W + xx];
+        }
+      std::nth_element(v, v + 4, v + 9);
+      const float c = lum[std::size_t(y) * W + x];
+      // A NaN is no firefly (the render drops non-finite samples); an infinity is one.
+      if (double(c) > ratio * double(v[4])) mask[std::size_t(y) * W + x] = 1;
+    }
+  }
+  return mask;
+}
+
+FireflyCount count_fireflies(const Image& test, const Image& reference, double ratio) {
+  check_same_size(test, reference);
+  const std::vector<unsigned char> t = firefly_mask(test, ratio), r = firefly_mask(reference, ratio);
+  FireflyCount c;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    c.test += t[i];
+    c.reference += r[i];
+    c.extra += t[i] && !r[i];
+  }
+  return c;
 }
 
 RadialSpectrum error_spectrum(const Image& t, const Image& r) {

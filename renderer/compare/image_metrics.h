@@ -23,4 +23,16 @@ RadialSpectrum error_spectrum(const Image& test, const Image& reference);
 // Per-pixel absolute luminance error, for heat maps.
 std::vector<float> error_map(const Image& test, const Image& reference);
 
+// Fireflies: pixels whose luminance is more than `ratio` times the median luminance of their
+// 3x3 neighbourhood (the pixel itself included; the image's edge is extended by its border
+// pixels). `firefly_mask` marks them (1) in a width * height mask.
+std::vector<unsigned char> firefly_mask(const Image& image, double ratio = 10);
+
+struct FireflyCount {
+  long long test = 0;       // fireflies of the test image
+  long long reference = 0;  // fireflies of the reference
+  long long extra = 0;      // of the test image where the reference has none: the count that matters
+};
+FireflyCount count_fireflies(const Image& test, const Image& reference, double ratio = 10);
+
 }  // namespace pdrt

@@ -268,6 +268,10 @@ def write_html(out, r):
                  r["width"], r["height"], len(seeds), ", ".join(str(x) for x in seeds), e(r.get("seed_rule", "")),
                  e(ref["sampler"]), ref["spp"], ref["seed"], ", cached" if ref["cached"] else "",
                  ref.get("variance", 0.0), ref.get("rmse", 0.0)))
+    if r.get("regularize"):
+        p.append("<p><b>Biased:</b> the renders use path regularisation (<code>--regularize</code>: "
+                 "near-specular lobes roughened after the first non-specular bounce); the reference does not, "
+                 "so bias&sup2; includes the regularisation's bias.</p>")
     p.append("<h2>Convergence</h2><img src='rmse_vs_spp.png'> <img src='rmse_vs_time.png'>")
     p.append("<h3>RMSE at equal samples (mean over seeds &plusmn; 95%% interval)</h3><table><tr><th>spp</th>%s</tr>" %
              "".join("<th>%s</th>" % e(s) for s in samplers))

@@ -5,6 +5,9 @@
 #include "renderer/render/ggx_albedo_tables.h"
 #include "renderer/render/microfacet_ggx.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pdrt {
 namespace {
 
@@ -124,6 +127,43 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
       }
       break;
   }
+}
+
+Material regularized(const Material& m) {
+  // The roughness of the regularised alpha, or the roughness itself when alpha is rough enough.
+  auto roughen = [](float roughness) {
+    const float alpha = roughness * roughness;
+    if (alpha >= kRegularizeAlphaMax) return roughness;
+    return std::sqrt(std::clamp(2.0f * alpha, kRegularizeAlphaMin, kRegularizeAlphaMax));
+  };
+  Material r = m;
+  switch (m.type) {
+    case MaterialType::Glossy:
+      if (m.lobe == GlossLobe::Phong) {
+        // Walter et al. 2007's equivalence alpha = sqrt(2 / (n + 2)).
+        const float alpha = std::sqrt(2.0f / (std::max(0.0f, m.exponent) + 2.0f));
+        if (alpha < kRegularizeAlphaMax) {
+          const float a = std::clamp(2.0f * alpha, kRegularizeAlphaMin, kRegularizeAlphaMax);
+          r.exponent = 2.0f / (a * a) - 2.0f;
+        }
+      } else {
+        r.roughness = roughen(m.roughness);
+      }
+      break;
+    case MaterialType::Conductor:
+    case MaterialType::Dielectric:
+    case MaterialType::CoatedDiffuse:
+      r.roughness = roughen(m.roughness);
+      break;
+    case MaterialType::Mirror:
+      r.type = MaterialType::Glossy;
+      r.lobe = GlossLobe::GGX;
+      r.roughness = roughen(0.0f);
+      break;
+    default:
+      break;
+  }
+  return r;
 }
 
 bool Bsdf::is_delta() const {

@@ -110,4 +110,16 @@ double thin_dielectric_reflectance(double cos_i, double ior);
 // Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.
 inline constexpr float kMinGgxAlpha = 1e-3f;
 
+// Path regularisation (IntegratorDesc::regularize; Kaplanyan & Dachsbacher 2013, as pbrt-v4's
+// `regularize` option does it): the material a vertex shades with once the path has scattered
+// off a non-delta lobe. A GGX alpha below 0.3 becomes clamp(2 alpha, 0.1, 0.3) (glossy,
+// conductor, dielectric and the coated_diffuse coat; roughness 0 counts as alpha 0, so smooth
+// ones become rough at alpha 0.1); a mirror becomes the GGX glossy of its F0 at alpha 0.1; a
+// Phong lobe gets the exponent of that alpha (n = 2 / alpha^2 - 2, Walter et al. 2007). Diffuse,
+// thin dielectric (whose transmission keeps its direction), emitter and mix materials are
+// unchanged. Biased: near-specular caustics blur; never on unless asked.
+Material regularized(const Material& m);
+inline constexpr float kRegularizeAlphaMax = 0.3f;
+inline constexpr float kRegularizeAlphaMin = 0.1f;
+
 }  // namespace pdrt

@@ -26,6 +26,7 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lig
                  scene.desc().sampler.adaptive.enabled ? scene.desc().sampler.adaptive.max_spp : scene.desc().sampler.spp) {
   for (const Material& m : scene.desc().materials) {
     bsdfs_.emplace_back(m);
+    if (settings_.regularize) regularized_.emplace_back(regularized(m));
     bare_.push_back(m);
     bare_.back().name.clear();
     bare_.back().textures.clear();
@@ -45,6 +46,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
   float eta_scale = 1;   // product of eta^2 over transmissions: beta * eta_scale is free of the 1/eta^2 radiance scaling
   float prev_pdf = 0;    // solid-angle pdf of the BSDF sample that produced `ray`
   bool prev_delta = true;  // camera rays and delta lobes: emitters hit are counted fully
+  bool any_non_delta = false;  // the path scattered off a non-delta lobe (regularisation starts after it)
   Vec3 prev_p, prev_n;   // the previous vertex and its shading normal: light selection depends on them
   const float time = ray.time;
   for (int depth = 0;; ++depth) {
@@ -80,12 +82,14 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       });
     }
     const Material& mat = materials[size_t(mi)];
+    const bool regularize = settings_.regularize && any_non_delta;
     std::optional<Bsdf> textured;
     if (!mat.textures.empty()) {
       if (!have_coords) scene_.texture_coords(&hit, time);
-      textured.emplace(textures_.apply(bare_[mi], mat.textures, footprint_.at(hit)));
+      const Material m = textures_.apply(bare_[mi], mat.textures, footprint_.at(hit));
+      textured.emplace(regularize ? regularized(m) : m);
     }
-    const Bsdf& bsdf = textured ? *textured : bsdfs_[mi];
+    const Bsdf& bsdf = textured ? *textured : regularize ? regularized_[mi] : bsdfs_[mi];
     if (depth == 0) {
       res.albedo = bsdf.albedo();
       res.normal = hit.ns;
@@ -145,6 +149,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (is_black(beta) || !is_finite(beta)) break;
     prev_pdf = bs.pdf;
     prev_delta = bs.delta;
+    any_non_delta = any_non_delta || !bs.delta;
     prev_p = hit.p, prev_n = ns;
 
     if (bs.transmission) eta_scale *= bs.eta * bs.eta;

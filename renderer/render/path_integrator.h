@@ -2,8 +2,9 @@
 // Distribution ray tracing as a path tracer (Cook §5.3, pbrt-v4 PathIntegrator): at every
 // vertex, next-event estimation toward a light chosen from the light family, BSDF sampling
 // from the gloss family, multiple importance sampling (power heuristic) between them, and
-// Russian roulette from `rr_depth`. Every random decision comes from the replayable sampler:
-// 2-D values from the light and gloss families with the vertex index as the bounce salt,
+// Russian roulette from `rr_depth`. With `regularize`, vertices after the first non-delta
+// scattering shade with regularized materials (bsdf.h). Every random decision comes from the
+// replayable sampler: 2-D values from the light and gloss families with the vertex index as the bounce salt,
 // 1-D decisions (which light, which lobe, roulette) from salted time-family streams.
 #include "renderer/render/bsdf.h"
 #include "renderer/render/embree_scene.h"
@@ -38,6 +39,7 @@ class PathIntegrator {
   const LightSampler& lights_;
   IntegratorDesc settings_;
   std::vector<Bsdf> bsdfs_;  // per material (textured ones: with their constant values, unused)
+  std::vector<Bsdf> regularized_;  // per material, regularized(material) (settings_.regularize only)
   // Textured materials build their Bsdf per hit from `bare_` (the material without name and
   // bindings) with the textures evaluated at the hit; others use bsdfs_ as before.
   const TextureSet& textures_;  // the light sampler's: one open set per render

@@ -98,6 +98,9 @@ struct SamplerDesc {
 struct IntegratorDesc {
   int max_depth = 8;        // path vertices after the camera
   int rr_depth = 3;         // Russian roulette from this depth on
+  // Path regularisation (biased, off by default): after the first non-delta scattering, vertices
+  // shade with regularized(material) (render/bsdf.h), which roughens near-specular lobes.
+  bool regularize = false;
 };
 
 struct MeshData {

@@ -239,6 +239,7 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
   }
   j["sampler"] = sampler;
   j["integrator"] = {{"max_depth", s.integrator.max_depth}, {"rr_depth", s.integrator.rr_depth}};
+  if (s.integrator.regularize) j["integrator"]["regularize"] = true;
 
   if (!s.textures.empty()) {
     ojson tx = ojson::object();

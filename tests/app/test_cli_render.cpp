@@ -590,3 +590,50 @@ TEST(CliRender, CropWindowWritesTheCroppedImageAndNamesItsPixels) {
   EXPECT_NE(r.err.find("film.crop_window covers no pixel of the 2x16 film"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d / "thin.exr"));
 }
+
+// The biased path regularisation is named wherever the image goes: the stats, the EXR's
+// metadata and the summary line.
+TEST(CliRender, RegularizeIsNamedInTheStatsMetadataAndSummary) {
+  fs::path d = scratch_dir("render_regularize");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --spp 1 --regularize --stats " +
+                    (d / "stats.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(std::ifstream(d / "stats.json"))["regularize"].get<bool>());
+  auto in = OIIO::ImageInput::open((d / "out.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:regularize"), "true");
+  EXPECT_NE(r.err.find("regularized (biased)"), std::string::npos) << r.err;
+}
+
+TEST(CliRender, StatsSayRegularizeIsOffByDefault) {
+  fs::path d = scratch_dir("render_no_regularize");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --spp 1 --quiet --stats " +
+                    (d / "stats.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(std::ifstream(d / "stats.json"))["regularize"].get<bool>());
+}
+
+// compare renders unbiased unless asked: a scene's integrator.regularize is ignored (and said
+// so), --regularize turns it on and the report names it.
+TEST(CliCompare, RendersUnregularizedUnlessAskedAndNamesIt) {
+  fs::path d = scratch_dir("compare_regularize");
+  fs::path scene = d / "scene.json";
+  {
+    std::string text;
+    std::ifstream in(write_scene(d));
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    text.insert(text.find("\"materials\""), "\"integrator\": {\"regularize\": true},\n  ");
+    std::ofstream(scene) << text;
+  }
+  const std::string common = " --samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --cache-dir " +
+                             (d / "cache").string() + " --no-plots";
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "plain").string() + common);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("sets integrator.regularize"), std::string::npos) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(std::ifstream(d / "plain" / "results.json"))["regularize"].get<bool>());
+  r = run_pdrt("compare " + scene.string() + " --out " + (d / "reg").string() + common + " --regularize");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(std::ifstream(d / "reg" / "results.json"))["regularize"].get<bool>());
+}

@@ -42,3 +42,49 @@ TEST(ImageMetrics, WhiteNoiseErrorSpectrumIsFlat) {
   EXPECT_NEAR(lo, expect, 0.1 * expect);
   EXPECT_NEAR(hi, expect, 0.05 * expect);
 }
+
+namespace {
+Image flat_image(int w, int h, float v) {
+  Image im;
+  im.width = w, im.height = h;
+  im.rgb.assign(std::size_t(3) * w * h, v);
+  return im;
+}
+void set_pixel(Image& im, int x, int y, float v) {
+  for (int c = 0; c < 3; ++c) im.rgb[3 * (std::size_t(y) * im.width + x) + c] = v;
+}
+}  // namespace
+
+// A lone pixel 11 times its surroundings is a firefly, one 9 times them is not, and a corner
+// pixel counts too (the edge is extended).
+TEST(ImageMetrics, FireflyIsAPixelOverTenTimesItsNeighbourhoodMedian) {
+  Image im = flat_image(8, 6, 0.1f), ref = flat_image(8, 6, 0.1f);
+  set_pixel(im, 3, 2, 1.1f);
+  set_pixel(im, 6, 2, 0.9f);
+  set_pixel(im, 0, 0, 1.2f);
+  const FireflyCount c = count_fireflies(im, ref);
+  EXPECT_EQ(c.test, 2);
+  EXPECT_EQ(c.reference, 0);
+  EXPECT_EQ(c.extra, 2);
+}
+
+// A firefly the reference has at the same pixel (a real tiny highlight) is not counted.
+TEST(ImageMetrics, FireflyTheReferenceSharesIsNotCounted) {
+  Image im = flat_image(8, 6, 0.1f), ref = flat_image(8, 6, 0.1f);
+  set_pixel(im, 3, 2, 2.0f);
+  set_pixel(ref, 3, 2, 1.5f);
+  set_pixel(im, 5, 4, 2.0f);
+  const FireflyCount c = count_fireflies(im, ref);
+  EXPECT_EQ(c.test, 2);
+  EXPECT_EQ(c.reference, 1);
+  EXPECT_EQ(c.extra, 1);
+}
+
+// A sharp edge between dark and bright regions is no firefly: most of a bright edge pixel's
+// neighbours are bright.
+TEST(ImageMetrics, SharpEdgeIsNoFirefly) {
+  Image im = flat_image(8, 8, 0.001f);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 4; x < 8; ++x) set_pixel(im, x, y, 5.0f);
+  EXPECT_EQ(count_fireflies(im, flat_image(8, 8, 0.0f)).test, 0);
+}

@@ -267,6 +267,17 @@ TEST_F(SceneLoader, DefaultsFilledIn) {
   EXPECT_EQ(s.integrator.rr_depth, 3);
 }
 
+// Path regularisation is biased: a scene gets it only by asking.
+TEST_F(SceneLoader, RegularizeIsOffUnlessTheSceneAsks) {
+  EXPECT_FALSE(load_scene(scene(kHead + "  \"integrator\": {\"max_depth\": 4}\n}\n")).integrator.regularize);
+  EXPECT_TRUE(load_scene(scene(kHead + "  \"integrator\": {\"regularize\": true}\n}\n")).integrator.regularize);
+}
+
+TEST_F(SceneLoader, RegularizeMustBeABoolean) {
+  fs::path f = scene(kHead + "  \"integrator\": {\"regularize\": 1}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:32: integrator.regularize must be true or false, got 1");
+}
+
 TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {
   SceneDesc s = load_scene(scene(
       "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"

@@ -785,7 +785,7 @@ class Builder {
     out_.scene.integrator.max_depth = int(depth);
     if (auto v = d.params.find_string("lightsampler"); v && *v != "bvh")
       note(d.params.find("lightsampler")->at, "light sampler \"" + *v + "\" is not supported (pdrt's BVH light sampler used)");
-    d.params.find_bool("regularize");
+    if (auto r = d.params.find_bool("regularize")) out_.scene.integrator.regularize = *r;
   }
 
   // Returns the material's index, or -2 for "interface" (a medium boundary, no surface).

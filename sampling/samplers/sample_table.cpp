@@ -215,7 +215,7 @@ class Reader {
   void get_vec(std::vector<T>& v, std::size_t n, const char* what) {
     need(n * sizeof(T), what);
     v.resize(n);
-    std::memcpy(v.data(), d_.data() + pos_, n * sizeof(T));
+    if (n) std::memcpy(v.data(), d_.data() + pos_, n * sizeof(T));  // an empty vector's data() may be null
     pos_ += n * sizeof(T);
   }
   std::size_t pos() const { return pos_; }
@@ -318,6 +318,7 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   const bool pixel = t.params.family == Family::Pixel;
   // Each header field on its own, before the checksum, so a damaged header says which field is wrong.
   if (tables == 0) r.fail("header field tables is 0");
+  if (!pixel && t.params.points == 0) r.fail("header field points is 0");
   if (t.params.tile == 0 || (pixel && t.params.tile > 4096) || (!pixel && t.params.tile != 1))
     r.fail("header field tile is " + std::to_string(t.params.tile) + ", expected " +
            (pixel ? "1 to 4096 for the pixel family" : "1 for this family"));
@@ -346,6 +347,9 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
       uint64_t sum = 0;
       for (std::size_t c = 0; c < cells; ++c) {
         if (t.cell_start[k][c] != sum) r.fail("pixel index of table " + std::to_string(k) + " is inconsistent");
+        if (t.cell_count[k][c] == 0)
+          r.fail("pixel " + std::to_string(c % t.params.tile) + "," + std::to_string(c / t.params.tile) + " of table " +
+                 std::to_string(k) + " holds no points");
         sum += t.cell_count[k][c];
       }
       if (sum != n) r.fail("pixel index of table " + std::to_string(k) + " does not cover its points");
@@ -357,6 +361,15 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
     r.get_vec(t.radius[k], n, "radii");
   }
   if (r.pos() != data.size() - 8) r.fail("trailing bytes after the last table");
+  if (pixel) {
+    // Reports quote per_pixel_min; a header that contradicts its own pixel index is damaged.
+    uint32_t fewest = UINT32_MAX;
+    for (const auto& counts : t.cell_count)
+      for (uint32_t c : counts) fewest = std::min(fewest, c);
+    if (t.per_pixel_min != fewest)
+      r.fail("header field per_pixel_min is " + std::to_string(t.per_pixel_min) + ", the fewest points of a pixel is " +
+             std::to_string(fewest));
+  }
   return t;
 }
 

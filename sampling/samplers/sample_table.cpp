@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -327,12 +328,15 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   // `points` coordinates and radii (pixel tables hold a variable count).
   const double per_table = 4.0 + (pixel ? 8.0 * double(cells) : double(t.params.points) * (4.0 * t.dim + 4.0));
   const double least = double(r.pos()) + double(tables) * per_table + 8.0;
-  if (least > double(data.size()))
+  if (least > double(data.size())) {
+    char needed[40];  // 2^32 tables of 2^32 points: more bytes than a uint64_t counts
+    std::snprintf(needed, sizeof needed, "%.0f", least);
     r.fail("header says " + std::to_string(tables) + " tables" +
            (pixel ? " of " + std::to_string(t.params.tile) + "x" + std::to_string(t.params.tile) + " pixels"
                   : " of " + std::to_string(t.params.points) + " points") +
-           ", which needs at least " + std::to_string(uint64_t(least)) + " bytes; the file has " +
+           ", which needs at least " + needed + " bytes; the file has " +
            std::to_string(data.size()) + " (header field tables or points is wrong, or the file is truncated)");
+  }
   uint64_t stored;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
   if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");

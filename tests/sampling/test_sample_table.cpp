@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -423,6 +424,12 @@ TEST(SampleTable, RefusesZeroTableCountByName) {
 }
 TEST(SampleTable, RefusesWrongDimensionByName) {
   expect_refused([](std::string& b) { b[13] = 7; }, "dimension 7 does not match its family");
+}
+// Found by tests/fuzz/fuzz_table.cpp: the bytes such a header needs overflow a uint64_t (their
+// conversion was undefined); the message still says how many.
+TEST(SampleTable, RefusesAHeaderNeedingMoreBytesThanAnIntegerCounts) {
+  expect_refused([](std::string& b) { std::fill(b.begin() + 16, b.begin() + 24, char(0xFF)); },
+                 "4294967295 tables of 4294967295 points, which needs at least 22136092879");
 }
 TEST(SampleTable, RefusesZeroPointCountByName) {
   expect_refused([](std::string& b) { b[20] = b[21] = b[22] = b[23] = 0; }, "header field points is 0");

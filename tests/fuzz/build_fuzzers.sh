@@ -14,7 +14,7 @@ fi
 probe="$build/libfuzzer-probe"
 if ! echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' |
     "$cxx" -x c++ -fsanitize=fuzzer,address,undefined - -o "$probe" >"$probe.log" 2>&1; then
-  echo "fuzz.build: skipped: $cxx cannot link -fsanitize=fuzzer,address,undefined (libclang-rt-14-dev):"
+  echo "fuzz.build: skipped: $cxx cannot link -fsanitize=fuzzer,address,undefined (Debian: libclang-rt-dev):"
   cat "$probe.log"
   exit 77
 fi

@@ -4,6 +4,7 @@
 // overwritten at every input, removed when the process exits normally.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>

@@ -1036,3 +1036,12 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
   EXPECT_GT(sum, 0);
   EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (a.width * a.height)));
 }
+
+// Found with tests/fuzz/fuzz_pbrt.cpp: a stratified sampler's two counts are checked one by one,
+// before their product, which overflowed (undefined behaviour) for two large ones.
+TEST(PbrtImport, StratifiedSampleCountsTooLargeToMultiplyAreRefused) {
+  EXPECT_EQ(import_error("Sampler \"stratified\" \"integer xsamples\" [9000000000000000] \"integer ysamples\" "
+                         "[9000000000000000]\n" + std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n"),
+            "s.pbrt:1:1: \"integer xsamples\" and \"integer ysamples\" must be in [1, 2^24], got 9000000000000000 and "
+            "9000000000000000");
+}

@@ -2,6 +2,7 @@
 // from the scene loading of compare_request.cpp, so that tests/fuzz/fuzz_plan.cpp can reach it.
 #include "app/compare_request.h"
 
+#include "renderer/compare/json_integer.h"
 #include "sampling/core/errors.h"
 
 namespace pdrt::cli {
@@ -36,16 +37,16 @@ CompareRequest request_from_json(const json& j) {
   r.strict = j.at("strict").get<bool>();
   r.samplers = j.at("samplers").get<std::string>(), r.spp = j.at("spp").get<std::string>();
   r.cache = j.at("cache").get<std::string>();
-  r.reference_spp = j.at("reference_spp").get<int>(), r.threads = j.at("threads").get<int>();
-  r.seeds = j.at("seeds").get<int>();
+  r.reference_spp = json_integer<int>(j, "reference_spp"), r.threads = json_integer<int>(j, "threads");
+  r.seeds = json_integer<int>(j, "seeds");
   r.adaptive = j.at("adaptive").get<bool>(), r.adaptive_threshold = j.at("adaptive_threshold").get<double>();
-  r.adaptive_target_spp = j.at("adaptive_target_spp").get<int>();
+  r.adaptive_target_spp = json_integer<int>(j, "adaptive_target_spp");
   r.adaptive_metric = j.at("adaptive_metric").get<std::string>();
   r.adaptive_variance = j.at("adaptive_variance").get<std::string>();
   r.adaptive_decision = j.at("adaptive_decision").get<std::string>();
   r.reconstruction = j.at("reconstruction").get<std::string>();
-  if (!j.at("width").is_null()) r.width = j.at("width").get<int>();
-  if (!j.at("height").is_null()) r.height = j.at("height").get<int>();
+  if (!j.at("width").is_null()) r.width = json_integer<int>(j, "width");
+  if (!j.at("height").is_null()) r.height = json_integer<int>(j, "height");
   return r;
 }
 

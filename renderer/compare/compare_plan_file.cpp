@@ -1,5 +1,6 @@
 #include "renderer/compare/compare_plan_file.h"
 
+#include "renderer/compare/json_integer.h"
 #include "sampling/core/errors.h"
 
 #include <fstream>
@@ -18,7 +19,7 @@ ComparePlan read_compare_plan(const fs::path& dir) {
   p.dir = dir;
   try {
     const json doc = json::parse(in);
-    if (doc.at("pdrt_plan").get<int>() != kComparePlanVersion)
+    if (json_integer<int>(doc, "pdrt_plan") != kComparePlanVersion)
       throw std::invalid_argument("plan version " + doc.at("pdrt_plan").dump() + ", this pdrt reads " +
                                   std::to_string(kComparePlanVersion));
     p.id = doc.at("id").get<std::string>();
@@ -39,14 +40,14 @@ CompareJob job_from_json(const json& v) {
   else if (k == "adaptive") j.kind = CompareJob::Kind::Adaptive;
   else throw std::invalid_argument("unknown job kind \"" + k + "\"");
   j.sampler = v.at("sampler").get<std::string>();
-  j.spp = v.at("spp").get<int>(), j.seed_index = v.at("seed_index").get<int>();
-  j.half = v.at("half").get<int>(), j.sweep_step = v.at("sweep_step").get<int>();
+  j.spp = json_integer<int>(v, "spp"), j.seed_index = json_integer<int>(v, "seed_index");
+  j.half = json_integer<int>(v, "half"), j.sweep_step = json_integer<int>(v, "sweep_step");
   return j;
 }
 
 bool mark_is_for(const json& mark, const ComparePlan& plan, int index) {
   try {
-    return mark.at("plan").get<std::string>() == plan.id && mark.at("index").get<int>() == index;
+    return mark.at("plan").get<std::string>() == plan.id && json_integer<int>(mark, "index") == index;
   } catch (const std::exception&) {
     return false;
   }
@@ -56,10 +57,10 @@ CompareRender job_mark_render(const json& v) {
   CompareRender r;
   r.seconds = v.at("seconds").get<double>(), r.build_seconds = v.at("build_seconds").get<double>();
   r.cpu_seconds = v.at("cpu_seconds").get<double>(), r.build_cpu_seconds = v.at("build_cpu_seconds").get<double>();
-  r.spp_mean = v.at("spp_mean").get<double>(), r.samples = v.at("samples").get<int64_t>();
-  r.adaptive_rounds = v.at("adaptive_rounds").get<int>(), r.threads = v.at("threads").get<int>();
-  r.profile.ticks = v.at("profile_ticks").get<int64_t>();
-  r.profile.sampler_ticks = v.at("profile_sampler_ticks").get<int64_t>();
+  r.spp_mean = v.at("spp_mean").get<double>(), r.samples = json_integer<int64_t>(v, "samples");
+  r.adaptive_rounds = json_integer<int>(v, "adaptive_rounds"), r.threads = json_integer<int>(v, "threads");
+  r.profile.ticks = json_integer<int64_t>(v, "profile_ticks");
+  r.profile.sampler_ticks = json_integer<int64_t>(v, "profile_sampler_ticks");
   r.cached = v.at("cached").get<bool>(), r.file = v.at("file").get<std::string>();
   return r;
 }

@@ -13,6 +13,7 @@ if [ ! -x "$bin" ]; then
 fi
 corpus="$build/corpus/$name"
 mkdir -p "$corpus" "$build/artifacts"
-# A fixed seed: a run repeats (for the same corpus) instead of depending on the clock.
-exec "$bin" -seed=1 -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
+# A fixed seed: a run repeats (for the same corpus) instead of depending on the clock. Findings
+# exit 1: libFuzzer's own default, 77, is the code ctest reads as skipped.
+exec "$bin" -seed=1 -error_exitcode=1 -timeout_exitcode=1 -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
   -artifact_prefix="$build/artifacts/$name-" "$corpus" "$build/tests/fuzz/seeds/$name"

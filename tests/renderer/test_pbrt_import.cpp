@@ -607,6 +607,18 @@ TEST(PbrtImport, PlyTextWithControlCharactersIsRefusedBeforeAssimpReadsIt) {
   }
 }
 
+// Found by the ctest run of tests/fuzz/fuzz_ply.cpp (the input as found): a face with an empty
+// index list made Assimp 5.2 abort on an assertion; the check refuses it first.
+TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
+  const std::filesystem::path file = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "abort-empty-face.ply";
+  try {
+    load_ply(file, "abort-empty-face.ply");
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has an empty list"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"

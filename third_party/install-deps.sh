@@ -19,6 +19,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   python3 python3-matplotlib
+  clang libclang-rt-dev  # the fuzzers (tests/fuzz/): clang with libFuzzer and the sanitizer runtimes
 )
 
 missing=()

@@ -20,8 +20,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr int kPlanVersion = 1;
-
 const char* kind_name(CompareJob::Kind k) {
   switch (k) {
     case CompareJob::Kind::Reference: return "reference";
@@ -34,19 +32,6 @@ const char* kind_name(CompareJob::Kind k) {
 json job_json(const CompareJob& j) {
   return {{"kind", kind_name(j.kind)}, {"sampler", j.sampler},       {"spp", j.spp},          {"seed_index", j.seed_index},
           {"half", j.half},            {"sweep_step", j.sweep_step}, {"label", describe(j)}};
-}
-
-CompareJob job_from_json(const json& v) {
-  CompareJob j;
-  const std::string k = v.at("kind").get<std::string>();
-  if (k == "reference") j.kind = CompareJob::Kind::Reference;
-  else if (k == "uniform") j.kind = CompareJob::Kind::Uniform;
-  else if (k == "adaptive") j.kind = CompareJob::Kind::Adaptive;
-  else throw std::invalid_argument("unknown job kind \"" + k + "\"");
-  j.sampler = v.at("sampler").get<std::string>();
-  j.spp = v.at("spp").get<int>(), j.seed_index = v.at("seed_index").get<int>();
-  j.half = v.at("half").get<int>(), j.sweep_step = v.at("sweep_step").get<int>();
-  return j;
 }
 
 bool same_job(const CompareJob& a, const CompareJob& b) {
@@ -133,7 +118,7 @@ std::optional<json> finished_mark(const ComparePlan& plan, int index) {
   json mark;
   try {
     mark = json::parse(in);
-    if (mark.at("plan").get<std::string>() != plan.id || mark.at("index").get<int>() != index) return std::nullopt;
+    if (!mark_is_for(mark, plan, index)) return std::nullopt;
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -160,34 +145,13 @@ ComparePlan write_compare_plan(const fs::path& dir, const json& request, const C
     fs::create_directories(dir / sub, ec);
     if (ec) throw InputError((dir / sub).string() + ": cannot create directory (" + ec.message() + ")");
   }
-  const json doc = {{"pdrt_plan", kPlanVersion}, {"id", p.id},      {"request", request},
+  const json doc = {{"pdrt_plan", kComparePlanVersion}, {"id", p.id},      {"request", request},
                     {"scene_hash", hex(p.scene_hash)}, {"jobs", jobs}};
   write_file_atomically(dir / "plan.json", [&](std::ostream& os) { os << doc.dump(1) << "\n"; });
   write_file_atomically(dir / "jobs.txt", [&](std::ostream& os) {
     for (int i : longest_first(p.jobs, o)) os << i << "\n";
   });
   write_slurm_scripts(p, pdrt);
-  return p;
-}
-
-ComparePlan read_compare_plan(const fs::path& dir) {
-  const fs::path file = dir / "plan.json";
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": no compare plan here (write one with `pdrt compare SCENE --plan DIR`)");
-  ComparePlan p;
-  p.dir = dir;
-  try {
-    const json doc = json::parse(in);
-    if (doc.at("pdrt_plan").get<int>() != kPlanVersion)
-      throw std::invalid_argument("plan version " + doc.at("pdrt_plan").dump() + ", this pdrt reads " +
-                                  std::to_string(kPlanVersion));
-    p.id = doc.at("id").get<std::string>();
-    p.request = doc.at("request");
-    p.scene_hash = std::stoull(doc.at("scene_hash").get<std::string>(), nullptr, 16);
-    for (const json& j : doc.at("jobs")) p.jobs.push_back(job_from_json(j));
-  } catch (const std::exception& e) {
-    throw InputError(file.string() + ": not a pdrt compare plan (" + e.what() + ")");
-  }
   return p;
 }
 
@@ -251,14 +215,7 @@ CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job) {
     throw InputError(mark_file.string() + ": job " + std::to_string(index) + " (" + describe(job) + ") has not finished");
   CompareRender r;
   try {
-    const json& v = *mark;
-    r.seconds = v.at("seconds").get<double>(), r.build_seconds = v.at("build_seconds").get<double>();
-    r.cpu_seconds = v.at("cpu_seconds").get<double>(), r.build_cpu_seconds = v.at("build_cpu_seconds").get<double>();
-    r.spp_mean = v.at("spp_mean").get<double>(), r.samples = v.at("samples").get<int64_t>();
-    r.adaptive_rounds = v.at("adaptive_rounds").get<int>(), r.threads = v.at("threads").get<int>();
-    r.profile.ticks = v.at("profile_ticks").get<int64_t>();
-    r.profile.sampler_ticks = v.at("profile_sampler_ticks").get<int64_t>();
-    r.cached = v.at("cached").get<bool>(), r.file = v.at("file").get<std::string>();
+    r = job_mark_render(*mark);
   } catch (const std::exception& e) {
     throw InputError(mark_file.string() + ": not a finished job (" + e.what() + "); run it again");
   }

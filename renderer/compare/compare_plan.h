@@ -6,6 +6,7 @@
 // DIR/jobs.txt lists the job indices, most expensive first, for `xargs -P` / GNU parallel;
 // DIR/slurm/ holds a job-array script, the collect script and their submitter.
 #include "renderer/compare/compare_job.h"
+#include "renderer/compare/compare_plan_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,22 +16,11 @@
 
 namespace pdrt {
 
-struct ComparePlan {
-  std::filesystem::path dir;
-  nlohmann::json request;  // what recreates the scene and the options (the command line's)
-  uint64_t scene_hash = 0; // of CompareOptions::scene_content when planned
-  std::string id;          // of the request, the scene and the jobs: a job's result names its plan
-  std::vector<CompareJob> jobs;
-};
-
 // Writes the plan into `dir` (created). Planning again with the same request and scene keeps
 // the finished jobs; a different plan makes them stale (they are redone). `pdrt` is the
 // executable the generated scripts run.
 ComparePlan write_compare_plan(const std::filesystem::path& dir, const nlohmann::json& request,
                                const CompareOptions& o, const std::filesystem::path& pdrt);
-
-// Reads DIR/plan.json (InputError naming the file when it is missing or not a plan).
-ComparePlan read_compare_plan(const std::filesystem::path& dir);
 
 // InputError when the scene's content no longer matches the plan's.
 void check_plan_scene(const ComparePlan& plan, const CompareOptions& o);

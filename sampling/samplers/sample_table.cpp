@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -215,7 +216,7 @@ class Reader {
   void get_vec(std::vector<T>& v, std::size_t n, const char* what) {
     need(n * sizeof(T), what);
     v.resize(n);
-    std::memcpy(v.data(), d_.data() + pos_, n * sizeof(T));
+    if (n) std::memcpy(v.data(), d_.data() + pos_, n * sizeof(T));  // an empty vector's data() may be null
     pos_ += n * sizeof(T);
   }
   std::size_t pos() const { return pos_; }
@@ -318,6 +319,7 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   const bool pixel = t.params.family == Family::Pixel;
   // Each header field on its own, before the checksum, so a damaged header says which field is wrong.
   if (tables == 0) r.fail("header field tables is 0");
+  if (!pixel && t.params.points == 0) r.fail("header field points is 0");
   if (t.params.tile == 0 || (pixel && t.params.tile > 4096) || (!pixel && t.params.tile != 1))
     r.fail("header field tile is " + std::to_string(t.params.tile) + ", expected " +
            (pixel ? "1 to 4096 for the pixel family" : "1 for this family"));
@@ -326,12 +328,15 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
   // `points` coordinates and radii (pixel tables hold a variable count).
   const double per_table = 4.0 + (pixel ? 8.0 * double(cells) : double(t.params.points) * (4.0 * t.dim + 4.0));
   const double least = double(r.pos()) + double(tables) * per_table + 8.0;
-  if (least > double(data.size()))
+  if (least > double(data.size())) {
+    char needed[40];  // 2^32 tables of 2^32 points: more bytes than a uint64_t counts
+    std::snprintf(needed, sizeof needed, "%.0f", least);
     r.fail("header says " + std::to_string(tables) + " tables" +
            (pixel ? " of " + std::to_string(t.params.tile) + "x" + std::to_string(t.params.tile) + " pixels"
                   : " of " + std::to_string(t.params.points) + " points") +
-           ", which needs at least " + std::to_string(uint64_t(least)) + " bytes; the file has " +
+           ", which needs at least " + needed + " bytes; the file has " +
            std::to_string(data.size()) + " (header field tables or points is wrong, or the file is truncated)");
+  }
   uint64_t stored;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
   if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");
@@ -346,6 +351,9 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
       uint64_t sum = 0;
       for (std::size_t c = 0; c < cells; ++c) {
         if (t.cell_start[k][c] != sum) r.fail("pixel index of table " + std::to_string(k) + " is inconsistent");
+        if (t.cell_count[k][c] == 0)
+          r.fail("pixel " + std::to_string(c % t.params.tile) + "," + std::to_string(c / t.params.tile) + " of table " +
+                 std::to_string(k) + " holds no points");
         sum += t.cell_count[k][c];
       }
       if (sum != n) r.fail("pixel index of table " + std::to_string(k) + " does not cover its points");
@@ -357,6 +365,15 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
     r.get_vec(t.radius[k], n, "radii");
   }
   if (r.pos() != data.size() - 8) r.fail("trailing bytes after the last table");
+  if (pixel) {
+    // Reports quote per_pixel_min; a header that contradicts its own pixel index is damaged.
+    uint32_t fewest = UINT32_MAX;
+    for (const auto& counts : t.cell_count)
+      for (uint32_t c : counts) fewest = std::min(fewest, c);
+    if (t.per_pixel_min != fewest)
+      r.fail("header field per_pixel_min is " + std::to_string(t.per_pixel_min) + ", the fewest points of a pixel is " +
+             std::to_string(fewest));
+  }
   return t;
 }
 

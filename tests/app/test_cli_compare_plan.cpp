@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 namespace fs = std::filesystem;
@@ -188,6 +189,24 @@ TEST(CliComparePlan, BadPlanInputIsRefusedWithOneLine) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("the scene changed since the plan"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d / "plan" / "jobs" / "0000.json"));
+}
+
+// Found with tests/fuzz/fuzz_plan.cpp: a request's integer written as 1e300 in a hand-edited
+// plan.json is refused in one line naming the file and the field (its conversion to int was
+// undefined behaviour).
+TEST(CliComparePlan, RequestIntegerOutOfRangeIsRefusedWithOneLine) {
+  const fs::path d = scratch_dir("plan_request_range");
+  std::ifstream in(fs::path(PDRT_TEST_DATA_DIR) / "fuzz" / "plan" / "plan.json");
+  std::string plan((std::istreambuf_iterator<char>(in)), {});
+  const std::size_t at = plan.find("\"width\": null");
+  ASSERT_NE(at, std::string::npos);
+  plan.replace(at, 13, "\"width\": 1e300");
+  std::ofstream(d / "plan.json") << plan;
+  auto r = run_pdrt("run-job " + d.string() + " 0");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("plan.json: request: \"width\" must be an integer in [-2147483648, 2147483647], got 1e+300"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
 }
 
 // The generated Slurm scripts pass `bash -n`; under a stand-in `sbatch` that runs an array's

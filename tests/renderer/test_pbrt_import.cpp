@@ -3,6 +3,7 @@
 // with file:line:col, and a .pbrt scene rendering the image of its JSON equivalent.
 #include "renderer/scene/pbrt/pbrt_matrix.h"
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
+#include "renderer/scene/pbrt/ply_mesh.h"
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/core/errors.h"
@@ -578,6 +579,46 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
   std::filesystem::remove_all(dir);
 }
 
+// Found with tests/fuzz/fuzz_ply.cpp: an ASCII list count of 2^64 or more is refused like any
+// count that is not a non-negative integer (its conversion to an integer was undefined).
+TEST(PbrtImport, PlyListCountBeyondEveryIntegerIsRefused) {
+  const std::filesystem::path dir = ply_dir();
+  write_file(dir / "big.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                              "1e30 0 1 2\n");
+  write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"big.ply\"\n");
+  EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / "big.ply").string() +
+                                                   ":13:1: a list count must be a non-negative integer, got \"1e30\"");
+  std::filesystem::remove_all(dir);
+}
+
+// Found with tests/fuzz/fuzz_ply.cpp (the inputs as found): NULs and vertical tabs in a PLY
+// header or ASCII body made Assimp 5.2 crash, leak or loop forever; the check refuses them first.
+TEST(PbrtImport, PlyTextWithControlCharactersIsRefusedBeforeAssimpReadsIt) {
+  const std::filesystem::path dir = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply";
+  for (const char* name : {"segv-nul-in-header.ply", "leak-nul-in-body.ply", "hang-vtab-before-end-header.ply",
+                           "hang-vtab-after-end-header.ply"}) {
+    try {
+      load_ply(dir / name, name);
+      ADD_FAILURE() << "accepted " << name;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("a control character (byte 0x"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Found by the ctest run of tests/fuzz/fuzz_ply.cpp (the input as found): a face with an empty
+// index list made Assimp 5.2 abort on an assertion; the check refuses it first.
+TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
+  const std::filesystem::path file = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "abort-empty-face.ply";
+  try {
+    load_ply(file, "abort-empty-face.ply");
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has an empty list"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"
@@ -1035,4 +1076,13 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
     }
   EXPECT_GT(sum, 0);
   EXPECT_LT(worst, 1e-4 * std::max(1.0, sum / (a.width * a.height)));
+}
+
+// Found with tests/fuzz/fuzz_pbrt.cpp: a stratified sampler's two counts are checked one by one,
+// before their product, which overflowed (undefined behaviour) for two large ones.
+TEST(PbrtImport, StratifiedSampleCountsTooLargeToMultiplyAreRefused) {
+  EXPECT_EQ(import_error("Sampler \"stratified\" \"integer xsamples\" [9000000000000000] \"integer ysamples\" "
+                         "[9000000000000000]\n" + std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n"),
+            "s.pbrt:1:1: \"integer xsamples\" and \"integer ysamples\" must be in [1, 2^24], got 9000000000000000 and "
+            "9000000000000000");
 }

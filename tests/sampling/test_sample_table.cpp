@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -423,6 +424,26 @@ TEST(SampleTable, RefusesZeroTableCountByName) {
 }
 TEST(SampleTable, RefusesWrongDimensionByName) {
   expect_refused([](std::string& b) { b[13] = 7; }, "dimension 7 does not match its family");
+}
+// Found by tests/fuzz/fuzz_table.cpp: the bytes such a header needs overflow a uint64_t (their
+// conversion was undefined); the message still says how many.
+TEST(SampleTable, RefusesAHeaderNeedingMoreBytesThanAnIntegerCounts) {
+  expect_refused([](std::string& b) { std::fill(b.begin() + 16, b.begin() + 24, char(0xFF)); },
+                 "4294967295 tables of 4294967295 points, which needs at least 22136092879");
+}
+TEST(SampleTable, RefusesZeroPointCountByName) {
+  expect_refused([](std::string& b) { b[20] = b[21] = b[22] = b[23] = 0; }, "header field points is 0");
+}
+// Found by tests/fuzz/fuzz_table.cpp: a pixel table whose pixels hold no points (its empty
+// coordinate block was copied from a null pointer) is refused, naming the pixel and the table.
+TEST(SampleTable, RefusesAPixelWithoutPoints) {
+  const std::filesystem::path file = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz/table/empty-pixel.pdrttbl";
+  try {
+    read_table(file);
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pixel 0,0 of table 0 holds no points"), std::string::npos) << e.what();
+  }
 }
 TEST(SampleTable, RefusesDirectoryWithTheReason) {
   EXPECT_THROW(

@@ -765,7 +765,12 @@ class Builder {
     else note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");
     int64_t spp = 16;
     if (t == "stratified") {
-      spp = d.params.get_int("xsamples", 4) * d.params.get_int("ysamples", 4);
+      // Each factor on its own first: the product of two large ones would overflow.
+      const int64_t xs = d.params.get_int("xsamples", 4), ys = d.params.get_int("ysamples", 4);
+      if (xs < 1 || ys < 1 || xs > (int64_t(1) << 24) || ys > (int64_t(1) << 24))
+        fail(d.at, "\"integer xsamples\" and \"integer ysamples\" must be in [1, 2^24], got " + std::to_string(xs) +
+                       " and " + std::to_string(ys));
+      spp = xs * ys;
       d.params.find_bool("jitter");
     } else {
       spp = d.params.get_int("pixelsamples", 16);

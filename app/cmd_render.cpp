@@ -74,7 +74,8 @@ void add_render_command(CLI::App& app) {
     std::optional<double> threshold;
     std::string metric, variance, decision, reconstruction;
     int threads = 0;
-    bool quiet = false, adaptive = false, allow_long = false, strict = false, regularize = false;
+    bool quiet = false, adaptive = false, allow_long = false, strict = false, regularize = false,
+         no_regularize = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
@@ -106,9 +107,12 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
   cmd->add_option("--adaptive-decision", o->decision,
                   "Adaptive: shared | split (split: odd samples decide, even samples estimate; unbiased)");
-  cmd->add_flag("--regularize", o->regularize,
-                "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
-                "(integrator.regularize)");
+  auto* regularize = cmd->add_flag(
+      "--regularize", o->regularize,
+      "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
+      "(integrator.regularize)");
+  cmd->add_flag("--no-regularize", o->no_regularize, "Unbiased: no path regularisation, whatever the scene sets")
+      ->excludes(regularize);
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
@@ -160,6 +164,7 @@ void add_render_command(CLI::App& app) {
     if (o->width) scene.film.width = *o->width;
     if (o->height) scene.film.height = *o->height;
     if (o->regularize) scene.integrator.regularize = true;
+    if (o->no_regularize) scene.integrator.regularize = false;
     check_film_memory(scene.film.width, scene.film.height,
                       o->width || o->height ? "--width/--height" : scene.film.size_where,
                       ad.enabled && ad.decision == "split" ? 2 : 1);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fireflies of scenes rendered at their own settings: pixels brighter than 10x the median
 # luminance of their 3x3 neighbourhood where a 4096-spp reference has none (`pdrt fireflies`,
-# renderer/compare/image_metrics.h). The references (sobol, seed 4242) are rendered once into
+# renderer/compare/image_metrics.h), counted by the ratio alone and with a floor of 0.01 in
+# luminance (FLOOR=...), and the specks: pixels over 3x the reference's and +0.05. The references (sobol, seed 4242) are rendered once into
 # OUT/ref/ and reused; each scene's render goes to OUT/NAME.exr.
 # Usage: tools/fireflies.sh [OUT=out/fireflies] [SCENE.json ...] [-- RENDER OPTIONS]
 #   default scenes: the demo (scenes/cornell-box.json), gloss-translucency and env-lit;
@@ -37,6 +38,7 @@ PY
   start=$(date +%s.%N)
   "$B/pdrt" render "$scene" "${opts[@]}" -q -o "$out/$name.exr" -o "$out/$name.png" --stats "$out/$name.json"
   end=$(date +%s.%N)
-  count=$("$B/pdrt" fireflies "$out/$name.exr" --reference "$ref")
-  python3 -c "print('%s: %s; %.1f s' % ('$scene', '''$count''', $end - $start))"
+  literal=$("$B/pdrt" fireflies "$out/$name.exr" --reference "$ref" | sed 's/;.*//')
+  count=$("$B/pdrt" fireflies "$out/$name.exr" --reference "$ref" --floor "${FLOOR:-0.01}")
+  echo "$scene: $literal; $count; $(python3 -c "print('%.1f s' % ($end - $start))")"
 done

@@ -55,7 +55,7 @@ std::vector<float> error_map(const Image& t, const Image& r) {
   return e;
 }
 
-std::vector<unsigned char> firefly_mask(const Image& im, double ratio) {
+std::vector<unsigned char> firefly_mask(const Image& im, double ratio, double floor) {
   const int W = im.width, H = im.height;
   std::vector<unsigned char> mask(std::size_t(W) * H, 0);
   if (W <= 0 || H <= 0) return mask;
@@ -73,15 +73,15 @@ std::vector<unsigned char> firefly_mask(const Image& im, double ratio) {
       std::nth_element(v, v + 4, v + 9);
       const float c = lum[std::size_t(y) * W + x];
       // A NaN is no firefly (the render drops non-finite samples); an infinity is one.
-      if (double(c) > ratio * double(v[4])) mask[std::size_t(y) * W + x] = 1;
+      if (double(c) > ratio * double(v[4]) && double(c) - v[4] > floor) mask[std::size_t(y) * W + x] = 1;
     }
   }
   return mask;
 }
 
-FireflyCount count_fireflies(const Image& test, const Image& reference, double ratio) {
+FireflyCount count_fireflies(const Image& test, const Image& reference, double ratio, double floor) {
   check_same_size(test, reference);
-  const std::vector<unsigned char> t = firefly_mask(test, ratio), r = firefly_mask(reference, ratio);
+  const std::vector<unsigned char> t = firefly_mask(test, ratio, floor), r = firefly_mask(reference, ratio, floor);
   FireflyCount c;
   for (std::size_t i = 0; i < t.size(); ++i) {
     c.test += t[i];
@@ -89,6 +89,22 @@ FireflyCount count_fireflies(const Image& test, const Image& reference, double r
     c.extra += t[i] && !r[i];
   }
   return c;
+}
+
+std::vector<unsigned char> speck_mask(const Image& test, const Image& reference, double ratio, double floor) {
+  check_same_size(test, reference);
+  std::vector<unsigned char> mask(std::size_t(test.width) * test.height, 0);
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    const double t = lum_at(test, i), r = lum_at(reference, i);
+    mask[i] = t > ratio * r && t - r > floor;  // false for a NaN, true for an infinity
+  }
+  return mask;
+}
+
+long long count_specks(const Image& test, const Image& reference, double ratio, double floor) {
+  long long n = 0;
+  for (unsigned char m : speck_mask(test, reference, ratio, floor)) n += m;
+  return n;
 }
 
 RadialSpectrum error_spectrum(const Image& t, const Image& r) {

@@ -80,6 +80,36 @@ TEST(ImageMetrics, FireflyTheReferenceSharesIsNotCounted) {
   EXPECT_EQ(c.extra, 1);
 }
 
+// A lit pixel on black has a median of 0, so the ratio alone counts it however dim it is; the
+// floor asks it to stand out by a visible amount as well.
+TEST(ImageMetrics, FireflyFloorDropsDimPixelsOnBlack) {
+  Image im = flat_image(8, 6, 0.0f), ref = flat_image(8, 6, 0.0f);
+  set_pixel(im, 2, 2, 0.002f);
+  set_pixel(im, 5, 3, 0.5f);
+  EXPECT_EQ(count_fireflies(im, ref).extra, 2);
+  EXPECT_EQ(count_fireflies(im, ref, 10, 0.01).extra, 1);
+  EXPECT_EQ(count_fireflies(im, ref, 10, 0.6).extra, 0);
+}
+
+// A speck is brighter than ratio x the reference's pixel and above it by more than the floor:
+// 4x and +0.3 counts, 2.5x does not, and 4x of a near-black pixel stays under the floor.
+TEST(ImageMetrics, SpeckIsAPixelOverRatioTimesTheReferenceAndAboveTheFloor) {
+  Image im = flat_image(8, 6, 0.1f), ref = flat_image(8, 6, 0.1f);
+  set_pixel(im, 1, 1, 0.4f);
+  set_pixel(im, 2, 2, 0.4f);
+  // A speck the filter spread over its neighbours: the 3x3 median test misses it.
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (dx || dy) set_pixel(im, 5 + dx, 3 + dy, 0.28f);
+  set_pixel(im, 5, 3, 0.4f);
+  set_pixel(im, 6, 0, 0.25f);
+  set_pixel(ref, 0, 5, 0.001f);
+  set_pixel(im, 0, 5, 0.004f);
+  EXPECT_EQ(count_fireflies(im, ref, 3).extra, 2);
+  EXPECT_EQ(count_specks(im, ref, 3, 0.05), 3);
+  EXPECT_EQ(count_specks(im, ref, 3, 0.35), 0);
+}
+
 // A sharp edge between dark and bright regions is no firefly: most of a bright edge pixel's
 // neighbours are bright.
 TEST(ImageMetrics, SharpEdgeIsNoFirefly) {

@@ -4,7 +4,7 @@
 // mean path weight of visible-normal sampling (Heitz 2018), G2 / G1 per reflected or refracted
 // direction that stays on its side, integrated over the sampler's unit square by a fixed
 // midpoint rule: deterministic, and the same D, G and sampling code the renderer uses.
-#include "renderer/render/bsdf.h"
+#include "renderer/render/bxdf/bsdf_sample.h"  // kMinGgxAlpha
 #include "renderer/render/fresnel.h"
 #include "renderer/render/ggx_albedo_tables.h"
 #include "renderer/render/microfacet_ggx.h"

@@ -1,4 +1,4 @@
-// coated_diffuse (renderer/render/coated_diffuse.h): a Lambert base under a smooth or GGX-rough
+// coated_diffuse (renderer/render/bxdf/coated_diffuse.h): a Lambert base under a smooth or GGX-rough
 // dielectric coat. Sampling against pdf (chi-square, delta lobe as its own category), weights
 // against eval, reciprocity, white furnace (directional albedo and a rendered sphere), the
 // black base (the coat's albedo alone), Beer-Lambert absorption, degenerate input.

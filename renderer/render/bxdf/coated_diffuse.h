@@ -21,15 +21,15 @@
 // probability from their albedos at wo: E(mu_o) against (1 - E(mu_o)) x the base's estimated
 // albedo. pdf() is the exact mixture pdf of the non-delta part; a smooth coat's delta sample has
 // the discrete probability of its lobe as pdf and `delta` set (not usable for MIS).
+#include "renderer/render/bxdf/bsdf_sample.h"
 #include "renderer/scene/material.h"
 #include "renderer/scene/vec3.h"
 
 namespace pdrt {
 
-struct BsdfSample;
-
 class CoatedDiffuse {
  public:
+  static constexpr bool kDelta = false;  // a smooth coat's delta reflection sits beside the base
   CoatedDiffuse() = default;
   explicit CoatedDiffuse(const Material& m);
 

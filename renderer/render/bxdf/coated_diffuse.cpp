@@ -1,6 +1,5 @@
-#include "renderer/render/coated_diffuse.h"
+#include "renderer/render/bxdf/coated_diffuse.h"
 
-#include "renderer/render/bsdf.h"
 #include "renderer/render/fresnel.h"
 #include "renderer/render/ggx_albedo.h"
 #include "renderer/render/ggx_albedo_tables.h"

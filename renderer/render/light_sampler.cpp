@@ -83,7 +83,8 @@ float LightSampler::emitter_luminance(const Material& m) const {
   return float(sum / (n * n));
 }
 
-LightSampler::LightSampler(const EmbreeScene& scene) : scene_(scene), textures_(scene.desc()) {
+LightSampler::LightSampler(const EmbreeScene& scene, const TextureSet& textures)
+    : scene_(scene), textures_(textures) {
   const SceneDesc& d = scene.desc();
   first_entry_.assign(d.shapes.size(), -1);
   for (std::size_t i = 0; i < d.shapes.size(); ++i) {

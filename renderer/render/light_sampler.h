@@ -35,9 +35,8 @@ struct LightSample {
 
 class LightSampler {
  public:
-  LightSampler(const EmbreeScene& scene);
-  // The scene's textures, opened once: the path integrator shades with the same set.
-  const TextureSet& textures() const { return textures_; }
+  // textures: the scene's, opened once (MaterialSet owns them); textured emitters read them.
+  LightSampler(const EmbreeScene& scene, const TextureSet& textures);
   bool empty() const { return light_count() == 0; }
 
   // u_pick chooses the light for the shading point `ref` with unit shading normal `n`
@@ -105,7 +104,7 @@ class LightSampler {
   float emitter_luminance(const Material& m) const;
 
   const EmbreeScene& scene_;
-  TextureSet textures_;  // the scene's: textured emitters read them, and the integrator (textures())
+  const TextureSet& textures_;  // the scene's (MaterialSet's): textured emitters read them
   std::vector<Entry> entries_;
   LightBvh bvh_;                      // over entries_ (ids = entry indices)
   std::vector<int64_t> first_entry_;  // per shape: index of its first entry, or -1

@@ -1,10 +1,8 @@
 #include "renderer/render/path_integrator.h"
 
-#include "renderer/render/mix_material.h"
-
 #include <cmath>
 #include <limits>
-#include <optional>
+#include <stdexcept>
 
 namespace pdrt {
 
@@ -17,20 +15,11 @@ float power_heuristic(float a, float b) {
 
 }  // namespace
 
-PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const IntegratorDesc& settings)
-    : scene_(scene),
-      lights_(lights),
-      settings_(settings),
-      textures_(lights.textures()),
-      footprint_(scene.desc().camera, scene.desc().film.width, scene.desc().film.height,
-                 scene.desc().sampler.adaptive.enabled ? scene.desc().sampler.adaptive.max_spp : scene.desc().sampler.spp) {
-  for (const Material& m : scene.desc().materials) {
-    bsdfs_.emplace_back(m);
-    if (settings_.regularize) regularized_.emplace_back(regularized(m));
-    bare_.push_back(m);
-    bare_.back().name.clear();
-    bare_.back().textures.clear();
-  }
+PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const MaterialSet& materials,
+                               const IntegratorDesc& settings)
+    : scene_(scene), lights_(lights), materials_(materials), settings_(settings) {
+  if (settings.regularize && !materials.regularizes())
+    throw std::logic_error("PathIntegrator: regularize needs a MaterialSet built with regularize");
 }
 
 PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps) const { return trace(ray, ps, nullptr, false); }
@@ -68,28 +57,10 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
-    const std::vector<Material>& materials = scene_.desc().materials;
     const Vec3 wo_world = -ray.dir;
-    bool have_coords = false;
-    int mi = scene_.material(hit.shape);  // a prototype's shape inside an instance
-    if (materials[size_t(mi)].type == MaterialType::Mix) {
-      // pbrt-v4's MixMaterial: this hit shades with one component (mix_material.h).
-      mi = resolve_mix(materials, mi, hit.p, wo_world, [&](int k) {
-        const Material& m = materials[size_t(k)];
-        if (m.textures.empty()) return m.amount;
-        if (!have_coords) scene_.texture_coords(&hit, time), have_coords = true;
-        return textures_.apply(bare_[size_t(k)], m.textures, footprint_.at(hit)).amount;
-      });
-    }
-    const Material& mat = materials[size_t(mi)];
-    const bool regularize = settings_.regularize && any_non_delta;
-    std::optional<Bsdf> textured;
-    if (!mat.textures.empty()) {
-      if (!have_coords) scene_.texture_coords(&hit, time);
-      const Material m = textures_.apply(bare_[mi], mat.textures, footprint_.at(hit));
-      textured.emplace(regularize ? regularized(m) : m);
-    }
-    const Bsdf& bsdf = textured ? *textured : regularize ? regularized_[mi] : bsdfs_[mi];
+    const MaterialSet::Shading shading = materials_.at(hit, wo_world, time, settings_.regularize && any_non_delta);
+    const Material& mat = *shading.material;
+    const Bsdf& bsdf = shading.bsdf();
     if (depth == 0) {
       res.albedo = bsdf.albedo();
       res.normal = hit.ns;

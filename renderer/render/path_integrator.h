@@ -9,8 +9,7 @@
 #include "renderer/render/bsdf.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/light_sampler.h"
-#include "renderer/render/texture_footprint.h"
-#include "renderer/render/texture_set.h"
+#include "renderer/render/material_set.h"
 #include "sampling/samplers/sampler.h"
 
 #include <vector>
@@ -27,7 +26,8 @@ struct PathResult {
 
 class PathIntegrator {
  public:
-  PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const IntegratorDesc& settings);
+  PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const MaterialSet& materials,
+                 const IntegratorDesc& settings);
   PathResult trace(Ray ray, const PixelSampleState& sampler) const;
   // The same path when the camera ray's intersection is already known (`found` false: it
   // missed), e.g. from a packet of a pixel's camera rays.
@@ -37,14 +37,8 @@ class PathIntegrator {
   PathResult trace(Ray ray, const PixelSampleState& sampler, const SurfaceHit* first, bool found) const;
   const EmbreeScene& scene_;
   const LightSampler& lights_;
+  const MaterialSet& materials_;
   IntegratorDesc settings_;
-  std::vector<Bsdf> bsdfs_;  // per material (textured ones: with their constant values, unused)
-  std::vector<Bsdf> regularized_;  // per material, regularized(material) (settings_.regularize only)
-  // Textured materials build their Bsdf per hit from `bare_` (the material without name and
-  // bindings) with the textures evaluated at the hit; others use bsdfs_ as before.
-  const TextureSet& textures_;  // the light sampler's: one open set per render
-  TextureFootprint footprint_;
-  std::vector<Material> bare_;
 };
 
 // Sampler salts of the 1-D decisions at path vertex `depth` (time family, bounce >= 1;

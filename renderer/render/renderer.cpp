@@ -170,8 +170,11 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
 
   EmbreeDevice device(opt.threads > 0 ? "threads=" + std::to_string(opt.threads) : "");
   EmbreeScene scene(desc, device);
-  LightSampler lights(scene);
-  PathIntegrator integrator(scene, lights, desc.integrator);
+  const int footprint_spp = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
+  MaterialSet materials(scene, TextureFootprint(desc.camera, desc.film.width, desc.film.height, footprint_spp),
+                        desc.integrator.regularize);
+  LightSampler lights(scene, materials.textures());
+  PathIntegrator integrator(scene, lights, materials, desc.integrator);
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);
   Film film(region.width(), region.height());  // pixel (x, y) of the image is film.at(x - region.x0, y - region.y0)

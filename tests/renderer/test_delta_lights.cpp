@@ -349,7 +349,8 @@ TEST(DeltaLights, SelectionProbabilitiesSumToOneWithDeltaLights) {
       if (env) s.environment.radiance = Vec3(0.2f, 0.3f, 0.4f);
       EmbreeDevice device;
       EmbreeScene scene(s, device);
-      LightSampler lights(scene);
+      TextureSet textures(scene.desc());
+      LightSampler lights(scene, textures);
       ASSERT_EQ(lights.light_count(), 2u + 2 + 1 + (env ? 1 : 0));
       const std::size_t spot = 3;
       Rng rng(5);

@@ -232,7 +232,8 @@ TEST(EnvironmentMap, SelectionOddsScaleWithTheMapsRadiance) {
     SceneDesc s = quad_light_and_map(k ? 10.0f : 0.001f);
     EmbreeDevice device;
     EmbreeScene scene(s, device);
-    LightSampler lights(scene);
+    TextureSet textures(scene.desc());
+    LightSampler lights(scene, textures);
     pmf[k] = lights.select_pmf({0.3f, 0, 0.2f}, {0, 1, 0}, lights.environment_id());
     odds[k] = pmf[k] / (1 - pmf[k]);
   }
@@ -246,7 +247,8 @@ TEST(EnvironmentMap, LightSamplerDrawsFromTheMap) {
   SceneDesc s = quad_light_and_map(10);
   EmbreeDevice device;
   EmbreeScene scene(s, device);
-  LightSampler lights(scene);
+  TextureSet textures(scene.desc());
+  LightSampler lights(scene, textures);
   const Vec3 ref(0.3f, 0, 0.2f), n(0, 1, 0);
   const float pick = lights.select_pmf(ref, n, lights.environment_id());
   const EnvironmentMap& map = lights.environment_map();

@@ -57,7 +57,8 @@ TEST(LightSelection, PmfSumsToOneAwayFromTheOriginAtEveryScale) {
         SceneDesc s = many_lights(scale, Vec3(off, -0.5f * off, 0.25f * off) * scale, env);
         EmbreeDevice device;
         EmbreeScene scene(s, device);
-        LightSampler lights(scene);
+        TextureSet textures(scene.desc());
+        LightSampler lights(scene, textures);
         ASSERT_EQ(lights.light_count(), 2u * 5 + 3 + (env ? 1 : 0));
         Rng rng(11);
         int nonzero = 0;
@@ -90,7 +91,8 @@ TEST(LightSelection, PickFrequenciesMatchThePmf) {
   SceneDesc s = many_lights(1, Vec3(30, 5, -20), true);
   EmbreeDevice device;
   EmbreeScene scene(s, device);
-  LightSampler lights(scene);
+  TextureSet textures(scene.desc());
+  LightSampler lights(scene, textures);
   Rng rng(5);
   const int kPicks = 200000;
   for (int point = 0; point < 4; ++point) {
@@ -130,7 +132,8 @@ TEST(LightSelection, NearDimLightGetsMostPicksBesideIt) {
   s.shapes.push_back(quad({40, 30, -1}, {2, 0, 0}, {0, 0, 2}, add_material(s, emitter(100))));
   EmbreeDevice device;
   EmbreeScene scene(s, device);
-  LightSampler lights(scene);
+  TextureSet textures(scene.desc());
+  LightSampler lights(scene, textures);
   ASSERT_EQ(lights.light_count(), 4u);
   const Vec3 p(0.02f, 0, 0.03f), n(0, 1, 0);
   const double dim = lights.select_pmf(p, n, 0) + lights.select_pmf(p, n, 1);
@@ -157,7 +160,8 @@ TEST(LightSelection, EnvironmentShareDoesNotGrowWithTheScene) {
     s.environment.radiance = Vec3(0.06f);
     EmbreeDevice device;
     EmbreeScene scene(s, device);
-    LightSampler lights(scene);
+    TextureSet textures(scene.desc());
+    LightSampler lights(scene, textures);
     share[big] = lights.select_pmf({0.2f, 0, 0.1f}, {0, 1, 0}, lights.environment_id());
   }
   EXPECT_EQ(share[0], share[1]);

@@ -202,8 +202,9 @@ TEST(RenderDeterminism, SamePixelAndSampleIndexReplayTheSamePath) {
   s.shapes.push_back(sphere({0, 0, 0}, 0.7f, add_material(s, diffuse(0.5f))));
   EmbreeDevice device;
   EmbreeScene scene(s, device);
-  LightSampler lights(scene);
-  PathIntegrator integrator(scene, lights, s.integrator);
+  MaterialSet materials(scene, TextureFootprint(s.camera, 16, 16, s.sampler.spp), s.integrator.regularize);
+  LightSampler lights(scene, materials.textures());
+  PathIntegrator integrator(scene, lights, materials, s.integrator);
   ThinLensCamera cam(s.camera, 16, 16);
   auto sampler = make_scene_sampler(s.sampler);
   PixelSampleState a(*sampler), b(*sampler);

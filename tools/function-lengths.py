@@ -93,6 +93,8 @@ def functions(path):
                 head = code[start:i].strip()
                 if "(" in head and SIGNATURE_END.search(head) and not head.startswith(("namespace", "extern")):
                     m = NAME.search(head)
+                    if head.find("[") >= 0 and (not m or head.find("[") < m.start()):  # auto f = [...](...) {
+                        m = re.search(r"(\w+)\s*=\s*\[", head)
                     first = start + len(code[start:i]) - len(code[start:i].lstrip())
                     in_function = (depth, m.group(1).replace(" ", "") if m else "?", line_of(first))
             depth += 1
@@ -126,8 +128,9 @@ def main():
         for root, dirs, names in os.walk(p):
             dirs[:] = sorted(d for d in dirs if os.path.normpath(os.path.join(root, d)) not in excluded)
             files += [os.path.join(root, f) for f in sorted(names) if f.endswith(EXTENSIONS)]
-    rows = [(length, f"{path}:{line}", name) for path in files for name, line, length in functions(path)]
-    rows.sort(key=lambda r: (-r[0], r[1]))
+    rows = [(length, path, line, name) for path in files for name, line, length in functions(path)]
+    rows.sort(key=lambda r: (-r[0], r[1], r[2]))
+    rows = [(length, f"{path}:{line}", name) for length, path, line, name in rows]
     print(f"{len(rows)} functions in {len(files)} files; the {min(a.top, len(rows))} longest:")
     for length, where, name in rows[:a.top]:
         print(f"{length:6d}  {where}  {name}")

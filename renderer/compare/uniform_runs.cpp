@@ -1,0 +1,95 @@
+#include "renderer/compare/uniform_runs.h"
+
+#include "renderer/compare/image_metrics.h"
+#include "renderer/render/renderer.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pdrt {
+
+namespace {
+
+// Pixels whose used samples are analysed per (sampler, spp, family): 1024 point sets make
+// an averaged periodogram smooth to a few percent.
+constexpr int kUsedSamplePixels = 1024;
+
+// Adds seed k's render to `run`: its error, times and spectrum.
+void add_seed(const ReportContext& ctx, const Image& ref, int k, const CompareRender& r, UniformRun& run) {
+  SeedRun sr;
+  sr.seed = compare_seed(ctx.base.sampler.seed, k);
+  sr.seconds = r.seconds;
+  sr.render_seconds = r.seconds - r.build_seconds;
+  sr.cpu_seconds = r.cpu_seconds - r.build_cpu_seconds;
+  sr.samples = r.samples;
+  sr.relmse = relative_mse(r.image, ref);
+  sr.profile = r.profile;
+  run.profile += sr.profile;
+  RadialSpectrum sp = error_spectrum(r.image, ref);
+  if (k == 0) run.spectrum = sp, run.samples = r.samples;
+  else
+    for (std::size_t b = 0; b < sp.power.size(); ++b) run.spectrum.power[b] += sp.power[b];
+  const double w = 1.0 / ctx.o.seeds;
+  run.seconds += w * sr.seconds, run.render_seconds += w * sr.render_seconds;
+  run.cpu_seconds += w * sr.cpu_seconds, run.relmse += w * sr.relmse, run.spp_mean += w * r.spp_mean;
+  run.seeds.push_back(sr);
+}
+
+// "poisson     16 spp  rmse 0.09653 +- ...": the run's line of progress.
+std::string run_line(const ReportContext& ctx, const UniformRun& run) {
+  // One seed has no interval and no split of its error into bias and variance: say so
+  // rather than print a zero-width interval and a zero variance.
+  char spread[120];
+  if (ctx.o.seeds > 1)
+    std::snprintf(spread, sizeof spread, "+- %.5f (95%%, %d seeds)  bias^2 %.3g  variance %.3g", run.stats.rmse_ci95,
+                  ctx.o.seeds, run.stats.bias2, run.stats.variance);
+  else
+    std::snprintf(spread, sizeof spread, "(1 seed: intervals, bias and variance need >= 2)");
+  char share[48];  // a render too short for a profiler tick has no measured share
+  const double sh = run.profile.share();
+  if (std::isnan(sh)) std::snprintf(share, sizeof share, "sampler share not measured: no profiler tick");
+  else std::snprintf(share, sizeof share, "sampler %.1f%%", 100 * sh);
+  char buf[340];
+  std::snprintf(buf, sizeof buf, "%-8s %5d spp  rmse %.5f %s  %lld samples  %.3f s CPU (%s)", run.sampler.c_str(),
+                run.spp, run.rmse, spread, (long long)run.samples, run.cpu_seconds, share);
+  return buf;
+}
+
+UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, const std::string& name, int n, int& threads) {
+  UniformRun run;
+  run.sampler = name, run.spp = n;
+  std::vector<Image> images;
+  for (int k = 0; k < ctx.o.seeds; ++k) {
+    CompareJob jb;
+    jb.kind = CompareJob::Kind::Uniform, jb.sampler = name, jb.spp = n, jb.seed_index = k;
+    CompareRender r = ctx.get(jb);
+    threads = r.threads;
+    add_seed(ctx, ref.image, k, r, run);
+    images.push_back(std::move(r.image));
+  }
+  for (double& p : run.spectrum.power) p /= ctx.o.seeds;
+  {
+    SamplerDesc d = ctx.base.sampler;
+    d.type = name, d.seed = compare_seed(ctx.base.sampler.seed, 0);
+    const auto sampler = make_scene_sampler(d);
+    for (int f = 0; f < kFamilyCount; ++f)
+      run.used.push_back(analyze_stream(*sampler, Family(f), ctx.width, ctx.height, n, kUsedSamplePixels));
+  }
+  run.stats = seed_statistics(images, ref.image, ref.noise);
+  run.rmse = run.stats.rmse_mean;
+  run.image = std::move(images[0]);
+  run.image_file = "images/" + name + "-" + std::to_string(n) + ".png";
+  run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
+  ctx.write_png(run.image_file, display_rgb(run.image));
+  ctx.say(run_line(ctx, run));
+  return run;
+}
+
+}  // namespace
+
+void render_uniform_runs(const ReportContext& ctx, CompareResults& results) {
+  for (const auto& name : ctx.o.samplers)
+    for (int n : ctx.o.spp) results.runs.push_back(render_run(ctx, results.reference, name, n, results.threads));
+}
+
+}  // namespace pdrt

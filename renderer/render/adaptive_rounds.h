@@ -1,0 +1,18 @@
+#pragma once
+// Adaptive refinement (McCool–Fiume §5.1 / Cook §6): after a first pass at min_spp, rounds
+// that extend prefixes. A pixel whose error is above the threshold doubles its sample count
+// (up to max_spp); its 3x3 neighbours refine with it, so edges are not left blocky. Samples
+// already taken are never moved or discarded. Rounds go on until no pixel refines or the
+// render is cancelled.
+#include "renderer/render/render_films.h"
+#include "renderer/render/render_region.h"
+#include "renderer/render/tile_passes.h"
+#include "renderer/scene/scene_desc.h"
+
+namespace pdrt {
+
+// Renders `ad`'s first pass and its refinement rounds; returns the rounds after the first.
+int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films,
+                           TilePasses& passes);
+
+}  // namespace pdrt

@@ -1,0 +1,66 @@
+#include "renderer/render/render_statistics.h"
+
+#include "renderer/render/process_cpu_time.h"
+#include "sampling/core/warnings.h"
+
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+namespace pdrt {
+
+RenderClock::RenderClock() : t0_(std::chrono::steady_clock::now()), cpu0_(process_cpu_seconds()) {}
+
+void RenderClock::build_done() {
+  build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  build_cpu_seconds_ = process_cpu_seconds() - cpu0_;
+}
+
+void RenderClock::finish(RenderStats& stats) const {
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  stats.build_seconds = build_seconds_;
+  stats.cpu_seconds = process_cpu_seconds() - cpu0_;
+  stats.build_cpu_seconds = build_cpu_seconds_;
+}
+
+std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGroup& group) {
+  if (group.size() == 1) return {mine};
+  std::vector<std::byte> out(sizeof(RankStats));
+  std::memcpy(out.data(), &mine, sizeof mine);
+  std::vector<RankStats> ranks;
+  for (const std::vector<std::byte>& b : group.all_gather(out)) {
+    RankStats r;
+    std::memcpy(&r, b.data(), sizeof r);
+    ranks.push_back(r);
+  }
+  return ranks;
+}
+
+void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats) {
+  for (const RankStats& r : stats.ranks) stats.rays += r.rays;
+  int64_t crop_samples = 0;
+  for (int y = 0; y < films.image.height(); ++y)
+    for (int x = 0; x < films.image.width(); ++x) {
+      const int64_t n = films.traced(x, y);  // whether or not they counted
+      stats.nonfinite_samples += films.image.at(x, y).dropped + (films.split ? films.decision.at(x, y).dropped : 0);
+      stats.samples += n;
+      if (region.in_crop(x + region.rect.x0, y + region.rect.y0)) crop_samples += n;
+    }
+  stats.spp_mean = double(crop_samples) / (double(region.crop.width()) * region.crop.height());
+}
+
+void warn_nonfinite(const RenderStats& stats, bool quiet) {
+  if (stats.nonfinite_samples > 0 && !quiet)
+    warn("pdrt: warning: " + std::to_string(stats.nonfinite_samples) +
+         " samples had a NaN or infinite value and were dropped");
+}
+
+int worker_threads() {
+  return int(std::min<std::size_t>(std::size_t(tbb::this_task_arena::max_concurrency()),
+                                   tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+}
+
+}  // namespace pdrt

@@ -1,0 +1,41 @@
+#pragma once
+// A render's statistics (RenderStats): its clocks, every rank's share gathered on every rank,
+// and the counts over the films.
+#include "renderer/render/process_group.h"
+#include "renderer/render/render_films.h"
+#include "renderer/render/render_region.h"
+#include "renderer/render/renderer.h"
+
+#include <chrono>
+
+namespace pdrt {
+
+// Wall and process CPU time of a render, and of its scene build (Embree BVH, lights, camera).
+class RenderClock {
+ public:
+  RenderClock();              // starts both clocks
+  void build_done();          // the scene is built: the rest is rendering
+  double build_seconds() const { return build_seconds_; }
+  // Fills seconds, build_seconds, cpu_seconds and build_cpu_seconds: the times until now.
+  void finish(RenderStats& stats) const;
+
+ private:
+  std::chrono::steady_clock::time_point t0_;
+  double cpu0_ = 0, build_seconds_ = 0, build_cpu_seconds_ = 0;
+};
+
+// Collective when distributed: every rank's stats on every rank, by rank (integers: exact).
+std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGroup& group);
+
+// From the ranks and the films: the rays, the samples traced (the margin's too: work done),
+// the dropped ones, and the crop's mean spp (the margin's samples are not the image's spp).
+void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats);
+
+// Warns (unless `quiet`) when samples were dropped for a NaN or infinite value.
+void warn_nonfinite(const RenderStats& stats, bool quiet);
+
+// The worker threads a render runs on: the arena's size capped by the global limit (set by
+// render() when options.threads > 0, or by a caller).
+int worker_threads();
+
+}  // namespace pdrt

@@ -1,0 +1,37 @@
+#pragma once
+// The 16x16 tiles of a render, in waves. Splatting writes into neighbouring tiles, so tiles
+// run in waves whose footprints (tile plus the pixels its splats reach) are disjoint: no
+// locks, and every pixel receives its contributions in the same order at any thread count
+// (wave order, then the tile's pixel order). Tiles and waves are the full image's under a
+// crop window too, so a pixel's contributions come in the same order as in the full render;
+// only tiles that meet the rendered rectangle are in a wave.
+#include "renderer/scene/crop_window.h"
+
+#include <vector>
+
+namespace pdrt {
+
+class TileWaves {
+ public:
+  static constexpr int kTile = 16;
+
+  // Tiles of a width x height image that meet `region`; `spread`: pixels beyond a tile its
+  // samples reach (the splat margin when splatting, else 0).
+  TileWaves(int width, int height, const PixelRect& region, int spread);
+
+  // Each wave's tiles (indices in row-major order over the image), waves in order.
+  const std::vector<std::vector<int>>& waves() const { return waves_; }
+  // Tile t's pixels within the region.
+  PixelRect pixels(int t) const;
+  // Tile t's footprint within the region: its pixels and the ones its samples reach.
+  PixelRect footprint(int t) const;
+  const PixelRect& region() const { return region_; }
+
+ private:
+  int tx_;  // tiles per row
+  PixelRect region_;
+  int spread_;
+  std::vector<std::vector<int>> waves_;
+};
+
+}  // namespace pdrt

@@ -1,0 +1,37 @@
+#pragma once
+// The exchange after each wave of a distributed render (docs/distributed.md): tile j of each
+// wave belongs to rank j mod N. After the wave every rank sends the pixel state of its tiles'
+// footprints (the tile, plus the splat margin when splatting) and copies the others' into its
+// films. Footprints within a wave are disjoint and each was computed by one rank exactly as
+// one process computes it, so every rank holds the single-process films, bit for bit, before
+// the next wave.
+#include "renderer/render/film.h"
+#include "renderer/render/process_group.h"
+#include "renderer/render/renderer.h"
+#include "renderer/render/tile_waves.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace pdrt {
+
+class WaveExchange {
+ public:
+  // `films`: the film, and the decision film or nullptr (the same on every rank).
+  WaveExchange(const ProcessGroup& group, const TileWaves& tiles, std::vector<Film*> films);
+
+  // Collective: every rank takes part in every exchange, interrupted or not, so none waits
+  // forever. Sends this rank's footprints of `wave` with whether it was `interrupted`, copies
+  // the others'; true when any rank was. Adds the bytes sent and the time taken to `mine`.
+  bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
+
+ private:
+  // Copies the footprints of `rank`'s tiles of `wave` to (pack) or from (unpack) `bytes`.
+  void blocks(const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes, bool pack) const;
+
+  const ProcessGroup& group_;
+  const TileWaves& tiles_;
+  std::vector<Film*> films_;
+};
+
+}  // namespace pdrt

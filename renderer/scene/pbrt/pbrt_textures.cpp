@@ -5,6 +5,61 @@
 #include <cmath>
 
 namespace pdrt {
+namespace {
+
+// Texture "imagemap": the file (relative to the including file), its filter, wrap and encoding;
+// pbrt-v4's scale and invert become textures over the image.
+void image_texture(PbrtBuild& b, const PbrtDirective& d, TextureDesc& t) {
+  const PbrtParams& ps = d.params;
+  t.kind = TextureDesc::Kind::Image;
+  std::optional<std::string> name = ps.find_string("filename");
+  if (!name) b.fail(d.at, "Texture \"imagemap\" needs \"string filename\"");
+  const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+  t.file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
+  std::string reason;
+  if (!can_open_file(t.file, reason)) b.fail(ps.find("filename")->at, "cannot open \"" + t.file.string() + "\": " + reason);
+  const std::string filter = ps.get_string("filter", "bilinear");
+  if (filter == "point") t.filter = TextureFilter::None;
+  else if (filter == "bilinear") t.filter = TextureFilter::Bilinear;
+  else if (filter == "trilinear") t.filter = TextureFilter::Trilinear;
+  else if (filter == "ewa") t.filter = TextureFilter::Ewa;
+  else b.fail(ps.find("filter")->at, "unknown filter \"" + filter + "\" (point, bilinear, trilinear, ewa)");
+  const std::string wrap = ps.get_string("wrap", "repeat");
+  if (wrap == "repeat") t.wrap = TextureWrap::Repeat;
+  else if (wrap == "black") t.wrap = TextureWrap::Black;
+  else if (wrap == "clamp") t.wrap = TextureWrap::Clamp;
+  else {
+    b.note(ps.find("wrap")->at, "wrap \"" + wrap + "\" is not supported (repeat used)");
+  }
+  if (std::optional<std::string> enc = ps.find_string("encoding")) {
+    if (*enc == "sRGB") t.encoding = TextureEncoding::Srgb;
+    else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
+    else b.note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
+  }
+  // pbrt-v4's image textures: ClampZero(invert ? 1 - scale x : scale x), as a scale and an
+  // invert texture on top of the image (the name then means the outermost).
+  const double scale = ps.get_float("scale", 1);
+  if (!(scale >= 0) || !std::isfinite(scale)) b.fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + pbrt_number(scale));
+  const bool invert = ps.get_bool("invert", false);
+  if (scale != 1 || invert) {
+    TextureInput in;
+    in.texture = b.add_texture(std::move(t), d.strings[0] + " (image)", d.at);
+    t = TextureDesc{};
+    t.name = d.strings[0], t.where = d.at.str();
+    if (scale != 1) {
+      t.kind = TextureDesc::Kind::Scale;
+      t.tex = in, t.scale.value = Vec3(float(scale));
+      if (invert) {
+        in.texture = b.add_texture(std::move(t), d.strings[0] + " (scaled image)", d.at);
+        t = TextureDesc{};
+        t.name = d.strings[0], t.where = d.at.str();
+      }
+    }
+    if (invert) t.kind = TextureDesc::Kind::Invert, t.tex = in;
+  }
+}
+
+}  // namespace
 
 // pbrt-v4's texture classes as pdrt's: constant, checkerboard, imagemap (with its scale and
 // invert as textures over it), scale and mix; any other class is reported and its materials
@@ -54,52 +109,7 @@ void translate_pbrt_texture(PbrtBuild& b, const PbrtDirective& d) {
     t.color0 = b.texture_input(ps, "tex1", 1, kind);
     t.color1 = b.texture_input(ps, "tex2", 0, kind);
   } else if (cls == "imagemap") {
-    t.kind = TextureDesc::Kind::Image;
-    std::optional<std::string> name = ps.find_string("filename");
-    if (!name) b.fail(d.at, "Texture \"imagemap\" needs \"string filename\"");
-    const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
-    t.file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
-    std::string reason;
-    if (!can_open_file(t.file, reason)) b.fail(ps.find("filename")->at, "cannot open \"" + t.file.string() + "\": " + reason);
-    const std::string filter = ps.get_string("filter", "bilinear");
-    if (filter == "point") t.filter = TextureFilter::None;
-    else if (filter == "bilinear") t.filter = TextureFilter::Bilinear;
-    else if (filter == "trilinear") t.filter = TextureFilter::Trilinear;
-    else if (filter == "ewa") t.filter = TextureFilter::Ewa;
-    else b.fail(ps.find("filter")->at, "unknown filter \"" + filter + "\" (point, bilinear, trilinear, ewa)");
-    const std::string wrap = ps.get_string("wrap", "repeat");
-    if (wrap == "repeat") t.wrap = TextureWrap::Repeat;
-    else if (wrap == "black") t.wrap = TextureWrap::Black;
-    else if (wrap == "clamp") t.wrap = TextureWrap::Clamp;
-    else {
-      b.note(ps.find("wrap")->at, "wrap \"" + wrap + "\" is not supported (repeat used)");
-    }
-    if (std::optional<std::string> enc = ps.find_string("encoding")) {
-      if (*enc == "sRGB") t.encoding = TextureEncoding::Srgb;
-      else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
-      else b.note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
-    }
-    // pbrt-v4's image textures: ClampZero(invert ? 1 - scale x : scale x), as a scale and an
-    // invert texture on top of the image (the name then means the outermost).
-    const double scale = ps.get_float("scale", 1);
-    if (!(scale >= 0) || !std::isfinite(scale)) b.fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + pbrt_number(scale));
-    const bool invert = ps.get_bool("invert", false);
-    if (scale != 1 || invert) {
-      TextureInput in;
-      in.texture = b.add_texture(std::move(t), d.strings[0] + " (image)", d.at);
-      t = TextureDesc{};
-      t.name = d.strings[0], t.where = d.at.str();
-      if (scale != 1) {
-        t.kind = TextureDesc::Kind::Scale;
-        t.tex = in, t.scale.value = Vec3(float(scale));
-        if (invert) {
-          in.texture = b.add_texture(std::move(t), d.strings[0] + " (scaled image)", d.at);
-          t = TextureDesc{};
-          t.name = d.strings[0], t.where = d.at.str();
-        }
-      }
-      if (invert) t.kind = TextureDesc::Kind::Invert, t.tex = in;
-    }
+    image_texture(b, d, t);
   } else {
     b.note(d.at, "Texture class \"" + cls + "\" is not supported (materials using it get their default value)");
     supported = false;

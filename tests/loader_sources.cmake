@@ -3,11 +3,10 @@
 # (tests/fuzz/), which rebuild them with their own instrumentation. Everything else they use
 # is header-only or a system library (PDRT_LOADER_LIBRARIES).
 set(PDRT_SCENE_DIR ${PROJECT_SOURCE_DIR}/renderer/scene)
+# Every source of the pbrt-v4 importer (renderer/scene/pbrt/), as renderer/CMakeLists.txt globs it.
+file(GLOB PDRT_PBRT_SOURCES CONFIGURE_DEPENDS ${PDRT_SCENE_DIR}/pbrt/*.cpp)
 set(PDRT_LOADER_SOURCES
-  ${PDRT_SCENE_DIR}/pbrt/pbrt_tokenizer.cpp ${PDRT_SCENE_DIR}/pbrt/pbrt_parameters.cpp ${PDRT_SCENE_DIR}/pbrt/pbrt_parser.cpp
-  ${PDRT_SCENE_DIR}/pbrt/pbrt_matrix.cpp ${PDRT_SCENE_DIR}/pbrt/pbrt_spectrum.cpp ${PDRT_SCENE_DIR}/pbrt/pbrt_scene_builder.cpp
-  ${PDRT_SCENE_DIR}/pbrt/ply_mesh.cpp ${PDRT_SCENE_DIR}/pbrt/ply_check.cpp
-  ${PDRT_SCENE_DIR}/pbrt/loop_subdivision.cpp ${PDRT_SCENE_DIR}/pbrt/equal_area_octahedral.cpp
+  ${PDRT_PBRT_SOURCES}
   ${PDRT_SCENE_DIR}/scene_loader.cpp ${PDRT_SCENE_DIR}/json_document.cpp ${PDRT_SCENE_DIR}/json_locations.cpp
   ${PDRT_SCENE_DIR}/obj_loader.cpp ${PDRT_SCENE_DIR}/text_file.cpp ${PDRT_SCENE_DIR}/input_files.cpp ${PDRT_SCENE_DIR}/transform.cpp
   ${PDRT_SCENE_DIR}/material.cpp ${PDRT_SCENE_DIR}/asset_path.cpp ${PDRT_SCENE_DIR}/environment_image.cpp

@@ -59,6 +59,39 @@ TEST(PbrtTokenizer, SplitsWordsStringsAndBracketsAndSkipsComments) {
   EXPECT_EQ(ts[6].text, "a\"b\n");
 }
 
+TEST(PbrtParser, TypesEveryDirectiveByItsName) {
+  using K = PbrtDirectiveKind;
+  const std::vector<std::pair<std::string, K>> expected = {
+      {"Identity", K::Identity}, {"Translate 1 2 3", K::Translate}, {"Scale 1 2 3", K::Scale},
+      {"Rotate 90 0 0 1", K::Rotate}, {"LookAt 0 0 0 0 0 1 0 1 0", K::LookAt},
+      {"Transform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]", K::Transform},
+      {"ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]", K::ConcatTransform},
+      {"CoordinateSystem \"c\"", K::CoordinateSystem}, {"CoordSysTransform \"c\"", K::CoordSysTransform},
+      {"ActiveTransform All", K::ActiveTransform}, {"TransformTimes 0 1", K::TransformTimes},
+      {"ReverseOrientation", K::ReverseOrientation}, {"WorldBegin", K::WorldBegin}, {"WorldEnd", K::WorldEnd},
+      {"AttributeBegin", K::AttributeBegin}, {"AttributeEnd", K::AttributeEnd}, {"TransformBegin", K::TransformBegin},
+      {"TransformEnd", K::TransformEnd}, {"Attribute \"shape\" \"float radius\" 2", K::Attribute},
+      {"ObjectBegin \"o\"", K::ObjectBegin}, {"ObjectEnd", K::ObjectEnd}, {"ObjectInstance \"o\"", K::ObjectInstance},
+      {"Camera \"perspective\"", K::Camera}, {"Film \"rgb\"", K::Film}, {"PixelFilter \"box\"", K::PixelFilter},
+      {"Sampler \"halton\"", K::Sampler}, {"Integrator \"path\"", K::Integrator}, {"Accelerator \"bvh\"", K::Accelerator},
+      {"ColorSpace \"srgb\"", K::ColorSpace}, {"Option \"bool wavefront\" true", K::Option},
+      {"Texture \"t\" \"float\" \"constant\"", K::Texture}, {"Material \"diffuse\"", K::Material},
+      {"MakeNamedMaterial \"m\" \"string type\" \"diffuse\"", K::MakeNamedMaterial},
+      {"NamedMaterial \"m\"", K::NamedMaterial}, {"LightSource \"point\"", K::LightSource},
+      {"AreaLightSource \"diffuse\"", K::AreaLightSource}, {"Shape \"sphere\"", K::Shape},
+      {"MakeNamedMedium \"m\" \"string type\" \"homogeneous\"", K::MakeNamedMedium},
+      {"MediumInterface \"m\"", K::MediumInterface},
+  };
+  std::string text;
+  for (const auto& [line, kind] : expected) text += line + "\n";
+  auto ds = parse(text);
+  ASSERT_EQ(ds.size(), expected.size());
+  for (size_t i = 0; i < ds.size(); ++i) {
+    EXPECT_EQ(ds[i].kind, expected[i].second) << expected[i].first;
+    EXPECT_EQ(ds[i].name, expected[i].first.substr(0, expected[i].first.find(' '))) << expected[i].first;
+  }
+}
+
 TEST(PbrtParser, ReadsDirectiveArgumentsAndTypedParameters) {
   auto ds = parse(
       "LookAt 0 1 2  3 4 5  0 1 0\n"

@@ -3,6 +3,7 @@
 #include "sampling/core/errors.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace pdrt {
 
@@ -135,6 +136,12 @@ std::vector<const PbrtParam*> PbrtParams::unused() const {
   for (const PbrtParam& p : list)
     if (!p.used) out.push_back(&p);
   return out;
+}
+
+std::string pbrt_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
 }
 
 }  // namespace pdrt

@@ -31,6 +31,9 @@ struct PbrtParam {
 // color -> rgb), or "" for a type pbrt-v4 does not have.
 std::string pbrt_canonical_type(const std::string& type);
 
+// A number as messages print it (an ostream's default format: 0.5, 1e+06).
+std::string pbrt_number(double v);
+
 class PbrtParams {
  public:
   std::vector<PbrtParam> list;

@@ -27,33 +27,38 @@ enum class Shape {
 };
 
 struct Syntax {
+  PbrtDirectiveKind kind;
   Shape shape;
   int count = 0;  // Numbers: how many
 };
 
 const std::map<std::string, Syntax, std::less<>>& syntax() {
+  using K = PbrtDirectiveKind;
   static const std::map<std::string, Syntax, std::less<>> table = {
-      {"AttributeBegin", {Shape::Nothing}}, {"AttributeEnd", {Shape::Nothing}},
-      {"TransformBegin", {Shape::Nothing}}, {"TransformEnd", {Shape::Nothing}},
-      {"WorldBegin", {Shape::Nothing}}, {"WorldEnd", {Shape::Nothing}},
-      {"ReverseOrientation", {Shape::Nothing}}, {"Identity", {Shape::Nothing}},
-      {"ObjectEnd", {Shape::Nothing}},
-      {"Translate", {Shape::Numbers, 3}}, {"Scale", {Shape::Numbers, 3}}, {"Rotate", {Shape::Numbers, 4}},
-      {"LookAt", {Shape::Numbers, 9}}, {"TransformTimes", {Shape::Numbers, 2}},
-      {"Transform", {Shape::Matrix}}, {"ConcatTransform", {Shape::Matrix}},
-      {"CoordinateSystem", {Shape::OneString}}, {"CoordSysTransform", {Shape::OneString}},
-      {"ColorSpace", {Shape::OneString}}, {"NamedMaterial", {Shape::OneString}},
-      {"ObjectBegin", {Shape::OneString}}, {"ObjectInstance", {Shape::OneString}},
-      {"Include", {Shape::OneString}}, {"Import", {Shape::OneString}},
-      {"ActiveTransform", {Shape::Word}},
-      {"Camera", {Shape::StringParams}}, {"Film", {Shape::StringParams}}, {"Sampler", {Shape::StringParams}},
-      {"PixelFilter", {Shape::StringParams}}, {"Integrator", {Shape::StringParams}},
-      {"Accelerator", {Shape::StringParams}}, {"Material", {Shape::StringParams}},
-      {"MakeNamedMaterial", {Shape::StringParams}}, {"Shape", {Shape::StringParams}},
-      {"LightSource", {Shape::StringParams}}, {"AreaLightSource", {Shape::StringParams}},
-      {"MakeNamedMedium", {Shape::StringParams}}, {"Attribute", {Shape::StringParams}},
-      {"Texture", {Shape::ThreeStringParams}}, {"MediumInterface", {Shape::Strings12}},
-      {"Option", {Shape::Params}},
+      {"AttributeBegin", {K::AttributeBegin, Shape::Nothing}}, {"AttributeEnd", {K::AttributeEnd, Shape::Nothing}},
+      {"TransformBegin", {K::TransformBegin, Shape::Nothing}}, {"TransformEnd", {K::TransformEnd, Shape::Nothing}},
+      {"WorldBegin", {K::WorldBegin, Shape::Nothing}}, {"WorldEnd", {K::WorldEnd, Shape::Nothing}},
+      {"ReverseOrientation", {K::ReverseOrientation, Shape::Nothing}}, {"Identity", {K::Identity, Shape::Nothing}},
+      {"ObjectEnd", {K::ObjectEnd, Shape::Nothing}},
+      {"Translate", {K::Translate, Shape::Numbers, 3}}, {"Scale", {K::Scale, Shape::Numbers, 3}},
+      {"Rotate", {K::Rotate, Shape::Numbers, 4}}, {"LookAt", {K::LookAt, Shape::Numbers, 9}},
+      {"TransformTimes", {K::TransformTimes, Shape::Numbers, 2}},
+      {"Transform", {K::Transform, Shape::Matrix}}, {"ConcatTransform", {K::ConcatTransform, Shape::Matrix}},
+      {"CoordinateSystem", {K::CoordinateSystem, Shape::OneString}},
+      {"CoordSysTransform", {K::CoordSysTransform, Shape::OneString}},
+      {"ColorSpace", {K::ColorSpace, Shape::OneString}}, {"NamedMaterial", {K::NamedMaterial, Shape::OneString}},
+      {"ObjectBegin", {K::ObjectBegin, Shape::OneString}}, {"ObjectInstance", {K::ObjectInstance, Shape::OneString}},
+      {"Include", {K::Include, Shape::OneString}}, {"Import", {K::Import, Shape::OneString}},
+      {"ActiveTransform", {K::ActiveTransform, Shape::Word}},
+      {"Camera", {K::Camera, Shape::StringParams}}, {"Film", {K::Film, Shape::StringParams}},
+      {"Sampler", {K::Sampler, Shape::StringParams}}, {"PixelFilter", {K::PixelFilter, Shape::StringParams}},
+      {"Integrator", {K::Integrator, Shape::StringParams}}, {"Accelerator", {K::Accelerator, Shape::StringParams}},
+      {"Material", {K::Material, Shape::StringParams}}, {"MakeNamedMaterial", {K::MakeNamedMaterial, Shape::StringParams}},
+      {"Shape", {K::Shape, Shape::StringParams}}, {"LightSource", {K::LightSource, Shape::StringParams}},
+      {"AreaLightSource", {K::AreaLightSource, Shape::StringParams}},
+      {"MakeNamedMedium", {K::MakeNamedMedium, Shape::StringParams}}, {"Attribute", {K::Attribute, Shape::StringParams}},
+      {"Texture", {K::Texture, Shape::ThreeStringParams}}, {"MediumInterface", {K::MediumInterface, Shape::Strings12}},
+      {"Option", {K::Option, Shape::Params}},
   };
   return table;
 }
@@ -97,9 +102,10 @@ class Parser {
       if (it == syntax().end()) throw InputError(t.at.str() + ": unknown directive \"" + t.text + "\"");
       PbrtDirective d;
       d.name = t.text;
+      d.kind = it->second.kind;
       d.at = t.at;
       directive(in, it->second, d);
-      if (d.name == "Include" || d.name == "Import") {
+      if (d.kind == PbrtDirectiveKind::Include || d.kind == PbrtDirectiveKind::Import) {
         fs::path target = fs::path(d.strings[0]);
         if (target.is_relative()) target = dir / target;
         std::string shown_target = (fs::path(shown).parent_path() / d.strings[0]).string();

@@ -1,9 +1,10 @@
 #pragma once
-// Turns pbrt-v4 directives (pbrt_parser.h) into pdrt's SceneDesc: the graphics state (current
-// transform at the shutter's start and end, attributes, named coordinate systems, materials,
-// area lights, object instances) as pbrt-v4's BasicSceneBuilder keeps it, and the mapping of
-// each camera, film, filter, sampler, integrator, shape, material and light onto pdrt's
-// (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one line each,
+// Turns pbrt-v4 directives (pbrt_parser.h) into pdrt's SceneDesc: a switch over each
+// directive's kind hands it to the graphics state (pbrt_graphics_state.h: current transform at
+// the shutter's start and end, attributes, named coordinate systems, materials, area lights,
+// object instances, as pbrt-v4's BasicSceneBuilder keeps it) or to the translator of its kind
+// (pbrt_build_context.h), which maps each camera, film, filter, sampler, integrator, texture,
+// material, light and shape onto pdrt's (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one line each,
 // "file:line:col: what (what pdrt does instead)"; with `strict` the first such line is an error.
 #include "renderer/scene/pbrt/pbrt_parser.h"
 #include "renderer/scene/scene_desc.h"

@@ -38,26 +38,27 @@ struct Element {
 
 constexpr size_t kMaxHeader = 1 << 16;  // bytes: a header is a few hundred
 
-}  // namespace
+// One file's check: the header's elements, then the body against them. `line_no` counts
+// the text lines read so far (header, ASCII body).
+class PlyChecker {
+ public:
+  PlyChecker(std::ifstream& in, const std::string& shown) : in_(in), shown_(shown) {}
 
-void check_ply(const std::filesystem::path& file, const std::string& shown) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::string reason;
-    can_open_file(file, reason);
-    throw InputError(shown + ": cannot open: " + reason);
+  void run() {
+    header();
+    if (format == "ascii") return ascii_body();
+    binary_body();
   }
-  auto fail = [&](int line, int col, const std::string& what) {
-    throw InputError(shown + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
-  };
-  // Header: lines up to "end_header".
-  std::vector<Element> elements;
-  std::string format;
-  int line_no = 0;
+
+ private:
+  [[noreturn]] void fail(int line, int col, const std::string& what) const {
+    throw InputError(shown_ + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
+  }
+
   // Text lines hold no control characters but tabs: Assimp 5.2 crashes, leaks or loops forever
   // on NULs and vertical tabs in a header or an ASCII body, which the checks below would pass
   // (strtod stops at a NUL; >> splits at a vertical tab). Found with tests/fuzz/fuzz_ply.cpp.
-  auto refuse_control_characters = [&](const std::string& text, int at_line, const char* part) {
+  void refuse_control_characters(const std::string& text, int at_line, const char* part) const {
     for (size_t i = 0; i < text.size(); ++i) {
       const unsigned char c = static_cast<unsigned char>(text[i]);
       if ((c < 0x20 && c != '\t') || c == 0x7f) {
@@ -66,73 +67,77 @@ void check_ply(const std::filesystem::path& file, const std::string& shown) {
         fail(at_line, int(i + 1), std::string("a control character (byte ") + hex + ") in the PLY " + part);
       }
     }
-  };
-  size_t header_bytes = 0;
-  bool ended = false;
-  std::string line;
-  while (!ended && std::getline(in, line)) {
-    ++line_no;
-    header_bytes += line.size() + 1;
-    if (header_bytes > kMaxHeader) fail(line_no, 1, "the PLY header has no end_header in its first 64 KiB");
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    refuse_control_characters(line, line_no, "header");
-    std::istringstream words(line);
-    std::string w;
-    words >> w;
-    if (line_no == 1) {
-      if (w != "ply") fail(1, 1, "not a PLY file (the first line must be \"ply\")");
-      continue;
-    }
-    if (w.empty() || w == "comment" || w == "obj_info") continue;
-    if (w == "format") {
-      std::string version;
-      words >> format >> version;
-      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
-        fail(line_no, 8, "unknown PLY format \"" + format + "\" (ascii, binary_little_endian, binary_big_endian)");
-      if (version != "1.0") fail(line_no, 1, "unsupported PLY version \"" + version + "\" (1.0)");
-    } else if (w == "element") {
-      Element e;
-      e.line = line_no;
-      std::string count;
-      words >> e.name >> count;
-      char* end = nullptr;
-      e.count = std::strtoull(count.c_str(), &end, 10);
-      if (e.name.empty() || count.empty() || *end || count[0] == '-') fail(line_no, 1, "an element line is \"element <name> <count>\"");
-      elements.push_back(e);
-    } else if (w == "property") {
-      if (elements.empty()) fail(line_no, 1, "a property before any element");
-      Property p;
-      std::string t, name;
-      words >> t;
-      if (t == "list") {
-        p.list = true;
-        words >> p.count_type >> p.type >> name;
-        if (!scalar_size(p.count_type) || p.count_type == "float" || p.count_type == "double" || p.count_type == "float32" ||
-            p.count_type == "float64")
-          fail(line_no, 15, "a list's count type must be an integer type, got \"" + p.count_type + "\"");
-      } else {
-        p.type = t;
-        words >> name;
-      }
-      if (!scalar_size(p.type)) fail(line_no, 10, "unknown PLY type \"" + p.type + "\"");
-      if (name.empty()) fail(line_no, 1, "a property needs a name");
-      elements.back().props.push_back(p);
-    } else if (w == "end_header") {
-      ended = true;
-    } else {
-      fail(line_no, 1, "unknown PLY header keyword \"" + w + "\"");
-    }
   }
-  if (!ended) fail(line_no, 1, "the PLY header has no end_header");
-  if (format.empty()) fail(line_no, 1, "the PLY header has no format line");
 
-  if (format == "ascii") {
-    // One line per element instance; a list's count says how many values follow it.
+  // Header: lines up to "end_header".
+  void header() {
+    size_t header_bytes = 0;
+    bool ended = false;
+    std::string line;
+    while (!ended && std::getline(in_, line)) {
+      ++line_no;
+      header_bytes += line.size() + 1;
+      if (header_bytes > kMaxHeader) fail(line_no, 1, "the PLY header has no end_header in its first 64 KiB");
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      refuse_control_characters(line, line_no, "header");
+      std::istringstream words(line);
+      std::string w;
+      words >> w;
+      if (line_no == 1) {
+        if (w != "ply") fail(1, 1, "not a PLY file (the first line must be \"ply\")");
+        continue;
+      }
+      if (w.empty() || w == "comment" || w == "obj_info") continue;
+      if (w == "format") {
+        std::string version;
+        words >> format >> version;
+        if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+          fail(line_no, 8, "unknown PLY format \"" + format + "\" (ascii, binary_little_endian, binary_big_endian)");
+        if (version != "1.0") fail(line_no, 1, "unsupported PLY version \"" + version + "\" (1.0)");
+      } else if (w == "element") {
+        Element e;
+        e.line = line_no;
+        std::string count;
+        words >> e.name >> count;
+        char* end = nullptr;
+        e.count = std::strtoull(count.c_str(), &end, 10);
+        if (e.name.empty() || count.empty() || *end || count[0] == '-') fail(line_no, 1, "an element line is \"element <name> <count>\"");
+        elements.push_back(e);
+      } else if (w == "property") {
+        if (elements.empty()) fail(line_no, 1, "a property before any element");
+        Property p;
+        std::string t, name;
+        words >> t;
+        if (t == "list") {
+          p.list = true;
+          words >> p.count_type >> p.type >> name;
+          if (!scalar_size(p.count_type) || p.count_type == "float" || p.count_type == "double" || p.count_type == "float32" ||
+              p.count_type == "float64")
+            fail(line_no, 15, "a list's count type must be an integer type, got \"" + p.count_type + "\"");
+        } else {
+          p.type = t;
+          words >> name;
+        }
+        if (!scalar_size(p.type)) fail(line_no, 10, "unknown PLY type \"" + p.type + "\"");
+        if (name.empty()) fail(line_no, 1, "a property needs a name");
+        elements.back().props.push_back(p);
+      } else if (w == "end_header") {
+        ended = true;
+      } else {
+        fail(line_no, 1, "unknown PLY header keyword \"" + w + "\"");
+      }
+    }
+    if (!ended) fail(line_no, 1, "the PLY header has no end_header");
+    if (format.empty()) fail(line_no, 1, "the PLY header has no format line");
+  }
+
+  // One line per element instance; a list's count says how many values follow it.
+  void ascii_body() {
     for (const Element& e : elements)
       for (uint64_t i = 0; i < e.count; ++i) {
         std::string body;
         do {
-          if (!std::getline(in, body))
+          if (!std::getline(in_, body))
             fail(line_no + 1, 1, "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) + " (truncated)");
           ++line_no;
           if (!body.empty() && body.back() == '\r') body.pop_back();
@@ -165,55 +170,75 @@ void check_ply(const std::filesystem::path& file, const std::string& shown) {
         std::string extra;
         if (v >> extra) fail(line_no, int(body.size() - extra.size() + 1), e.name + " " + std::to_string(i) + " has more values than its properties");
       }
-    return;
   }
+
   // Binary: walk the body, reading only the list counts.
-  const bool swap = (format == "binary_big_endian") != (std::endian::native == std::endian::big);
-  const uint64_t body_start = uint64_t(in.tellg());
-  in.seekg(0, std::ios::end);
-  const uint64_t size = uint64_t(in.tellg());
-  uint64_t pos = body_start;
-  auto truncated = [&](const Element& e, uint64_t i) {
-    throw InputError(shown + ": byte " + std::to_string(size) + ": the body ends inside " + e.name + " " + std::to_string(i) +
-                     " of " + std::to_string(e.count) + " (truncated)");
-  };
-  for (const Element& e : elements) {
-    bool fixed = true;
-    uint64_t stride = 0;
-    for (const Property& p : e.props) {
-      if (p.list) fixed = false;
-      stride += uint64_t(scalar_size(p.type));
-    }
-    if (fixed) {
-      if (stride && e.count > (size - pos) / stride) truncated(e, (size - pos) / stride);
-      pos += stride * e.count;
-      continue;
-    }
-    for (uint64_t i = 0; i < e.count; ++i)
+  void binary_body() {
+    const bool swap = (format == "binary_big_endian") != (std::endian::native == std::endian::big);
+    const uint64_t body_start = uint64_t(in_.tellg());
+    in_.seekg(0, std::ios::end);
+    const uint64_t size = uint64_t(in_.tellg());
+    uint64_t pos = body_start;
+    auto truncated = [&](const Element& e, uint64_t i) {
+      throw InputError(shown_ + ": byte " + std::to_string(size) + ": the body ends inside " + e.name + " " + std::to_string(i) +
+                       " of " + std::to_string(e.count) + " (truncated)");
+    };
+    for (const Element& e : elements) {
+      bool fixed = true;
+      uint64_t stride = 0;
       for (const Property& p : e.props) {
-        const int s = scalar_size(p.type);
-        if (!p.list) {
-          if (pos + uint64_t(s) > size) truncated(e, i);
-          pos += uint64_t(s);
-          continue;
-        }
-        const int cs = scalar_size(p.count_type);
-        if (pos + uint64_t(cs) > size) truncated(e, i);
-        unsigned char b[8] = {};
-        in.seekg(std::streamoff(pos));
-        in.read(reinterpret_cast<char*>(b), cs);
-        if (swap) std::reverse(b, b + cs);
-        uint64_t n = 0;
-        std::memcpy(&n, b, size_t(cs));  // little-endian host: low bytes first
-        if ((p.count_type[0] != 'u') && cs < 8 && (b[cs - 1] & 0x80))
-          throw InputError(shown + ": byte " + std::to_string(pos) + ": " + e.name + " " + std::to_string(i) + " has a negative list count");
-        pos += uint64_t(cs);
-        if (n > (size - pos) / uint64_t(s)) truncated(e, i);
-        pos += n * uint64_t(s);
+        if (p.list) fixed = false;
+        stride += uint64_t(scalar_size(p.type));
       }
+      if (fixed) {
+        if (stride && e.count > (size - pos) / stride) truncated(e, (size - pos) / stride);
+        pos += stride * e.count;
+        continue;
+      }
+      for (uint64_t i = 0; i < e.count; ++i)
+        for (const Property& p : e.props) {
+          const int s = scalar_size(p.type);
+          if (!p.list) {
+            if (pos + uint64_t(s) > size) truncated(e, i);
+            pos += uint64_t(s);
+            continue;
+          }
+          const int cs = scalar_size(p.count_type);
+          if (pos + uint64_t(cs) > size) truncated(e, i);
+          unsigned char b[8] = {};
+          in_.seekg(std::streamoff(pos));
+          in_.read(reinterpret_cast<char*>(b), cs);
+          if (swap) std::reverse(b, b + cs);
+          uint64_t n = 0;
+          std::memcpy(&n, b, size_t(cs));  // little-endian host: low bytes first
+          if ((p.count_type[0] != 'u') && cs < 8 && (b[cs - 1] & 0x80))
+            throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + e.name + " " + std::to_string(i) + " has a negative list count");
+          pos += uint64_t(cs);
+          if (n > (size - pos) / uint64_t(s)) truncated(e, i);
+          pos += n * uint64_t(s);
+        }
   }
   if (pos != size)
-    throw InputError(shown + ": byte " + std::to_string(pos) + ": " + std::to_string(size - pos) + " bytes after the last element");
+    throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + std::to_string(size - pos) + " bytes after the last element");
+  }
+
+  std::ifstream& in_;
+  const std::string& shown_;
+  std::vector<Element> elements;
+  std::string format;
+  int line_no = 0;
+};
+
+}  // namespace
+
+void check_ply(const std::filesystem::path& file, const std::string& shown) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    std::string reason;
+    can_open_file(file, reason);
+    throw InputError(shown + ": cannot open: " + reason);
+  }
+  PlyChecker(in, shown).run();
 }
 
 }  // namespace pdrt

@@ -1,0 +1,250 @@
+#include "renderer/scene/pbrt/pbrt_build_context.h"
+
+#include "renderer/scene/pbrt/loop_subdivision.h"
+#include "renderer/scene/pbrt/ply_mesh.h"
+#include "sampling/core/errors.h"
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+
+// pbrt-v4's shapes as pdrt's: spheres; triangle, bilinear, PLY and Loop-subdivided meshes;
+// disks as triangle fans; with the current material or area light, in the scene or in the
+// object being defined.
+
+namespace pdrt {
+namespace {
+
+// A polygon mesh before it becomes pdrt's: positions, normals, uvs and triangle indices.
+struct MeshInput {
+  std::vector<Vec3> P, N;
+  std::vector<std::array<float, 2>> uvs;
+  std::vector<int64_t> idx;
+};
+
+void sphere(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
+  const PbrtParams& ps = d.params;
+  s.kind = ShapeDesc::Kind::Sphere;
+  s.radius = b.positive(ps, "radius", 1);
+  const double zmin = ps.get_float("zmin", -s.radius), zmax = ps.get_float("zmax", s.radius), phimax = ps.get_float("phimax", 360);
+  if (zmin > -s.radius || zmax < s.radius || phimax < 360) b.note(d.at, "partial spheres are not supported (the whole sphere is used)");
+  if (flip && b.gs.cur.area) b.note(d.at, "an inward-facing emitting sphere is not supported (it emits outward)");
+}
+
+// Shape "plymesh": the file (relative to the including file) through ply_mesh.h.
+MeshInput ply_input(PbrtBuild& b, const PbrtDirective& d) {
+  const PbrtParams& ps = d.params;
+  std::optional<std::string> name = ps.find_string("filename");
+  if (!name) b.fail(d.at, "Shape \"plymesh\" needs \"string filename\"");
+  const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+  const std::filesystem::path file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
+  PlyMesh ply;
+  try {
+    ply = load_ply(file, file.string());
+  } catch (const InputError& e) {
+    b.fail(ps.find("filename")->at, e.what());
+  }
+  if (ply.dropped_faces) b.note(ps.find("filename")->at, std::to_string(ply.dropped_faces) + " points or lines in the PLY file are not surfaces (skipped)");
+  MeshInput m;
+  m.P = std::move(ply.mesh.positions);
+  m.N = std::move(ply.mesh.normals);
+  m.uvs = std::move(ply.uvs);
+  m.idx.assign(ply.mesh.indices.begin(), ply.mesh.indices.end());
+  for (const char* k : {"displacement", "edgelength"})
+    if (const PbrtParam* p = ps.find(k)) {
+      p->used = true;
+      b.note(p->at, std::string("\"") + k + "\" is not supported (ignored)");
+    }
+  return m;
+}
+
+// Shape "bilinearmesh": vertices p00 p10 p01 p11 per patch, two triangles each (exact for
+// planar patches).
+void split_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput& m) {
+  std::vector<int64_t>& idx = m.idx;
+  if (idx.empty() && m.P.size() == 4) idx = {0, 1, 2, 3};
+  if (idx.size() % 4) b.fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
+  std::vector<int64_t> tri;
+  for (size_t i = 0; i < idx.size(); i += 4) {
+    // Vertices p00 p10 p01 p11: two triangles (exact for planar patches).
+    tri.insert(tri.end(), {idx[i], idx[i + 1], idx[i + 3], idx[i], idx[i + 3], idx[i + 2]});
+  }
+  idx = tri;
+  b.note(d.at, "bilinear patches are split into two triangles each (exact only where they are planar)");
+}
+
+// Shape "loopsubdiv": `levels` Loop refinements to the limit surface (loop_subdivision.h).
+void subdivide(PbrtBuild& b, const PbrtDirective& d, MeshInput& in) {
+  const PbrtParams& ps = d.params;
+  const int64_t levels = ps.get_int("levels", 3);
+  if (levels < 0 || levels > 12) b.fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
+  MeshData m;
+  try {
+    m = loop_subdivide(in.P, std::vector<uint32_t>(in.idx.begin(), in.idx.end()), int(levels));
+  } catch (const InputError& e) {
+    b.fail(d.at, std::string("Shape \"loopsubdiv\": ") + e.what());
+  }
+  in.P = std::move(m.positions), in.N = std::move(m.normals);
+  in.idx.assign(m.indices.begin(), m.indices.end());
+}
+
+// The triangles pdrt keeps, degenerate ones dropped. pbrt's geometric normal follows the
+// shading normals when there are some, else the winding, reversed by ReverseOrientation and
+// by a handedness-swapping transform.
+void orient_triangles(const std::vector<int64_t>& idx, bool flip, bool swaps, MeshData& mesh) {
+  mesh.indices.reserve(idx.size());
+  for (size_t i = 0; i < idx.size(); i += 3) {
+    uint32_t a = uint32_t(idx[i]), b = uint32_t(idx[i + 1]), c = uint32_t(idx[i + 2]);
+    const Vec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
+    const Vec3 ng = cross(pb - pa, pc - pa);
+    if (!(length(ng) > 0)) continue;  // degenerate
+    bool swap = flip;
+    if (!mesh.normals.empty()) swap = (dot(ng, mesh.normals[a] + mesh.normals[b] + mesh.normals[c]) < 0) != swaps;
+    if (swap) std::swap(b, c);
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+  }
+}
+
+// trianglemesh, loopsubdiv, bilinearmesh, plymesh. False when only degenerate triangles remain
+// (reported).
+bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
+  const PbrtParams& ps = d.params;
+  const std::string& t = d.strings[0];
+  MeshInput m;
+  if (t == "plymesh") {
+    m = ply_input(b, d);
+  } else {
+    m.P = ps.point3s("P");
+    m.idx = ps.ints("indices");
+    if (t != "loopsubdiv") m.N = ps.normal3s("N");
+  }
+  std::vector<Vec3>& P = m.P;
+  std::vector<int64_t>& idx = m.idx;
+  if (P.empty()) b.fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
+  if (t == "trianglemesh" && idx.empty()) {
+    if (P.size() != 3) b.fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
+    idx = {0, 1, 2};
+  }
+  if (t == "bilinearmesh") split_bilinear_patches(b, d, m);
+  if (idx.size() % 3) b.fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
+  for (int64_t i : idx)
+    if (i < 0 || uint64_t(i) >= P.size())
+      b.fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
+  for (const Vec3& p : P)
+    if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+  if (t == "loopsubdiv") subdivide(b, d, m);
+  const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
+  if (!m.N.empty() && m.N.size() != P.size())
+    b.fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.N.size()));
+  for (Vec3& n : m.N)
+    if (!(length(n) > 0) || !is_finite(n)) b.fail(n_at, "\"N\" holds a zero or non-finite normal");
+  if (t != "plymesh" && t != "loopsubdiv") m.uvs = ps.point2s("uv");
+  if (!m.uvs.empty() && m.uvs.size() != P.size())
+    b.fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.uvs.size()));
+  for (const char* k : {"S", "faceIndices"})
+    if (const PbrtParam* p = ps.find(k)) p->used = true;
+  s.mesh.positions = std::move(P);
+  s.mesh.normals = std::move(m.N);
+  s.mesh.uvs = std::move(m.uvs);
+  orient_triangles(idx, flip, b.gs.cur.ctm.t[0].det3() < 0, s.mesh);
+  if (s.mesh.indices.empty()) {
+    b.note(d.at, "the mesh has only degenerate triangles (skipped)");
+    return false;
+  }
+  return true;
+}
+
+// Shape "disk": a fan (or ring) of 256 triangles; the polygon's area is 0.01 % below the disk's.
+void disk(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
+  const PbrtParams& ps = d.params;
+  const double h = ps.get_float("height", 0), r = b.positive(ps, "radius", 1), ri = b.positive(ps, "innerradius", 0, true);
+  if (ps.get_float("phimax", 360) < 360) b.note(d.at, "partial disks are not supported (the whole disk is used)");
+  if (!(ri < r)) b.fail(d.at, "\"innerradius\" must be < \"radius\"");
+  const int n = 256;
+  for (int i = 0; i < n; ++i) {
+    const double phi = 2 * kPbrtPi * i / n;
+    s.mesh.positions.push_back({float(r * std::cos(phi)), float(r * std::sin(phi)), float(h)});
+    if (ri > 0) s.mesh.positions.push_back({float(ri * std::cos(phi)), float(ri * std::sin(phi)), float(h)});
+  }
+  if (ri == 0) s.mesh.positions.push_back({0, 0, float(h)});
+  for (uint32_t i = 0; i < uint32_t(n); ++i) {
+    const uint32_t j = (i + 1) % n;
+    // Counter-clockwise seen from +z: pbrt's disk faces +z.
+    if (ri == 0) {
+      s.mesh.indices.insert(s.mesh.indices.end(), {uint32_t(n), i, j});
+    } else {
+      s.mesh.indices.insert(s.mesh.indices.end(), {2 * i + 1, 2 * i, 2 * j, 2 * i + 1, 2 * j, 2 * j + 1});
+    }
+  }
+  if (flip)
+    for (size_t i = 0; i < s.mesh.indices.size(); i += 3) std::swap(s.mesh.indices[i + 1], s.mesh.indices[i + 2]);
+}
+
+// The current area light as an emitter material of its own, else the current material.
+void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
+  const PbrtAttributes& cur = b.gs.cur;
+  if (cur.area && !b.gs.object) {
+    Material m;
+    m.name = "area light at " + cur.area->at.str();
+    m.type = MaterialType::Emitter;
+    m.radiance = cur.area->radiance;
+    m.two_sided = cur.area->two_sided;
+    b.out.scene.materials.push_back(m);
+    s.material = int(b.out.scene.materials.size()) - 1;
+  } else {
+    if (cur.area && b.gs.object) b.note(d.at, "area lights inside object definitions are not supported (no emission)");
+    s.material = b.current_material();
+  }
+}
+
+// Into the object being defined, or into the scene under the CTM.
+void add_shape(PbrtBuild& b, const PbrtDirective& d, ShapeDesc s) {
+  if (b.gs.object) {
+    // pbrt-v4 keeps the whole CTM at the shape's definition (the CTM at ObjectBegin
+    // included) as the shape's transform within the object; instances apply theirs on top.
+    if (!b.gs.cur.ctm.t[0].affine()) b.fail(d.at, "the current transform is projective; shapes and lights need an affine one");
+    if (b.gs.moving()) b.note(d.at, "a moving shape inside an object definition is not supported (its start transform is used)");
+    s.transform = b.gs.cur.ctm.t[0].to_affine();
+    s.where = d.at.str();
+    b.out.scene.prototypes[size_t(b.gs.objects[*b.gs.object])].shapes.push_back(std::move(s));
+    return;
+  }
+  b.place(d.at, &s.transform, &s.motion);
+  if (!s.motion.empty() && !(b.gs.times[0] >= b.out.scene.camera.shutter_open && b.gs.times[1] <= b.out.scene.camera.shutter_close)) {
+    b.note(d.at, "motion keys at TransformTimes outside the camera's shutter (the shape's motion is clamped to the shutter)");
+  }
+  b.out.scene.shapes.push_back(std::move(s));
+}
+
+}  // namespace
+
+void translate_pbrt_shape(PbrtBuild& b, const PbrtDirective& d) {
+  const PbrtParams& ps = d.params;
+  const std::string& t = d.strings[0];
+  if (b.gs.cur.interface) {
+    for (const PbrtParam& p : ps.list) p.used = true;
+    return;  // an interface bounds media only: nothing to see
+  }
+  if (const PbrtParam* p = ps.find("alpha")) {
+    p->used = true;
+    b.note(p->at, "\"alpha\" cut-outs are not supported (the shape is opaque)");
+  }
+  ShapeDesc s;
+  s.where = d.at.str();
+  const bool flip = b.gs.cur.reverse != (b.gs.cur.ctm.t[0].det3() < 0);
+  if (t == "sphere") {
+    sphere(b, d, flip, s);
+  } else if (t == "trianglemesh" || t == "loopsubdiv" || t == "bilinearmesh" || t == "plymesh") {
+    if (!mesh(b, d, flip, s)) return;
+  } else if (t == "disk") {
+    disk(b, d, flip, s);
+  } else {
+    b.note(d.at, "Shape \"" + t + "\" is not supported (skipped)");
+    for (const PbrtParam& p : ps.list) p.used = true;
+    return;
+  }
+  attach_material(b, d, s);
+  add_shape(b, d, std::move(s));
+}
+
+}  // namespace pdrt

@@ -1,5 +1,7 @@
 #include "renderer/render/camera_sample.h"
 
+#include "renderer/render/sample_dimensions.h"
+
 #include "sampling/core/rng.h"
 
 namespace pdrt {
@@ -21,7 +23,7 @@ bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index
                        CameraSample* out) {
   ps.start_pixel_sample(x, y, index);
   const Filter& filter = rule.filter;
-  const Vec2 u = ps.get_2d(Family::Pixel);
+  const Vec2 u = ps.get_2d(Family::Pixel, kSaltFilmPoint);
   switch (rule.mode) {
     case Reconstruction::Importance: {
       FilterSample fs = filter.sample(u);
@@ -53,8 +55,8 @@ bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index
       break;
     }
   }
-  out->time = float(ps.get_1d(Family::Time, 0));
-  out->lens = ps.get_2d(Family::Lens);
+  out->time = float(ps.get_1d(Family::Time, kSaltShutterTime));
+  out->lens = ps.get_2d(Family::Lens, kSaltLensPoint);
   return true;
 }
 

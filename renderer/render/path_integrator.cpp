@@ -88,7 +88,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (!bsdf.is_delta() && !lights_.empty()) {
       LightSample ls;
       float u_pick = float(ps.get_1d(Family::Time, salt_light_pick(depth)));
-      if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, depth), &ls) && !is_black(ls.radiance)) {
+      if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, salt_light_point(depth)), &ls) && !is_black(ls.radiance)) {
         Vec3 wi = frame.to_local(ls.wi);
         Vec3 f = bsdf.eval(wo, wi);
         // Light leaking through the geometric surface is rejected (shading normals).
@@ -110,7 +110,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     // BSDF sampling (Cook's gloss dimension).
     BsdfSample bs;
     float uc = float(ps.get_1d(Family::Time, salt_lobe(depth)));
-    auto u = ps.get_2d(Family::Gloss, depth);
+    auto u = ps.get_2d(Family::Gloss, salt_bsdf_direction(depth));
     if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs)) break;
     Vec3 wi_world = frame.to_world(bs.wi);
     // Reflection must leave on the front of the geometric surface, transmission behind it

@@ -4,12 +4,12 @@
 // from the gloss family, multiple importance sampling (power heuristic) between them, and
 // Russian roulette from `rr_depth`. With `regularize`, vertices after the first non-delta
 // scattering shade with regularized materials (bsdf.h). Every random decision comes from the
-// replayable sampler: 2-D values from the light and gloss families with the vertex index as the bounce salt,
-// 1-D decisions (which light, which lobe, roulette) from salted time-family streams.
+// replayable sampler, from the stream sample_dimensions.h names for it.
 #include "renderer/render/bsdf.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/light_sampler.h"
 #include "renderer/render/material_set.h"
+#include "renderer/render/sample_dimensions.h"
 #include "sampling/samplers/sampler.h"
 
 #include <vector>
@@ -40,11 +40,5 @@ class PathIntegrator {
   const MaterialSet& materials_;
   IntegratorDesc settings_;
 };
-
-// Sampler salts of the 1-D decisions at path vertex `depth` (time family, bounce >= 1;
-// bounce 0 of the time family is the shutter time).
-inline int salt_light_pick(int depth) { return 1 + 3 * depth; }
-inline int salt_lobe(int depth) { return 2 + 3 * depth; }
-inline int salt_roulette(int depth) { return 3 + 3 * depth; }
 
 }  // namespace pdrt

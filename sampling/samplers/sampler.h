@@ -164,8 +164,11 @@ class PixelSampleState {
     return s_->get_2d(px_, py_, index_, f, bounce);
   }
 
+  // Bounce salts cached per family (renderer/render/sample_dimensions.h ties path depth to it).
+  static constexpr int kCachedSalts = 64;
+
  private:
-  static constexpr int kSlots = 64;  // bounce salts cached per family: max_depth 16 uses 49 (deeper ones ask the sampler)
+  static constexpr int kSlots = kCachedSalts;
   const PreparedStream* prepared(Family f, int bounce) const {
     if (unsigned(bounce) >= unsigned(kSlots)) return nullptr;
     const int k = int(f) * kSlots + bounce;

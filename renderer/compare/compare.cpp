@@ -9,7 +9,7 @@
 #include "renderer/compare/image_metrics.h"
 #include "renderer/compare/seed_statistics.h"
 #include "sampling/analysis/stream_analysis.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/samplers/sampler.h"

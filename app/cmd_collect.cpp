@@ -4,7 +4,7 @@
 #include "app/compare_request.h"
 #include "app/python_plots.h"
 #include "renderer/compare/compare_plan.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/install_paths.h"
 

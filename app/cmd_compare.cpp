@@ -5,7 +5,7 @@
 #include "app/output_path.h"
 #include "app/python_plots.h"
 #include "renderer/compare/compare_plan.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"

@@ -5,7 +5,7 @@
 #include "app/commands.h"
 #include "app/numeric_option.h"
 #include "renderer/compare/image_metrics.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "sampling/core/errors.h"
 
 #include <cstdio>

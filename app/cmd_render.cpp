@@ -10,7 +10,7 @@
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/warnings.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
 #include "renderer/scene/scene_loader.h"

@@ -5,7 +5,7 @@
 #include "app/numeric_option.h"
 #include "distributed/mpi_process_group.h"
 #include "renderer/compare/compare_plan.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/install_paths.h"

@@ -1,6 +1,6 @@
 #pragma once
 // The procedural HDR sky pdrt generates at build time (no image can be downloaded): an
-// equirectangular image (render/equirect.h) of linear RGB radiance with a blue gradient from
+// equirectangular image (scene/equirect.h) of linear RGB radiance with a blue gradient from
 // zenith to a pale horizon, an aureole around the sun, a small, very bright sun disc with
 // limb darkening, and a dim ground below the horizon. An analytic stand-in for a measured
 // sky, not a physical model: the zenith/horizon blend follows the exponential falloff of

@@ -2,7 +2,7 @@
 // through the image module, e.g. build/assets/sky.exr.
 //   sky_gen OUT.exr
 #include "renderer/assetgen/procedural_sky.h"
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 
 #include <cstdio>
 #include <exception>

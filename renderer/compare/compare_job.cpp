@@ -2,7 +2,7 @@
 
 #include "renderer/compare/seed_statistics.h"
 #include "renderer/render/adaptive_metric.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/core/cache_dir.h"

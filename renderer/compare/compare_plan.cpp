@@ -1,6 +1,6 @@
 #include "renderer/compare/compare_plan.h"
 
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/output_directory.h"

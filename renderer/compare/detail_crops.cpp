@@ -1,6 +1,6 @@
 #include "renderer/compare/detail_crops.h"
 
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "renderer/compare/report_context.h"
 
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/core/errors.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // When a pixel of an adaptive render has converged: the metrics of `sampler.adaptive.metric`,
-// their default thresholds, and the `variance` estimators they read (docs/renderer.md).
+// their default thresholds, and the `variance` estimators they read (docs/renderer.md). The
+// accepted names are scene_desc.h's, beside AdaptiveDesc.
 #include "renderer/render/film.h"
 #include "renderer/scene/scene_desc.h"
 
@@ -8,12 +9,6 @@
 #include <string>
 
 namespace pdrt {
-
-// The accepted names, in the order messages list them.
-inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-per-sample", "relative-error",
-                                                                        "contrast"};
-inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
-inline constexpr std::initializer_list<const char*> kAdaptiveDecisions = {"shared", "split"};
 
 // Throws UsageError "`flag` must be one of a, b, c, got "value"" unless `value` is a name.
 void require_adaptive_choice(const std::string& flag, const std::string& value,

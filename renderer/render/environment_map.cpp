@@ -1,6 +1,6 @@
 #include "renderer/render/environment_map.h"
 
-#include "renderer/render/equirect.h"
+#include "renderer/scene/equirect.h"
 
 #include <algorithm>
 #include <cmath>

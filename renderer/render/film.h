@@ -2,6 +2,7 @@
 // Per-pixel accumulation of filtered samples and the AOVs (sample count, variance of the
 // mean, albedo, normal, depth). A pixel is only ever written by the thread rendering it, so
 // no locks are needed and results do not depend on scheduling.
+#include "renderer/image/image.h"
 #include "renderer/scene/vec3.h"
 
 #include <cstdint>
@@ -36,17 +37,6 @@ struct PixelAccum {
   double half_variance_of_mean() const;
   // Mitchell (1987) contrast (max - min) / (max + min) of the samples, per channel.
   double contrast(int channel) const;
-};
-
-// The finished image: linear RGB plus AOV planes, row-major from the top-left.
-struct Image {
-  int width = 0, height = 0;
-  std::vector<float> rgb;       // 3 per pixel
-  std::vector<float> samples;   // 1 per pixel
-  std::vector<float> variance;  // 1 per pixel
-  std::vector<float> albedo;    // 3 per pixel
-  std::vector<float> normal;    // 3 per pixel
-  std::vector<float> depth;     // 1 per pixel (infinity where nothing was hit)
 };
 
 class Film {

@@ -1,6 +1,6 @@
 #include "renderer/render/texture_set.h"
 
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 #include "sampling/core/cache_dir.h"
 #include "sampling/core/errors.h"
 

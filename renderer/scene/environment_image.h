@@ -4,7 +4,7 @@
 // The channels and the sRGB decoding are read_linear_rgb's (image_module.h), as for every
 // image pdrt reads.
 // Finding the file: the scene's directory first, then the generated assets (asset_path.h).
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 
 #include <filesystem>
 #include <string>

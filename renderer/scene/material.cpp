@@ -15,7 +15,7 @@ namespace {
 //               0.4509, 0.5209, 0.5486, 0.6168 and 0.6595 um.
 //   Al          A. D. Rakic, Appl. Opt. 34, 4755 (1995), entries at 0.4428, 0.4769, 0.5166,
 //               0.5636, 0.6199 and 0.6523 um.
-// tests/renderer/test_bsdf.cpp checks the reflectance against those entries.
+// tests/renderer/render/test_bsdf.cpp checks the reflectance against those entries.
 constexpr NamedMetal kMetals[] = {
     {"Ag", {0.0522f, 0.0596f, 0.0400f}, {4.4094f, 3.5974f, 2.6484f}},
     {"Al", {1.5580f, 1.0152f, 0.6332f}, {7.7124f, 6.6273f, 5.4544f}},

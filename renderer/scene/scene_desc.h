@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,13 @@ struct FilmDesc {
   std::array<float, 4> crop_window{0, 1, 0, 1};
 };
 
+// The accepted names of AdaptiveDesc's metric, variance and decision, in the order messages
+// list them (render/adaptive_metric.h gives them their meaning).
+inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-per-sample", "relative-error",
+                                                                        "contrast"};
+inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
+inline constexpr std::initializer_list<const char*> kAdaptiveDecisions = {"shared", "split"};
+
 struct AdaptiveDesc {
   bool enabled = false;
   int min_spp = 4, max_spp = 256;
@@ -144,7 +152,7 @@ struct InstanceDesc {
 };
 
 // The environment light (docs/scene-format.md, "environment"): a constant radiance, or an
-// equirectangular image (renderer/render/equirect.h: row 0 is +y, the image centre -z)
+// equirectangular image (renderer/scene/equirect.h: row 0 is +y, the image centre -z)
 // times `scale`, turned by rotation_deg about +y.
 struct EnvironmentDesc {
   Vec3 radiance{0.0f};              // constant radiance from every direction (no image)

@@ -2,7 +2,6 @@
 
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
 
-#include "renderer/render/adaptive_metric.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
 #include "sampling/core/warnings.h"

@@ -2,7 +2,7 @@
 
 #include "sampling/core/errors.h"
 #include "sampling/generators/generator.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "sampling/analysis/radial_spectrum.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "sampling/analysis/max_empty_ball.h"
 
 #include "sampling/core/distance.h"
-#include "sampling/analysis/kd_tree.h"
+#include "sampling/measures/kd_tree.h"
 #include "sampling/core/rng.h"
 
 #include <tbb/blocked_range.h>

@@ -1,6 +1,6 @@
 #include "sampling/analysis/stream_analysis.h"
 
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "sampling/analysis/periodogram.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "sampling/analysis/table_analysis.h"
 
 #include "sampling/analysis/discrepancy.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 
 #include <algorithm>
 #include <limits>

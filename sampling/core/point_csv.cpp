@@ -4,7 +4,7 @@
 #include "sampling/core/errors.h"
 #include "sampling/core/text_writer.h"
 #include "sampling/core/input_file.h"
-#include "sampling/generators/generator.h"
+#include "sampling/core/point_set.h"
 
 #include <charconv>
 #include <cmath>

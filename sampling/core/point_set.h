@@ -6,6 +6,9 @@
 
 namespace pdrt {
 
+// The most coordinates a point has (generators, point CSV files).
+inline constexpr int kMaxDim = 8;
+
 struct PointSet {
   int dim = 2;
   bool periodic = false;

@@ -14,7 +14,6 @@
 
 namespace pdrt {
 
-inline constexpr int kMaxDim = 8;
 inline constexpr IntRange kLloydIterationsRange{0, 10000};
 inline constexpr int64_t kOwenPoissonMaxCount = 65536;  // owen-pd: 2^16 Sobol points
 

@@ -1,7 +1,7 @@
 // `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
 #include "tests/support/cli_runner.h"
 #include "tests/support/process_probe.h"
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 #include "sampling/samplers/sampler.h"
 
 #include <OpenImageIO/imageio.h>

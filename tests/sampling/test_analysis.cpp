@@ -6,7 +6,7 @@
 #include "sampling/generators/generator.h"
 #include "sampling/analysis/incomplete_gamma.h"
 #include "sampling/analysis/max_empty_ball.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "sampling/analysis/periodogram.h"
 #include "sampling/analysis/radial_spectrum.h"
 #include "sampling/core/rng.h"

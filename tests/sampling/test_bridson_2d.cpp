@@ -2,7 +2,7 @@
 // once the radius is below 0.085, i.e. beyond ~100 points, so the generic tests with a few
 // hundred points barely reach it. Here it places tens of thousands.
 #include "sampling/generators/generator.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "tests/support/point_checks.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Properties every generator promises: domain, minimum distance (brute force), determinism.
 #include "sampling/generators/generator.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "tests/support/point_checks.h"
 #include "sampling/core/rng.h"
 

@@ -1,7 +1,7 @@
 // `owen-pd`, Owen-scrambled Sobol with the scramble annealed for Poisson-disk prefixes
 // (issue 16 item 2; study: stratified-pd.md "owen-opt"): strict (0,m,2)-nets at every power
 // of two, and a worst prefix rho >= 0.35 (the study's bar for this family).
-#include "sampling/analysis/elementary_intervals.h"
+#include "sampling/measures/elementary_intervals.h"
 #include "sampling/core/errors.h"
 #include "sampling/generators/generator.h"
 #include "sampling/generators/owen_poisson_2d.h"

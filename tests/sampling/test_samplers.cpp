@@ -1,6 +1,6 @@
 // The replayable sampler interface: determinism, stratification, decorrelation.
 #include "sampling/samplers/sampler.h"
-#include "sampling/analysis/elementary_intervals.h"
+#include "sampling/measures/elementary_intervals.h"
 #include "sampling/analysis/stream_analysis.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/rng.h"

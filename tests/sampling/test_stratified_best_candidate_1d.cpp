@@ -1,6 +1,6 @@
 // `stratified-bc`, the 1-D progressive jitter with best-candidate placement (issue 16): exact
 // stratification of every power-of-two prefix, and a minimum distance far above jitter's.
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 #include "sampling/core/errors.h"
 #include "sampling/generators/generator.h"
 #include "sampling/generators/stratified_best_candidate_1d.h"

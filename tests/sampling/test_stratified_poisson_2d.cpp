@@ -1,7 +1,7 @@
 // `stratified-pd`, the "(0,2)-first" hierarchical Poisson-disk sequence (issue 16): the rho
 // floor on every prefix (brute force), the strata it keeps, and its (0,2) core.
-#include "sampling/analysis/elementary_intervals.h"
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/elementary_intervals.h"
+#include "sampling/measures/min_distance.h"
 #include "sampling/core/errors.h"
 #include "sampling/generators/generator.h"
 #include "sampling/generators/stratified_poisson_2d.h"

@@ -1,6 +1,6 @@
 #include "renderer/scene/pbrt/equal_area_octahedral.h"
 
-#include "renderer/render/equirect.h"
+#include "renderer/scene/equirect.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // map ("Fast Equal-Area Mapping of the (Hemi)Sphere using SIMD", 2008; pbrt-v4 §3.8.3). The
 // upper hemisphere (+z) fills the inner diamond, the lower one the four corners; every texel
 // covers the same solid angle. pdrt's environment light reads equirectangular images
-// (renderer/render/equirect.h), so the importer resamples.
+// (renderer/scene/equirect.h), so the importer resamples.
 #include "renderer/scene/environment_image.h"
 #include "renderer/scene/vec3.h"
 

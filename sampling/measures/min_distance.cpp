@@ -1,7 +1,7 @@
-#include "sampling/analysis/min_distance.h"
+#include "sampling/measures/min_distance.h"
 
 #include "sampling/generators/generator.h"
-#include "sampling/analysis/kd_tree.h"
+#include "sampling/measures/kd_tree.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>

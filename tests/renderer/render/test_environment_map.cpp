@@ -4,7 +4,7 @@
 #include "renderer/render/embree_device.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/environment_map.h"
-#include "renderer/render/equirect.h"
+#include "renderer/scene/equirect.h"
 #include "renderer/render/light_sampler.h"
 #include "sampling/analysis/incomplete_gamma.h"
 #include "sampling/core/rng.h"

@@ -2,7 +2,7 @@
 // MIP filters preserve a constant, sRGB is decoded, the checkerboard's parity and its mean,
 // and a constant texture builds the very material its value does.
 #include "renderer/render/bsdf.h"
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 #include "renderer/render/texture_set.h"
 #include "sampling/core/errors.h"
 #include "tests/support/render_fixtures.h"

@@ -2,7 +2,7 @@
 // that the message names file:line:col and the JSON path. Expected positions are counted by
 // hand from the scene text in each test (lines from 1 at the opening brace, columns from 1).
 #include "sampling/core/errors.h"
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 #include "renderer/scene/json_locations.h"
 #include "renderer/scene/scene_loader.h"
 

@@ -1,9 +1,9 @@
-#include "renderer/render/image_output.h"
+#include "renderer/image/image_output.h"
 
 #include "sampling/core/atomic_file.h"
 #include "sampling/core/errors.h"
 
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 
 #include <algorithm>
 #include <cmath>

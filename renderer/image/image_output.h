@@ -3,7 +3,7 @@
 // all-or-nothing (temporary file, then rename).
 // EXR: linear float RGB plus the AOV channels; TIFF: linear float RGB; PNG/JPEG: sRGB 8-bit.
 // Every format carries the render's metadata as string attributes ("pdrt:sampler", ...).
-#include "renderer/render/film.h"
+#include "renderer/image/image.h"
 
 #include <filesystem>
 #include <string>

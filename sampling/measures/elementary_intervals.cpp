@@ -1,5 +1,5 @@
 // Elementary-interval checks by counting: one occupancy bitmap per interval shape.
-#include "sampling/analysis/elementary_intervals.h"
+#include "sampling/measures/elementary_intervals.h"
 
 #include "sampling/core/fixed_point.h"
 

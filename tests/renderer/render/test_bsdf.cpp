@@ -244,7 +244,7 @@ Estimate mean_weight(const Bsdf& bsdf, const Vec3& wo, uint64_t seed, int n, boo
 
 TEST(Bsdf, GlossyGgxNeverCreatesEnergy) {
   // White furnace: mean of weights (failed samples count 0) <= 1 + 3 sigma; with energy
-  // compensation + 3e-3, the albedo tables' accuracy (tests/renderer/test_ggx_albedo.cpp).
+  // compensation + 3e-3, the albedo tables' accuracy (tests/renderer/render/test_ggx_albedo.cpp).
   for (bool comp : {false, true})
     for (float r : {0.05f, 0.2f, 0.5f, 0.9f, 1.0f})
       for (float t : {0.0f, 45.0f, 70.0f, 85.0f, 89.5f}) {

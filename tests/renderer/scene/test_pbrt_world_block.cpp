@@ -3,8 +3,8 @@
 // equal-area octahedral image, resampled into pdrt's environment and written out by convert.
 #include "renderer/render/embree_device.h"
 #include "renderer/render/embree_scene.h"
-#include "renderer/render/equirect.h"
-#include "renderer/render/image_output.h"
+#include "renderer/scene/equirect.h"
+#include "renderer/image/image_output.h"
 #include "renderer/scene/pbrt/equal_area_octahedral.h"
 #include "renderer/scene/pbrt/pbrt_scene_builder.h"
 #include "renderer/scene/scene_loader.h"

@@ -1,4 +1,4 @@
-#include "renderer/render/image_module.h"
+#include "renderer/image/image_module.h"
 
 #include "sampling/core/errors.h"
 #include "sampling/core/install_paths.h"

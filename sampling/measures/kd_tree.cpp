@@ -1,4 +1,4 @@
-#include "sampling/analysis/kd_tree.h"
+#include "sampling/measures/kd_tree.h"
 
 #include "sampling/core/distance.h"
 

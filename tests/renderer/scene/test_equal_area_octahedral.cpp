@@ -3,7 +3,7 @@
 // the square is uniform on the sphere), and the resampling into pdrt's equirectangular image.
 #include "renderer/scene/pbrt/equal_area_octahedral.h"
 
-#include "renderer/render/equirect.h"
+#include "renderer/scene/equirect.h"
 #include "sampling/core/rng.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The generated sky (renderer/assetgen/): deterministic pixels and files, a plausible HDR sky.
 #include "renderer/assetgen/procedural_sky.h"
 #include "renderer/render/environment_map.h"
-#include "renderer/render/equirect.h"
+#include "renderer/scene/equirect.h"
 
 #include <gtest/gtest.h>
 

@@ -6,6 +6,7 @@
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/core/cache_dir.h"
+#include "sampling/core/derived_seeds.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/hash.h"
 #include "sampling/core/rng.h"
@@ -49,12 +50,12 @@ ReferenceSetup reference_setup(const SceneDesc& base, const CompareOptions& o) {
   SceneDesc& rs = r.scene;
   rs = base;
   rs.sampler.type = o.reference_sampler;
-  rs.sampler.seed = base.sampler.seed ^ 0x5eedc0ffee123457ull;
+  rs.sampler.seed = reference_seed(base.sampler.seed);
   rs.sampler.spp = o.reference_spp;
   rs.sampler.adaptive.enabled = false;
   rs.integrator.regularize = false;  // the reference is unbiased, so a regularized run shows its bias
   r.half_spp = {(o.reference_spp + 1) / 2, o.reference_spp / 2};
-  r.half_seed = {rs.sampler.seed, mix64(rs.sampler.seed ^ 0x68616c6662ull)};  // "halfb"
+  r.half_seed = {rs.sampler.seed, reference_half_seed(rs.sampler.seed)};
   const PixelRect crop = crop_pixels(base.film.crop_window, base.film.width, base.film.height);
   const int W = crop.width(), H = crop.height();
   std::string key_text = o.scene_content + "|" + std::to_string(W) + "x" + std::to_string(H) + "|" + rs.sampler.type +

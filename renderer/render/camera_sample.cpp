@@ -2,6 +2,7 @@
 
 #include "renderer/render/sample_dimensions.h"
 
+#include "sampling/core/derived_seeds.h"
 #include "sampling/core/rng.h"
 
 namespace pdrt {
@@ -12,7 +13,7 @@ namespace {
 
 // The rank's random part, independent of every sampler family: a hash of (seed, pixel, index).
 double rank_jitter(uint64_t seed, int x, int y, int64_t index) {
-  uint64_t h = hash_combine(hash_combine(mix64(seed ^ 0x72616e6b5f6a6974ull), uint64_t(uint32_t(x)) << 32 | uint32_t(y)),
+  uint64_t h = hash_combine(hash_combine(rank_jitter_seed(seed), uint64_t(uint32_t(x)) << 32 | uint32_t(y)),
                             uint64_t(index));
   return unit_from_u64(h);
 }

@@ -2,6 +2,7 @@
 #include "sampling/samplers/sampler.h"
 
 #include "sampling/core/bit_reverse.h"
+#include "sampling/core/derived_seeds.h"
 #include "sampling/core/errors.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/rng.h"
@@ -60,7 +61,7 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
 }
 
-uint64_t sample_seed_hash(uint64_t seed) { return mix64(seed ^ 0x70647274ull); }
+uint64_t sample_seed_hash(uint64_t seed) { return sample_hash_seed(seed); }
 
 uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce) {
   // One finaliser over odd-constant multiples of the coordinates: distinct inputs differ in

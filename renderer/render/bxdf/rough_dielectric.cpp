@@ -1,5 +1,6 @@
 #include "renderer/render/bxdf/rough_dielectric.h"
 
+#include "renderer/render/bxdf/ms_mixture.h"
 #include "renderer/render/fresnel.h"
 #include "renderer/render/ggx_albedo.h"
 #include "renderer/render/microfacet_ggx.h"
@@ -70,8 +71,7 @@ Vec3 RoughDielectricBxdf::eval(const Vec3& wo, const Vec3& wi) const {
 float RoughDielectricBxdf::pdf(const Vec3& wo, const Vec3& wi) const {
   float ss = pdf_ss(wo, wi);
   if (!ms_) return ss;
-  float p = ms_probability(wo);
-  return (1.0f - p) * ss + p * pdf_ms(wo, wi);
+  return ms_mixture_pdf(ms_probability(wo), ss, pdf_ms(wo, wi));
 }
 
 bool RoughDielectricBxdf::sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const {
@@ -195,20 +195,11 @@ bool RoughDielectricBxdf::sample_compensated(const Vec3& wo, float u1, float u2,
     out->wi = {r * std::cos(phi), r * std::sin(phi), side * z};
     out->transmission = transmit;
     out->eta = transmit ? (wo.z > 0 ? ior_ : 1.0f / ior_) : 1.0f;
-    // A mixture: the weight is the whole f cos over the whole pdf, so that MIS sees the same pdf.
-    out->pdf = pdf(wo, out->wi);
-    if (!(out->pdf > 0)) return false;
-    out->weight = eval(wo, out->wi) * (std::abs(out->wi.z) / out->pdf);
-    return true;
+    return ms_mixture_from_compensation(pdf(wo, out->wi), eval(wo, out->wi), out);
   }
   float v = std::min((uc - p) / (1.0f - p), one_minus);
   if (!sample_ss(wo, u1, u2, v, out)) return false;
-  // The single-scattering sampler gave f_ss cos / pdf_ss and pdf_ss: add the lobe to both.
-  float cos_i = std::abs(out->wi.z), pdf_ss = out->pdf;
-  out->pdf = (1.0f - p) * pdf_ss + p * pdf_ms(wo, out->wi);
-  if (!(out->pdf > 0)) return false;
-  out->weight = (out->weight * pdf_ss + eval_ms(wo, out->wi) * cos_i) / out->pdf;
-  return true;
+  return ms_mixture_from_single(p, pdf_ms(wo, out->wi), eval_ms(wo, out->wi), out);
 }
 
 }  // namespace pdrt

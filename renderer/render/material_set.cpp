@@ -5,7 +5,7 @@
 namespace pdrt {
 
 MaterialSet::MaterialSet(const EmbreeScene& scene, const TextureFootprint& footprint, bool regularize)
-    : scene_(scene), textures_(scene.desc()), footprint_(footprint) {
+    : scene_(scene), textures_(scene.desc()), footprint_(footprint), regularize_(regularize) {
   for (const Material& m : scene.desc().materials) {
     bsdfs_.emplace_back(m);
     if (regularize) regularized_.emplace_back(regularized(m));

@@ -19,7 +19,7 @@ class MaterialSet {
   // regularize: also build regularized(material) of each (IntegratorDesc::regularize).
   MaterialSet(const EmbreeScene& scene, const TextureFootprint& footprint, bool regularize);
   const TextureSet& textures() const { return textures_; }
-  bool regularizes() const { return !regularized_.empty() || bsdfs_.empty(); }
+  bool regularizes() const { return regularize_; }
 
   struct Shading {
     const Material* material = nullptr;  // the material shading the hit (a mix's chosen component)
@@ -40,6 +40,7 @@ class MaterialSet {
   // Textured materials build their Bsdf per hit from `bare_` (the material without name and
   // bindings, so that the copy allocates nothing) with the textures evaluated at the hit.
   std::vector<Material> bare_;
+  bool regularize_;
 };
 
 }  // namespace pdrt

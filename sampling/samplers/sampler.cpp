@@ -2,7 +2,6 @@
 #include "sampling/samplers/sampler.h"
 
 #include "sampling/core/bit_reverse.h"
-#include "sampling/core/derived_seeds.h"
 #include "sampling/core/errors.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/rng.h"
@@ -60,8 +59,6 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "poisson-065") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
   throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
 }
-
-uint64_t sample_seed_hash(uint64_t seed) { return sample_hash_seed(seed); }
 
 uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce) {
   // One finaliser over odd-constant multiples of the coordinates: distinct inputs differ in

@@ -2,6 +2,7 @@
 // The replayable per-pixel sampler (pbrt-v4 style): every value is a pure function of
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
+#include "sampling/core/derived_seeds.h"
 #include "sampling/samplers/sampler_profile.h"
 
 #include <algorithm>
@@ -29,8 +30,7 @@ inline constexpr double kBelowOne = 0x1.fffffffffffffp-1;
 constexpr double clamp_to_unit(double x) { return x < 0.0 ? 0.0 : x < 1.0 ? x : kBelowOne; }
 
 // Hash of a sample's coordinates: the per-(pixel, family, bounce) stream every sampler uses,
-// in two steps so samplers mix their seed once.
-uint64_t sample_seed_hash(uint64_t seed);
+// in two steps so samplers mix their seed once (sample_hash_seed, sampling/core/derived_seeds.h).
 uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce);
 
 // A per-stream permutation of sample indices that maps every prefix [0, 2^k) onto itself:
@@ -125,7 +125,7 @@ class Sampler {
   virtual int64_t samples_available(int px, int py) const;
 
  protected:
-  explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_seed_hash(seed)) {}
+  explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_hash_seed(seed)) {}
   // The hash of (pixel, family, bounce) every value of that stream derives from.
   uint64_t stream(int px, int py, Family family, int bounce) const {
     return sample_stream_from_hash(seed_hash_, px, py, family, bounce);

@@ -1,5 +1,6 @@
 #include "renderer/compare/uniform_runs.h"
 
+#include "renderer/compare/error_spectrum.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/render/renderer.h"
 

@@ -1,4 +1,5 @@
 // Image error metrics used by `pdrt compare`.
+#include "renderer/compare/error_spectrum.h"
 #include "renderer/compare/image_metrics.h"
 #include "sampling/core/rng.h"
 

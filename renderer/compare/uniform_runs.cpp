@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace pdrt {
 
@@ -53,18 +54,24 @@ std::string run_line(const ReportContext& ctx, const UniformRun& run) {
   return buf;
 }
 
-// "  screen: blurred rmse s1 ... s2 ...  low-freq share ...  FLIP ldr ... hdr ...": the run's
-// screen-space measures, means over seeds +- their 95 % half widths.
-std::string screen_line(const UniformRun& run) {
+// "jitter 4 spp  blurred rmse s1 ... s2 ...  low-freq share ...  FLIP ldr ... hdr ...": the
+// run's screen-space measures, means over seeds with their 95 % half widths (none for one seed,
+// as run_line).
+std::string screen_line(const UniformRun& run, int seeds) {
   const ScreenMeasures& m = run.screen;
-  char buf[300];
-  std::snprintf(buf, sizeof buf,
-                "%-8s %5d spp  blurred rmse s1 %.5f +- %.5f  s2 %.5f +- %.5f  low-freq share %.3f +- %.3f  "
-                "FLIP ldr %.4f +- %.4f  hdr %.4f +- %.4f",
-                run.sampler.c_str(), run.spp, m.blurred[0].rmse_mean, m.blurred[0].rmse_ci95, m.blurred[1].rmse_mean,
-                m.blurred[1].rmse_ci95, m.low_share_mean.mean, m.low_share_mean.ci95, m.flip_ldr_mean.mean,
-                m.flip_ldr_mean.ci95, m.flip_hdr_mean.mean, m.flip_hdr_mean.ci95);
-  return buf;
+  auto value = [&](int digits, double mean, double ci) {
+    char buf[64];
+    if (seeds > 1) std::snprintf(buf, sizeof buf, "%.*f +- %.*f", digits, mean, digits, ci);
+    else std::snprintf(buf, sizeof buf, "%.*f", digits, mean);
+    return std::string(buf);
+  };
+  char head[40];
+  std::snprintf(head, sizeof head, "%-8s %5d spp", run.sampler.c_str(), run.spp);
+  return std::string(head) + "  blurred rmse s1 " + value(5, m.blurred[0].rmse_mean, m.blurred[0].rmse_ci95) +
+         "  s2 " + value(5, m.blurred[1].rmse_mean, m.blurred[1].rmse_ci95) + "  low-freq share " +
+         value(3, m.low_share_mean.mean, m.low_share_mean.ci95) + "  FLIP ldr " +
+         value(4, m.flip_ldr_mean.mean, m.flip_ldr_mean.ci95) + "  hdr " +
+         value(4, m.flip_hdr_mean.mean, m.flip_hdr_mean.ci95);
 }
 
 UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, const ScreenReference& screen,
@@ -96,7 +103,7 @@ UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, con
   run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
   ctx.write_png(run.image_file, display_rgb(run.image));
   ctx.say(run_line(ctx, run));
-  ctx.say(screen_line(run));
+  ctx.say(screen_line(run, ctx.o.seeds));
   return run;
 }
 

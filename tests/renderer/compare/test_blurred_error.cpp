@@ -1,6 +1,6 @@
 // The blurred error of `pdrt compare` (renderer/compare/blurred_error.h).
 #include "renderer/compare/blurred_error.h"
-#include "sampling/core/rng.h"
+#include "tests/support/image_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -10,12 +10,9 @@ using namespace pdrt;
 
 namespace {
 
+// Every channel uniform in +- amplitude / 2.
 Image uniform_noise(int w, int h, uint64_t seed, double amplitude) {
-  Image im;
-  im.width = w, im.height = h;
-  Rng rng(seed);
-  for (int i = 0; i < 3 * w * h; ++i) im.rgb.push_back(float(amplitude * (rng.uniform() - 0.5)));
-  return im;
+  return test::random_image(w, h, seed, -amplitude / 2, amplitude / 2);
 }
 
 // The RMS of `im` over the pixels at least `margin` from every edge, where the kernel is whole.

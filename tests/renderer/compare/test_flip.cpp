@@ -2,6 +2,7 @@
 // formulas.
 #include "renderer/compare/flip.h"
 #include "sampling/core/rng.h"
+#include "tests/support/image_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -11,20 +12,9 @@ using namespace pdrt;
 
 namespace {
 
-Image random_image(int w, int h, uint64_t seed, double scale) {
-  Image im;
-  im.width = w, im.height = h;
-  Rng rng(seed);
-  for (int i = 0; i < 3 * w * h; ++i) im.rgb.push_back(float(scale * rng.uniform()));
-  return im;
-}
+Image random_image(int w, int h, uint64_t seed, double scale) { return test::random_image(w, h, seed, 0, scale); }
 
-Image flat(int w, int h, float r, float g, float b) {
-  Image im;
-  im.width = w, im.height = h;
-  for (int i = 0; i < w * h; ++i) im.rgb.insert(im.rgb.end(), {r, g, b});
-  return im;
-}
+Image flat(int w, int h, float r, float g, float b) { return test::flat_image(w, h, r, g, b); }
 
 // Pixels of the RGB cube's corners and beyond it (HDR values, negative, infinite), in blocks.
 Image extreme_image(int w, int h, uint64_t seed) {

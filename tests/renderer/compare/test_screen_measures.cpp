@@ -2,6 +2,7 @@
 #include "renderer/compare/image_metrics.h"
 #include "renderer/compare/screen_measures.h"
 #include "sampling/core/rng.h"
+#include "tests/support/image_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -19,9 +20,7 @@ Image noisy(const Image& base, uint64_t seed, double amplitude) {
 // With a noiseless reference (identical halves) every seed's numbers are the direct measures:
 // the blurred RMSE, the low-frequency share and the mean FLIP of that seed alone.
 TEST(ScreenMeasures, PerSeedValuesAreTheDirectMeasures) {
-  Image ref;
-  ref.width = 16, ref.height = 12;
-  ref.rgb.assign(3 * 16 * 12, 0.4f);
+  const Image ref = test::flat_image(16, 12, 0.4f, 0.4f, 0.4f);
   const ScreenReference sr = screen_reference(ref, {ref, ref}, {8, 8});
   const std::vector<Image> seeds = {noisy(ref, 1, 0.2), noisy(ref, 2, 0.2), noisy(ref, 3, 0.2)};
   const ScreenMeasures m = screen_measures(sr, seeds);

@@ -54,11 +54,12 @@ if [ "$MODE" = plan ]; then
   exit 0
 fi
 # One summary table over all scenes: mean RMSE +- 95 % interval per sampler at each spp, the
-# best (a tie with every sampler whose interval overlaps the best's), and the fitted slopes.
+# best (a tie with every sampler whose interval overlaps the best's), and the fitted slopes;
+# then the screen-space measures' means (blurred RMSE at sigma 1 px / low-frequency share / HDR-FLIP).
 /usr/bin/env python3 - "$OUT" <<'PY'
 import json, os, sys
 out = sys.argv[1]
-rows, names, one_seed = [], [], False
+rows, screen, names, one_seed = [], [], [], False
 for name in sorted(os.listdir(out)):
     p = os.path.join(out, name, "results.json")
     if not os.path.exists(p):
@@ -75,10 +76,21 @@ for name in sorted(os.listdir(out)):
         verdict = best if not tied else "tie: " + ", ".join([best] + tied)
         cells = ("%.4g" % e[s][0] if single else "%.4g ± %.2g" % e[s] for s in r["samplers"])
         rows.append("| %s | %d | %s | %s |" % (name, n, " | ".join(cells), verdict))
+        if all("blurred_rmse" in u for u in r["runs"]):
+            m = {u["sampler"]: u for u in r["runs"] if u["spp"] == n}
+            screen.append("| %s | %d | %s |" % (name, n, " | ".join("%.4g / %.3f / %.4f" % (
+                m[s]["blurred_rmse"][0]["rmse"], m[s]["low_frequency_share"]["mean"] or float("nan"),
+                m[s]["flip"]["hdr"]["mean"]) for s in r["samplers"])))
     rows.append("| %s | slope | %s | |" % (name, " | ".join("%.2f" % r["slopes"][s] for s in r["samplers"])))
 with open(os.path.join(out, "summary.md"), "w") as f:
     f.write("| scene | spp | " + " | ".join(names) + " | best |\n|---|---|" + "---|" * (len(names) + 1) + "\n")
     f.write("\n".join(rows) + "\n")
+    if screen:
+        f.write("\nScreen-space measures, means over seeds (docs/renderer.md, \"The compare report\"): RMSE of the "
+                "error blurred by sigma = 1 px / share of the error power below 1/4 cycle per pixel (white: 0.196) "
+                "/ mean HDR-FLIP; lower is better.\n\n| scene | spp | " + " | ".join(names) + " |\n|---|---|" +
+                "---|" * len(names) + "\n")
+        f.write("\n".join(screen) + "\n")
     if one_seed:
         f.write("\nOne seed: no intervals, so no ties; \"best\" is the lowest RMSE of one sample of each. "
                 "Intervals and ties need --seeds 2 or more (SEEDS, the fifth argument).\n")

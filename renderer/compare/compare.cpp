@@ -9,6 +9,7 @@
 #include "renderer/compare/report_context.h"
 #include "renderer/compare/results_csv.h"
 #include "renderer/compare/results_json.h"
+#include "renderer/compare/screen_maps.h"
 #include "renderer/compare/uniform_runs.h"
 #include "renderer/render/adaptive_metric.h"
 #include "sampling/core/atomic_file.h"
@@ -25,11 +26,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The report's directory with images/ and errors/, and results.json writable.
+// The report's directory with images/, errors/ and spectra/, and results.json writable.
 void create_report_directories(const CompareOptions& o) {
   create_output_directory(o.out);
   std::error_code ec;
-  for (const char* sub : {"images", "errors"}) {
+  for (const char* sub : {"images", "errors", "spectra"}) {
     fs::create_directories(o.out / sub, ec);
     if (ec) throw InputError((o.out / sub).string() + ": cannot create directory (" + ec.message() + ")");
   }
@@ -77,7 +78,7 @@ double compare_sample_count(const CompareOptions& o, int width, int height) {
 }
 
 // The stages in order, each adding to the results what the later ones read: the reference,
-// the uniform runs, their heat maps and crops, the convergence view, the adaptive sweep; then
+// the uniform runs, their heat maps, FLIP maps, spectrum images and crops, the convergence view, the adaptive sweep; then
 // the files written from the results alone.
 fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, const CompareJobSource& source) {
   validate_compare_options(o);
@@ -87,6 +88,7 @@ fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, co
   results.reference = render_reference(ctx);
   render_uniform_runs(ctx, results);
   write_heat_maps(ctx, results);
+  write_screen_maps(ctx, results);
   write_detail_crops(ctx, results);
   results.convergence = convergence_view(o, results.runs);
   if (o.adaptive) {

@@ -17,7 +17,7 @@ CompareReference render_reference(const ReportContext& ctx) {
   CompareReference ref;
   ref.setup = reference_setup(ctx.base, ctx.o);
   const auto& half_spp = ref.setup.half_spp;
-  Image halves[2];
+  std::array<Image, 2>& halves = ref.halves;
   for (int h = 0; h < 2; ++h) {
     CompareJob jb;
     jb.kind = CompareJob::Kind::Reference, jb.half = h;

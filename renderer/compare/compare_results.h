@@ -4,6 +4,7 @@
 // adaptive sweep. results.json and results.csv are written from this value alone.
 #include "renderer/compare/compare_job.h"
 #include "renderer/compare/convergence.h"
+#include "renderer/compare/screen_measures.h"
 #include "renderer/compare/seed_statistics.h"
 #include "renderer/render/film.h"
 #include "sampling/analysis/radial_spectrum.h"
@@ -22,6 +23,7 @@ namespace pdrt {
 struct CompareReference {
   ReferenceSetup setup;
   Image image;                        // the halves' samples-weighted mean
+  std::array<Image, 2> halves;        // the halves themselves
   std::array<std::string, 2> file;    // where each half's image is kept
   bool cached = true;                 // both halves came from the cache
   double seconds = 0;                 // rendering the halves that were not cached
@@ -46,11 +48,13 @@ struct UniformRun {
   int64_t samples = 0;  // traced by one render (every seed traces the same count)
   SeedStatistics stats;
   std::vector<SeedRun> seeds;
-  RadialSpectrum spectrum;  // of the error image, averaged over the seeds
+  RadialSpectrum spectrum;  // of the error image, averaged over the seeds (radial_spectrum of screen.spectrum)
+  ScreenMeasures screen;    // blurred RMSE, low-frequency share, FLIP, the 2-D error spectrum
   SamplerProfile profile;   // summed over the seeds
   std::vector<StreamAnalysis> used;  // seed 0's samples, per family
   Image image;              // seed 0's
   std::string image_file, error_file;
+  std::string flip_ldr_file, flip_hdr_file, spectrum_file;  // seed 0's FLIP maps, the mean 2-D spectrum
 };
 
 // Side-by-side crops of the reference's most detailed square, one sheet per spp.
@@ -100,6 +104,8 @@ struct CompareResults {
   std::vector<UniformRun> runs;      // by sampler, then spp
   int threads = 0;            // worker threads of the last uniform render
   std::map<int, float> heat_scale;  // per spp: the error maps' common scale
+  FlipExposures flip_exposures;     // HDR-FLIP's, from the reference
+  std::map<int, std::array<double, 2>> spectrum_scale;  // per spp: the 2-D spectrum images' log10 power range
   DetailCrops crops;
   ConvergenceView convergence;
   AdaptiveSweep adaptive;           // with --adaptive

@@ -1,11 +1,7 @@
 #include "renderer/compare/image_metrics.h"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <mutex>
 #include <stdexcept>
 
 namespace pdrt {
@@ -19,11 +15,6 @@ void check_same_size(const Image& a, const Image& b) {
 
 float lum_at(const Image& im, std::size_t i) {
   return luminance(Vec3(im.rgb[3 * i], im.rgb[3 * i + 1], im.rgb[3 * i + 2]));
-}
-
-std::mutex& planner_mutex() {
-  static std::mutex m;  // FFTW's planner is not thread-safe
-  return m;
 }
 
 }  // namespace
@@ -105,50 +96,6 @@ long long count_specks(const Image& test, const Image& reference, double ratio, 
   long long n = 0;
   for (unsigned char m : speck_mask(test, reference, ratio, floor)) n += m;
   return n;
-}
-
-RadialSpectrum error_spectrum(const Image& t, const Image& r) {
-  check_same_size(t, r);
-  const int W = t.width, H = t.height, half = W / 2 + 1;
-  struct Free {
-    void operator()(void* p) const { fftw_free(p); }
-  };
-  std::unique_ptr<double, Free> in(static_cast<double*>(fftw_malloc(sizeof(double) * W * H)));
-  std::unique_ptr<fftw_complex, Free> out(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * H * half)));
-  fftw_plan plan;
-  {
-    std::lock_guard lock(planner_mutex());
-    plan = fftw_plan_dft_r2c_2d(H, W, in.get(), out.get(), FFTW_ESTIMATE);
-  }
-  for (std::size_t i = 0; i < std::size_t(W) * H; ++i) in.get()[i] = double(lum_at(t, i)) - lum_at(r, i);
-  fftw_execute(plan);
-  {
-    std::lock_guard lock(planner_mutex());
-    fftw_destroy_plan(plan);
-  }
-  const int bins = std::max(1, std::min(W, H) / 2);
-  RadialSpectrum s;
-  s.frequency.resize(bins), s.power.assign(bins, 0.0);
-  std::vector<double> count(bins, 0.0);
-  const double norm = 1.0 / (double(W) * H);
-  for (int ky = 0; ky < H; ++ky) {
-    double fy = (ky <= H / 2 ? ky : ky - H) / double(H);
-    for (int kx = 0; kx < half; ++kx) {
-      double fx = kx / double(W), f = std::sqrt(fx * fx + fy * fy);
-      if (f == 0 || f > 0.5) continue;  // DC is the mean error; corners beyond 0.5 are partial rings
-      int b = std::min(bins - 1, int(f * 2 * bins));
-      const double* z = out.get()[std::size_t(ky) * half + kx];
-      // Columns 1..W/2-1 stand for their conjugate mirror too.
-      double mult = (kx == 0 || (W % 2 == 0 && kx == W / 2)) ? 1.0 : 2.0;
-      s.power[b] += mult * (z[0] * z[0] + z[1] * z[1]) * norm;
-      count[b] += mult;
-    }
-  }
-  for (int b = 0; b < bins; ++b) {
-    s.frequency[b] = (b + 0.5) / (2.0 * bins);
-    if (count[b] > 0) s.power[b] /= count[b];
-  }
-  return s;
 }
 
 }  // namespace pdrt

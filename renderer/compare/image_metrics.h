@@ -1,9 +1,7 @@
 #pragma once
-// Error of a rendered image against a reference: RMSE, relative MSE, and the radially
-// averaged power spectrum of the error image (white noise is flat; blue-noise error has
-// little power at low frequencies).
+// Error of a rendered image against a reference: RMSE, relative MSE, error maps, fireflies
+// and specks (the error's spectrum is error_spectrum.h's).
 #include "renderer/render/film.h"
-#include "sampling/analysis/radial_spectrum.h"
 
 #include <vector>
 
@@ -14,11 +12,6 @@ double rmse(const Image& test, const Image& reference);
 
 // Relative MSE (Rousselle et al. 2011): mean of (t - r)^2 / (r^2 + eps), eps = 0.01.
 double relative_mse(const Image& test, const Image& reference, double eps = 0.01);
-
-// Radially averaged periodogram of the luminance difference test - reference: `frequency`
-// the bin centres in cycles per pixel, in (0, 0.5], `power` the mean |F|^2 / (W H) of the
-// luminance error in each bin (the other fields are left empty).
-RadialSpectrum error_spectrum(const Image& test, const Image& reference);
 
 // Per-pixel absolute luminance error, for heat maps.
 std::vector<float> error_map(const Image& test, const Image& reference);

@@ -4,7 +4,9 @@ rmse_vs_spp.png (log-log, fitted slopes, 95 % interval bars over the seeds), rms
 (equal-time view on CPU seconds, and on CPU seconds less the sampler's share),
 error_spectra.png (radially averaged power of the error images), used_spectra.png (the
 periodogram of the samples the renders used, per family), errors/heat-N.png (the
-error heat maps at N spp with their colour bar), with --adaptive adaptive_vs_spp.png (the
+error heat maps at N spp with their colour bar), screen_vs_spp.png (blurred RMSE, low-frequency
+share and FLIP against spp), errors/flip-ldr-N.png and errors/flip-hdr-N.png (FLIP maps with
+their colour bar), spectra/spectrum-N.png (2-D error spectra with their colour bar), with --adaptive adaptive_vs_spp.png (the
 threshold sweep against uniform sampling) and images/adaptive-samples.png (sample counts),
 and index.html."""
 import html
@@ -66,6 +68,10 @@ def main(out):
     plot_spectra(out, r)
     plot_used_spectra(out, r)
     plot_heat_maps(out, r)
+    if runs and "blurred_rmse" in runs[0]:
+        plot_screen_measures(out, r)
+        plot_flip_maps(out, r)
+        plot_spectra_2d(out, r)
     if r.get("adaptive"):
         plot_sample_maps(out, r)
     if r.get("adaptive_sweep"):
@@ -182,21 +188,28 @@ def heat_map_file(n):
     return "errors/heat-%d.png" % n
 
 
-def panels_with_colorbar(out, r, path, panels, mappable, label, extend="neither", ticks=None):
-    """A row of report PNGs (file, title) with one colour bar for all of them."""
+def panels_with_colorbar(out, r, path, panels, mappable, label, extend="neither", ticks=None, extent=None):
+    """A row of report PNGs (file, title) with one colour bar for all of them; with extent
+    (left, right, bottom, top) the panels get axes in those units (the 2-D spectra)."""
     import matplotlib.image as mpimg
     w, aspect = 3.2, r["height"] / max(1, r["width"])
     fig, axes = plt.subplots(1, len(panels), figsize=(w * len(panels) + 1.2, w * aspect + 1.0), squeeze=False)
-    for ax, (file, title) in zip(axes[0], panels):
-        ax.imshow(mpimg.imread(os.path.join(out, file)), interpolation="nearest")
+    for i, (ax, (file, title)) in enumerate(zip(axes[0], panels)):
+        ax.imshow(mpimg.imread(os.path.join(out, file)), interpolation="nearest", extent=extent)
         ax.set_title(title, fontsize=9)
-        ax.set_xticks([])
-        ax.set_yticks([])
+        if extent:
+            ax.set_xlabel("fx (cycles per pixel)", fontsize=8)
+            if i == 0:
+                ax.set_ylabel("fy (cycles per pixel)", fontsize=8)
+            ax.tick_params(labelsize=7)
+        else:
+            ax.set_xticks([])
+            ax.set_yticks([])
     cb = fig.colorbar(mappable, ax=list(axes[0]), extend=extend, fraction=0.04, pad=0.02)
     cb.set_label(label, fontsize=9)
     if ticks:
         cb.set_ticks(ticks)
-        cb.set_ticklabels([str(t) for t in ticks])
+        cb.set_ticklabels([("%.2g" % t) if isinstance(t, float) else str(t) for t in ticks])
         cb.minorticks_off()
     fig.savefig(os.path.join(out, path), dpi=110, bbox_inches="tight")
     plt.close(fig)
@@ -211,6 +224,79 @@ def plot_heat_maps(out, r):
                   for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
         sm = plt.cm.ScalarMappable(norm=Normalize(0, r["error_maps"]["scale"][str(n)]), cmap=cmap)
         panels_with_colorbar(out, r, heat_map_file(n), panels, sm, "|luminance error| per pixel", extend="max")
+
+
+SCREEN_MEASURES = [  # (title, value of a run as (mean, ci95), log y axis)
+    ("RMSE of the error blurred by sigma = 1 px", lambda u: blurred(u, 0), True),
+    ("RMSE of the error blurred by sigma = 2 px", lambda u: blurred(u, 1), True),
+    ("share of error power below 1/4 cycle/px (white: 0.196)",
+     lambda u: (u["low_frequency_share"]["mean"], u["low_frequency_share"]["ci95"]), False),
+    ("mean LDR-FLIP", lambda u: (u["flip"]["ldr"]["mean"], u["flip"]["ldr"]["ci95"]), True),
+    ("mean HDR-FLIP", lambda u: (u["flip"]["hdr"]["mean"], u["flip"]["hdr"]["ci95"]), True),
+]
+
+
+def blurred(u, i):
+    b = u["blurred_rmse"][i]
+    return b["rmse"], b["rmse_ci95"]
+
+
+def plot_screen_measures(out, r):
+    """The screen-space measures against spp, one panel each, mean over seeds with 95 % bars."""
+    fig, axes = plt.subplots(1, len(SCREEN_MEASURES), figsize=(4.4 * len(SCREEN_MEASURES), 4), squeeze=False)
+    for ax, (title, get, log) in zip(axes[0], SCREEN_MEASURES):
+        for s in r["samplers"]:
+            pts = sorted((u["spp"],) + tuple(get(u)) for u in r["runs"] if u["sampler"] == s)
+            pts = [p for p in pts if p[1] is not None]
+            ys = [p[1] for p in pts]
+            lo = [min(p[2] or 0, 0.999 * p[1]) if log else (p[2] or 0) for p in pts]
+            ax.errorbar([p[0] for p in pts], ys, yerr=[lo, [p[2] or 0 for p in pts]], fmt="o-", color=COLORS.get(s),
+                        label=s, capsize=3)
+        ax.set_xscale("log")
+        if log:
+            ax.set_yscale("log")
+        ax.set_xlabel("samples per pixel")
+        ax.set_title(title, fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize="small")
+    axes[0][0].set_ylabel("mean over %d seeds (95%% interval)" % len(r.get("seeds", [0])))
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "screen_vs_spp.png"), dpi=100)
+    plt.close(fig)
+
+
+def flip_map_file(variant, n):
+    return "errors/flip-%s-%d.png" % (variant, n)
+
+
+def plot_flip_maps(out, r):
+    """Per spp and variant, every sampler's seed-0 FLIP map with the colour bar over [0, 1]."""
+    sm = plt.cm.ScalarMappable(norm=Normalize(0, 1), cmap=heat_colormap(r))
+    for variant in ("ldr", "hdr"):
+        for n in r["spp"]:
+            panels = [(u["flip"][variant + "_map"], "%s, %d spp: %s-FLIP" % (s, n, variant.upper()))
+                      for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
+            panels_with_colorbar(out, r, flip_map_file(variant, n), panels, sm,
+                                 "%s-FLIP per pixel (0 = none, 1 = largest)" % variant.upper())
+
+
+def spectrum_2d_file(n):
+    return "spectra/spectrum-%d.png" % n
+
+
+def plot_spectra_2d(out, r):
+    """Per spp, every sampler's 2-D luminance error spectrum (mean over seeds, DC at the centre)
+    on one log colour scale."""
+    W, H = r["width"], r["height"]
+    extent = (-0.5, 0.5 - 1.0 / W, 0.5 - 1.0 / H, -0.5)  # fy grows downwards, as the image rows
+    for n in r["spp"]:
+        lo, hi = r["error_spectra_2d"]["scale"][str(n)]
+        sm = plt.cm.ScalarMappable(norm=LogNorm(10 ** lo, 10 ** hi), cmap=heat_colormap(r))
+        panels = [(u["spectrum_2d"], "%s, %d spp: error spectrum" % (s, n))
+                  for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
+        ticks = [10 ** (lo + (hi - lo) * k / 4) for k in range(5)]  # labelled even when under a decade
+        panels_with_colorbar(out, r, spectrum_2d_file(n), panels, sm, "error power |FFT|^2 / pixels (log scale)",
+                             extend="min", ticks=ticks, extent=extent)
 
 
 def plot_sample_maps(out, r):
@@ -247,6 +333,48 @@ def plot_adaptive(out, r):
 
 def fmt(x):
     return "n/a" if x is None or (isinstance(x, float) and math.isnan(x)) else "%.5f" % x
+
+
+def write_screen_html(p, r):
+    """The screen-space measures: one table per measure (mean over seeds &plusmn; 95 % interval,
+    the lowest mean in bold), their plot against spp, the FLIP maps and the 2-D spectra."""
+    e = html.escape
+    runs, samplers, spps = r["runs"], r["samplers"], r["spp"]
+    p.append("<h2>Screen-space measures</h2><p>Where on screen the error sits, which per-pixel RMSE does not see: "
+             "the RMSE of the error image blurred by a Gaussian of &sigma; = 1 and 2 pixels (what the eye "
+             "integrates), the share of the luminance error's power below 1/4 cycle per pixel (white error: "
+             "&pi;/16 = 0.196; lower means the error sits at high frequencies the eye forgives), and "
+             "&#xA7FB;LIP (Andersson et al. 2020, HDR-FLIP 2021; %.0f pixels per degree; 0 is no visible "
+             "difference). Lower is better for all of them.</p><img src='screen_vs_spp.png'>" %
+             r["flip"]["pixels_per_degree"])
+    for title, get, _ in SCREEN_MEASURES:
+        p.append("<h3>%s</h3><table><tr><th>spp</th>%s</tr>" % (e(title), "".join("<th>%s</th>" % e(s) for s in samplers)))
+        for n in spps:
+            at = {u["sampler"]: get(u) for u in runs if u["spp"] == n}
+            best = min((v[0] for v in at.values() if v[0] is not None), default=None)
+            cells = []
+            for s in samplers:
+                m, ci = at[s]
+                cell = "%s &plusmn; %s" % (fmt(m), fmt(ci))
+                cells.append("<td>%s</td>" % ("<b>%s</b>" % cell if m is not None and m == best else cell))
+            p.append("<tr><td>%d</td>%s</tr>" % (n, "".join(cells)))
+        p.append("</table>")
+    p.append("<p><small>%s</small></p>" % " ".join(e(r["statistics"].get(k, "")) for k in (
+        "blurred_rmse", "low_frequency_share", "flip")))
+    ex = r["flip"]["hdr_exposures"]
+    p.append("<h3>&#xA7FB;LIP maps (seed 0)</h3><p>HDR-FLIP exposures from the reference: %d from %.2f to %.2f "
+             "stops.</p>" % (ex["count"], ex["start"], ex["stop"]))
+    for n in spps:
+        for variant in ("ldr", "hdr"):
+            p.append("<figure><img src='%s'><figcaption>%s-FLIP at %d spp, colour scale 0 to 1 for every spp."
+                     "</figcaption></figure><br>" % (e(flip_map_file(variant, n)), variant.upper(), n))
+    p.append("<h3>2-D error spectra (mean over seeds)</h3>")
+    for n in spps:
+        lo, hi = r["error_spectra_2d"]["scale"][str(n)]
+        p.append("<figure><img src='%s'><figcaption>Power spectrum of the luminance error at %d spp, DC at the "
+                 "centre, one log colour scale for all samplers at this spp (10^%.1f to 10^%.1f). White error is "
+                 "flat; blue-noise error is dark in the middle.</figcaption></figure><br>" % (
+                     e(spectrum_2d_file(n)), n, lo, hi))
 
 
 def write_html(out, r):
@@ -322,6 +450,8 @@ def write_html(out, r):
         for i, t in enumerate(et["seconds"]):
             p.append("<tr><td>%.3f</td>%s</tr>" % (t, "".join("<td>%s</td>" % fmt(et["rmse"][s][i]) for s in samplers)))
         p.append("</table>")
+    if runs and "blurred_rmse" in runs[0]:
+        write_screen_html(p, r)
     p.append("<h2>Error spectra</h2><figure><img src='error_spectra.png'><figcaption>Radially averaged power "
              "spectrum of each image's luminance error against the reference (DC removed), averaged over the seeds, at the lowest, middle "
              "and highest spp; white noise is flat, blue noise has less power at low frequencies.</figcaption>"

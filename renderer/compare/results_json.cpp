@@ -32,7 +32,55 @@ json statistics_rules() {
        "per family, each pixel's samples [0, spp) of its bounce-0 stream (seed 0, up to 1024 pixels spread "
        "over the image): relative radius rho of every pixel's prefix (min distance over the densest packing's; "
        "on the torus except the pixel family) and their periodogram averaged over the pixels (power 1 = white "
-       "noise, frequency in cycles per unit)"}};
+       "noise, frequency in cycles per unit)"},
+      {"blurred_rmse",
+       "per sigma (pixels): the RMSE statistics above of the images and the reference blurred by a Gaussian of that "
+       "sigma (sampled, cut at 4 sigma, renormalised over the pixels inside the image at its edges), i.e. of the "
+       "blurred error; the reference variance is its blurred halves'"},
+      {"low_frequency_share",
+       "share of the luminance error's power (periodogram, no window, DC i.e. the mean error included) at radial "
+       "frequency below 0.25 cycles per pixel, the reference's noise power (from its halves) taken out of both "
+       "parts; white error gives pi/16 = 0.196; mean over seeds and t(0.975, K-1) s / sqrt(K)"},
+      {"flip",
+       "mean over the image of LDR-FLIP (the images clamped to [0, 1], as the PNGs show them) and of HDR-FLIP (the "
+       "maximum of LDR-FLIP over ACES-tone-mapped exposures from the reference), Andersson et al. 2020/2021, at "
+       "flip.pixels_per_degree; mean over seeds and t(0.975, K-1) s / sqrt(K); the reference's own noise is not "
+       "taken out"}};
+}
+
+json seed_mean_json(const SeedMean& m) { return {{"mean", finite_or_null(m.mean)}, {"ci95", finite_or_null(m.ci95)}}; }
+
+json screen_json(const UniformRun& r) {
+  const ScreenMeasures& m = r.screen;
+  json blurred = json::array();
+  for (std::size_t s = 0; s < kBlurSigmas.size(); ++s) {
+    const SeedStatistics& st = m.blurred[s];
+    blurred.push_back({{"sigma", kBlurSigmas[s]},
+                       {"rmse", st.rmse_mean},
+                       {"rmse_ci95", st.rmse_ci95},
+                       {"rmse_low", st.rmse_mean - st.rmse_ci95},
+                       {"rmse_high", st.rmse_mean + st.rmse_ci95},
+                       {"mse", st.mse_mean},
+                       {"bias2", st.bias2},
+                       {"variance", st.variance}});
+  }
+  return {{"blurred_rmse", blurred},
+          {"low_frequency_share", seed_mean_json(m.low_share_mean)},
+          {"flip", {{"ldr", seed_mean_json(m.flip_ldr_mean)},
+                    {"hdr", seed_mean_json(m.flip_hdr_mean)},
+                    {"ldr_map", r.flip_ldr_file},
+                    {"hdr_map", r.flip_hdr_file}}},
+          {"spectrum_2d", r.spectrum_file}};
+}
+
+// Seed k's screen-space measures, into its per_seed entry.
+void add_screen_seed(const ScreenMeasures& m, std::size_t k, json& seed) {
+  json blurred = json::array();
+  for (const SeedStatistics& st : m.blurred) blurred.push_back(st.rmse[k]);
+  seed["blurred_rmse"] = blurred;
+  seed["low_frequency_share"] = finite_or_null(m.low_share[k]);
+  seed["flip_ldr"] = m.flip_ldr[k];
+  seed["flip_hdr"] = m.flip_hdr[k];
 }
 
 json reference_json(const CompareReference& ref) {
@@ -82,8 +130,9 @@ json run_json(const UniformRun& r) {
                         {"rmse", r.stats.rmse[k]},
                         {"relmse", sr.relmse},
                         {"sampler_share", profile_json(sr.profile)}});
+    add_screen_seed(r.screen, k, per_seed.back());
   }
-  return {{"sampler", r.sampler},
+  json j = {{"sampler", r.sampler},
           {"spp", r.spp},
           {"seconds", r.seconds},
           {"render_seconds", r.render_seconds},
@@ -104,6 +153,25 @@ json run_json(const UniformRun& r) {
           {"image", r.image_file},
           {"error_map", r.error_file},
           {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}};
+  j.update(screen_json(r));
+  return j;
+}
+
+// The screen-space measures' settings and the scales of their pictures, into `j`.
+void add_screen_settings(const CompareResults& results, json& j) {
+  const FlipExposures& e = results.flip_exposures;
+  j["blur_sigmas"] = kBlurSigmas;
+  j["low_frequency_cutoff"] = kLowFrequencyCutoff;
+  j["flip"] = {{"pixels_per_degree", kFlipPixelsPerDegree},
+               {"hdr_exposures", {{"start", e.start}, {"stop", e.stop}, {"count", e.count}}},
+               {"maps", "seed 0's per-pixel FLIP on heat_colormap over [0, 1]"}};
+  json scale = json::object();
+  for (const auto& [n, range] : results.spectrum_scale) scale[std::to_string(n)] = range;
+  j["error_spectra_2d"] = {
+      {"quantity", "|FFT(luminance error)|^2 / pixels, mean over seeds, DC at the centre, fx right, fy down"},
+      {"scale", scale},
+      {"scale_rule", "log10 power on heat_colormap from scale[0] (at most 6 decades below the largest; the 1st "
+                     "percentile over the samplers at that spp) to scale[1] (the largest)"}};
 }
 
 // The slopes, the samplers' profiled cost and the equal-time view, into `j`.
@@ -201,6 +269,7 @@ json results_json(const ReportContext& ctx, const CompareResults& results) {
   json jr = json::array();
   for (const UniformRun& r : results.runs) jr.push_back(run_json(r));
   j["runs"] = jr;
+  add_screen_settings(results, j);
   add_convergence(results.convergence, j);
   if (o.adaptive) add_adaptive(o, results, j);
   return j;

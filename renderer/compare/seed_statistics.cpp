@@ -42,6 +42,19 @@ double student_t95(int dof) {
          z * (((3 * z2 + 19) * z2 + 17) * z2 - 15) / (384 * n * n * n);
 }
 
+SeedMean seed_mean(const std::vector<double>& v) {
+  if (v.empty()) throw std::invalid_argument("seed_mean: no seeds");
+  const std::size_t K = v.size();
+  SeedMean m;
+  for (double x : v) m.mean += x / double(K);
+  if (K > 1) {
+    double s2 = 0;
+    for (double x : v) s2 += (x - m.mean) * (x - m.mean);
+    m.ci95 = student_t95(int(K) - 1) * std::sqrt(s2 / double(K - 1) / double(K));
+  }
+  return m;
+}
+
 SeedStatistics seed_statistics(const std::vector<Image>& seeds, const Image& ref, const ReferenceNoise& noise) {
   const double ref_var = noise.variance;
   if (seeds.empty()) throw std::invalid_argument("seed_statistics: no images");
@@ -75,15 +88,10 @@ SeedStatistics seed_statistics(const std::vector<Image>& seeds, const Image& ref
     st.mse_mean += st.mse[k] / double(K);
     st.rmse_mean += st.rmse[k] / double(K);
   }
-  double s2 = 0;
-  if (K > 1) {
-    for (double r : st.rmse) s2 += (r - st.rmse_mean) * (r - st.rmse_mean);
-    s2 /= double(K - 1);
-  }
   const double ref_term = st.rmse_mean > 0 ? noise.correction_se / (2 * st.rmse_mean) : 0.0;
   // The seeds' part has K - 1 degrees of freedom; the reference's is estimated from every
   // pixel, so it takes the normal quantile.
-  const double seeds_part = K > 1 ? student_t95(int(K) - 1) * std::sqrt(s2 / double(K)) : 0.0;
+  const double seeds_part = seed_mean(st.rmse).ci95;
   const double ref_part = 1.959964 * ref_term;
   st.rmse_ci95 = std::sqrt(seeds_part * seeds_part + ref_part * ref_part);
   return st;

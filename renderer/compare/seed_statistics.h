@@ -44,6 +44,14 @@ struct SeedStatistics {
   double bias2 = 0;          // mean((x_bar - r)^2) - variance / K - noise.variance (unbiased; may be < 0 by noise)
 };
 
+// A per-seed scalar's mean over the K seeds and the half width of its 95 % interval,
+// t_{0.975, K-1} s / sqrt(K) (s the seeds' spread; 0 for K = 1), as the seeds' part of rmse_ci95.
+// Measures with no reference correction (the low-frequency share, FLIP) use it.
+struct SeedMean {
+  double mean = 0, ci95 = 0;
+};
+SeedMean seed_mean(const std::vector<double>& per_seed);
+
 // `seeds` all the size of `reference`; at least one.
 SeedStatistics seed_statistics(const std::vector<Image>& seeds, const Image& reference, const ReferenceNoise& noise);
 

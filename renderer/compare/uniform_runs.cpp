@@ -1,10 +1,12 @@
 #include "renderer/compare/uniform_runs.h"
 
+#include "renderer/compare/error_spectrum.h"
 #include "renderer/compare/image_metrics.h"
 #include "renderer/render/renderer.h"
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace pdrt {
 
@@ -14,7 +16,7 @@ namespace {
 // an averaged periodogram smooth to a few percent.
 constexpr int kUsedSamplePixels = 1024;
 
-// Adds seed k's render to `run`: its error, times and spectrum.
+// Adds seed k's render to `run`: its relative error and times.
 void add_seed(const ReportContext& ctx, const Image& ref, int k, const CompareRender& r, UniformRun& run) {
   SeedRun sr;
   sr.seed = compare_seed(ctx.base.sampler.seed, k);
@@ -25,10 +27,7 @@ void add_seed(const ReportContext& ctx, const Image& ref, int k, const CompareRe
   sr.relmse = relative_mse(r.image, ref);
   sr.profile = r.profile;
   run.profile += sr.profile;
-  RadialSpectrum sp = error_spectrum(r.image, ref);
-  if (k == 0) run.spectrum = sp, run.samples = r.samples;
-  else
-    for (std::size_t b = 0; b < sp.power.size(); ++b) run.spectrum.power[b] += sp.power[b];
+  if (k == 0) run.samples = r.samples;
   const double w = 1.0 / ctx.o.seeds;
   run.seconds += w * sr.seconds, run.render_seconds += w * sr.render_seconds;
   run.cpu_seconds += w * sr.cpu_seconds, run.relmse += w * sr.relmse, run.spp_mean += w * r.spp_mean;
@@ -55,7 +54,28 @@ std::string run_line(const ReportContext& ctx, const UniformRun& run) {
   return buf;
 }
 
-UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, const std::string& name, int n, int& threads) {
+// "jitter 4 spp  blurred rmse s1 ... s2 ...  low-freq share ...  FLIP ldr ... hdr ...": the
+// run's screen-space measures, means over seeds with their 95 % half widths (none for one seed,
+// as run_line).
+std::string screen_line(const UniformRun& run, int seeds) {
+  const ScreenMeasures& m = run.screen;
+  auto value = [&](int digits, double mean, double ci) {
+    char buf[64];
+    if (seeds > 1) std::snprintf(buf, sizeof buf, "%.*f +- %.*f", digits, mean, digits, ci);
+    else std::snprintf(buf, sizeof buf, "%.*f", digits, mean);
+    return std::string(buf);
+  };
+  char head[40];
+  std::snprintf(head, sizeof head, "%-8s %5d spp", run.sampler.c_str(), run.spp);
+  return std::string(head) + "  blurred rmse s1 " + value(5, m.blurred[0].rmse_mean, m.blurred[0].rmse_ci95) +
+         "  s2 " + value(5, m.blurred[1].rmse_mean, m.blurred[1].rmse_ci95) + "  low-freq share " +
+         value(3, m.low_share_mean.mean, m.low_share_mean.ci95) + "  FLIP ldr " +
+         value(4, m.flip_ldr_mean.mean, m.flip_ldr_mean.ci95) + "  hdr " +
+         value(4, m.flip_hdr_mean.mean, m.flip_hdr_mean.ci95);
+}
+
+UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, const ScreenReference& screen,
+                      const std::string& name, int n, int& threads) {
   UniformRun run;
   run.sampler = name, run.spp = n;
   std::vector<Image> images;
@@ -67,7 +87,8 @@ UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, con
     add_seed(ctx, ref.image, k, r, run);
     images.push_back(std::move(r.image));
   }
-  for (double& p : run.spectrum.power) p /= ctx.o.seeds;
+  run.screen = screen_measures(screen, images);
+  run.spectrum = radial_spectrum(run.screen.spectrum, ctx.width, ctx.height);
   {
     SamplerDesc d = ctx.base.sampler;
     d.type = name, d.seed = compare_seed(ctx.base.sampler.seed, 0);
@@ -82,14 +103,18 @@ UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, con
   run.error_file = "errors/" + name + "-" + std::to_string(n) + ".png";
   ctx.write_png(run.image_file, display_rgb(run.image));
   ctx.say(run_line(ctx, run));
+  ctx.say(screen_line(run, ctx.o.seeds));
   return run;
 }
 
 }  // namespace
 
 void render_uniform_runs(const ReportContext& ctx, CompareResults& results) {
+  const CompareReference& ref = results.reference;
+  const ScreenReference screen = screen_reference(ref.image, ref.halves, ref.setup.half_spp);
+  results.flip_exposures = screen.hdr.exposures;
   for (const auto& name : ctx.o.samplers)
-    for (int n : ctx.o.spp) results.runs.push_back(render_run(ctx, results.reference, name, n, results.threads));
+    for (int n : ctx.o.spp) results.runs.push_back(render_run(ctx, ref, screen, name, n, results.threads));
 }
 
 }  // namespace pdrt

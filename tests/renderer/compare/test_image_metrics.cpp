@@ -1,18 +1,16 @@
 // Image error metrics used by `pdrt compare`.
+#include "renderer/compare/error_spectrum.h"
 #include "renderer/compare/image_metrics.h"
-#include "sampling/core/rng.h"
+#include "tests/support/image_fixtures.h"
 
 #include <gtest/gtest.h>
 
 using namespace pdrt;
 
 namespace {
+// Every channel uniform in 0.5 +- amplitude / 2.
 Image noise_image(int w, int h, uint64_t seed, double amplitude) {
-  Image im;
-  im.width = w, im.height = h;
-  Rng rng(seed);
-  for (int i = 0; i < 3 * w * h; ++i) im.rgb.push_back(float(0.5 + amplitude * (rng.uniform() - 0.5)));
-  return im;
+  return test::random_image(w, h, seed, 0.5 - amplitude / 2, 0.5 + amplitude / 2);
 }
 }  // namespace
 
@@ -44,12 +42,7 @@ TEST(ImageMetrics, WhiteNoiseErrorSpectrumIsFlat) {
 }
 
 namespace {
-Image flat_image(int w, int h, float v) {
-  Image im;
-  im.width = w, im.height = h;
-  im.rgb.assign(std::size_t(3) * w * h, v);
-  return im;
-}
+Image flat_image(int w, int h, float v) { return test::flat_image(w, h, v, v, v); }
 void set_pixel(Image& im, int x, int y, float v) {
   for (int c = 0; c < 3; ++c) im.rgb[3 * (std::size_t(y) * im.width + x) + c] = v;
 }

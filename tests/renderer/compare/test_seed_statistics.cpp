@@ -114,3 +114,12 @@ TEST(SeedStatistics, ConfidenceIntervalCoversTheTrueRmse) {
     EXPECT_NEAR(mean_rmse, 1.0, 0.002) << "the reference's variance must be taken out";
   }
 }
+
+// A per-seed measure's mean and the seeds' part of its interval: t(0.975, 3) s / sqrt(4) for
+// 1, 2, 3, 4 (s = sqrt(5/3)); one seed has no interval.
+TEST(SeedStatistics, SeedMeanIsTheMeanWithItsStudentInterval) {
+  const SeedMean m = seed_mean({1, 2, 3, 4});
+  EXPECT_DOUBLE_EQ(m.mean, 2.5);
+  EXPECT_NEAR(m.ci95, 3.18245 * std::sqrt(5.0 / 3.0) / 2, 1e-9);
+  EXPECT_EQ(seed_mean({0.7}).ci95, 0.0);
+}

@@ -890,6 +890,7 @@ TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent)
   Material floor;
   floor.type = MaterialType::Conductor;
   floor.roughness = std::pow(0.04f, 0.25f);
+  floor.energy_compensation = false;  // pbrt-v4 has none
   conductor_from_reflectance({0.9f, 0.6f, 0.3f}, &floor);
   ShapeDesc fq;
   fq.mesh.positions = {{-3, 0, -3}, {3, 0, -3}, {3, 0, 3}, {-3, 0, 3}};

@@ -180,6 +180,36 @@ void disk(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     for (size_t i = 0; i < s.mesh.indices.size(); i += 3) std::swap(s.mesh.indices[i + 1], s.mesh.indices[i + 2]);
 }
 
+// The area pbrt-v4's DiffuseAreaLight divides a `power` by: a sphere's and a disk's in object
+// space (Sphere::Area, Disk::Area), a triangle's in world space. pbrt-v4 makes every triangle
+// of a mesh a light of that power; pdrt's mesh has one radiance, so triangles of unequal area
+// get their mean (the same total power, distributed evenly; noted).
+double emitter_area(PbrtBuild& b, const PbrtDirective& d, const ShapeDesc& s) {
+  const std::string& t = d.strings[0];
+  if (t == "sphere") {
+    const double r = d.params.get_float("radius", 1);
+    return 4 * kPbrtPi * r * r;
+  }
+  if (t == "disk") {
+    const double r = d.params.get_float("radius", 1), ri = d.params.get_float("innerradius", 0);
+    return kPbrtPi * (r * r - ri * ri);
+  }
+  const Affine m = b.gs.cur.ctm.t[0].to_affine();
+  double sum = 0, lo = INFINITY, hi = 0;
+  const std::vector<Vec3>& p = s.mesh.positions;
+  const std::vector<uint32_t>& ix = s.mesh.indices;
+  for (size_t i = 0; i + 2 < ix.size(); i += 3) {
+    const Vec3 a = m.point(p[ix[i]]), e1 = m.point(p[ix[i + 1]]) - a, e2 = m.point(p[ix[i + 2]]) - a;
+    const double area = 0.5 * double(length(cross(e1, e2)));
+    sum += area, lo = std::min(lo, area), hi = std::max(hi, area);
+  }
+  const size_t n = ix.size() / 3;
+  if (n > 1 && hi > lo * (1 + 1e-3))
+    b.note(d.at, "\"power\" of an area light on triangles of unequal area: pbrt-v4 gives each triangle that power, "
+                 "pdrt gives all of them the radiance of the mean triangle (the same total power)");
+  return n ? sum / double(n) : 0;
+}
+
 // The current area light as an emitter material of its own, else the current material.
 void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
   const PbrtAttributes& cur = b.gs.cur;
@@ -188,6 +218,12 @@ void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
     m.name = "area light at " + cur.area->at.str();
     m.type = MaterialType::Emitter;
     m.radiance = cur.area->radiance;
+    if (cur.area->power) {
+      // pbrt-v4 (DiffuseAreaLight::Create): scale *= power / (sides x pi x area).
+      const double area = emitter_area(b, d, s);
+      const double k = (cur.area->two_sided ? 2 : 1) * kPbrtPi * area;
+      m.radiance = k > 0 ? m.radiance * float(*cur.area->power / k) : Vec3(0.0f);
+    }
     m.two_sided = cur.area->two_sided;
     b.out.scene.materials.push_back(m);
     s.material = int(b.out.scene.materials.size()) - 1;

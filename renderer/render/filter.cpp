@@ -19,11 +19,17 @@ float mitchell_1d(float x) {
   return ((12 - 9 * B - 6 * C) * x * x * x + (-18 + 12 * B + 6 * C) * x * x + (6 - 2 * B)) / 6;
 }
 
+// pbrt-v4's 1-D Gaussian of standard deviation sigma.
+float gaussian_1d(float x, float sigma) {
+  return std::exp(-x * x / (2 * sigma * sigma)) / (std::sqrt(2 * float(kPi)) * sigma);
+}
+
 }  // namespace
 
-Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius) {
-  // Cook's Gaussian: e^(-d^2) - e^(-w^2), d in pixels, w the radius (1.5 by default).
-  gauss_tail_ = std::exp(-radius_ * radius_);
+Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius), sigma_(d.type == FilterType::Gaussian ? d.sigma : 0) {
+  // Cook's Gaussian: e^(-d^2) - e^(-w^2), d in pixels, w the radius (1.5 by default);
+  // pbrt-v4's: g(x) - g(w) per axis.
+  gauss_tail_ = sigma_ > 0 ? gaussian_1d(radius_, sigma_) : std::exp(-radius_ * radius_);
   max_ = eval(0, 0);
   for (int i = 0; i <= 256; ++i)
     for (int j = 0; j <= 256; ++j) min_ = std::min(min_, eval(radius_ * (i / 128.0f - 1), radius_ * (j / 128.0f - 1)));
@@ -48,7 +54,7 @@ Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius) {
       f[std::size_t(iy) * n + ix] = s / 25;
     }
   table_ = PiecewiseConstant2D(f, n, n, -radius_, radius_, -radius_, radius_);
-  if (type_ == FilterType::Gaussian) {
+  if (type_ == FilterType::Gaussian && sigma_ == 0) {
     // Radial support: a square table's cells on the circle would put samples where f = 0,
     // so the Gaussian is tabulated over s = d^2 in [0, r^2) instead (uniform s is uniform area).
     const int m = 256;
@@ -96,6 +102,7 @@ float Filter::eval(float x, float y) const {
     case FilterType::Tent:
       return (1 - std::abs(x) / radius_) * (1 - std::abs(y) / radius_);
     case FilterType::Gaussian: {
+      if (sigma_ > 0) return (gaussian_1d(x, sigma_) - gauss_tail_) * (gaussian_1d(y, sigma_) - gauss_tail_);
       float d2 = x * x + y * y;
       return d2 >= radius_ * radius_ ? 0.0f : std::exp(-d2) - gauss_tail_;
     }

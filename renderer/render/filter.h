@@ -37,7 +37,8 @@ class Filter {
   FilterType type_;
   float radius_;
   float max_ = 1, min_ = 0;
-  float gauss_tail_ = 0;
+  float sigma_ = 0;       // pbrt-v4's separable Gaussian when > 0
+  float gauss_tail_ = 0;  // the Gaussian at the radius, subtracted so the filter ends at 0
   double mean_ = 0;
   PiecewiseConstant2D table_;   // |f| over the square
   PiecewiseConstant1D radial_;  // the Gaussian's f over d^2 (empty for the separable filters)

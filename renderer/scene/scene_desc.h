@@ -64,6 +64,9 @@ inline bool parse_reconstruction(const std::string& name, Reconstruction* out) {
 struct FilterDesc {
   FilterType type = FilterType::Gaussian;
   float radius = 1.5f;             // pixels (Cook's w = 1.5 for the Gaussian)
+  // Gaussian only: 0 is Cook's radial e^(-d^2) - e^(-w^2); > 0 is pbrt-v4's separable
+  // Gaussian of this standard deviation in pixels, (g(x) - g(w)) (g(y) - g(w)).
+  float sigma = 0;
   Reconstruction reconstruction = Reconstruction::Importance;
 };
 

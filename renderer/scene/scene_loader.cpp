@@ -242,7 +242,7 @@ void SceneParser::film(const JsonObject& o) {
     JsonObject fo = n->object();
     if (auto old = fo.get("selection"))
       old->fail_key("was replaced by \"reconstruction\": \"importance\" (default), \"splat\" or \"rank\"");
-    fo.allow({"type", "radius", "reconstruction"});
+    fo.allow({"type", "radius", "sigma", "reconstruction"});
     std::string type = "gaussian";
     if (auto t = fo.get("type")) type = t->choice({"box", "tent", "gaussian", "mitchell"});
     static const std::map<std::string, std::pair<FilterType, float>> kinds = {
@@ -252,6 +252,10 @@ void SceneParser::film(const JsonObject& o) {
         {"mitchell", {FilterType::Mitchell, 2.0f}}};
     std::tie(f.filter.type, f.filter.radius) = kinds.at(type);
     if (auto r = fo.get("radius")) f.filter.radius = r->positive();
+    if (auto s = fo.get("sigma")) {
+      if (f.filter.type != FilterType::Gaussian) s->fail_key("is a parameter of the \"gaussian\" filter only, not of \"" + type + "\"");
+      f.filter.sigma = s->positive();
+    }
     if (auto m = fo.get("reconstruction"))
       parse_reconstruction(m->choice({"importance", "splat", "rank"}), &f.filter.reconstruction);
   }

@@ -228,6 +228,7 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
                {"filter", {{"type", kFilters[int(s.film.filter.type)]}, {"radius", s.film.filter.radius},
                            {"reconstruction", reconstruction_name(s.film.filter.reconstruction)}}},
                {"exposure", s.film.exposure}};
+  if (s.film.filter.sigma > 0) j["film"]["filter"]["sigma"] = s.film.filter.sigma;
   if (s.film.crop_window != std::array<float, 4>{0, 1, 0, 1})
     j["film"]["crop_window"] = ojson::array({s.film.crop_window[0], s.film.crop_window[1], s.film.crop_window[2], s.film.crop_window[3]});
   ojson sampler = {{"type", s.sampler.type}, {"spp", s.sampler.spp}, {"seed", s.sampler.seed}};

@@ -151,15 +151,15 @@ void filter(PbrtBuild& b, const PbrtDirective& d) {
   else if (t == "mitchell") f.type = FilterType::Mitchell, def = 2;
   else if (t == "triangle") f.type = FilterType::Tent, def = 2;
   else {
-    b.note(d.at, "PixelFilter \"" + t + "\" is not supported (gaussian used)");
+    b.note(d.at, "PixelFilter \"" + t + "\" is not supported (pbrt-v4's default gaussian used)");
     f.type = FilterType::Gaussian, def = 1.5f;
     for (const PbrtParam& p : d.params.list) p.used = true;
   }
   const float rx = b.positive(d.params, "xradius", def), ry = b.positive(d.params, "yradius", def);
   if (rx != ry) b.note(d.at, "different x and y filter radii are not supported (their mean used)");
   f.radius = 0.5f * (rx + ry);
-  if (t == "gaussian" && d.params.has("sigma"))
-    b.note(d.params.find("sigma")->at, "\"sigma\" is not supported: pdrt's Gaussian is Cook's exp(-d^2) (ignored)");
+  f.sigma = 0;
+  if (f.type == FilterType::Gaussian) f.sigma = t == "gaussian" ? b.positive(d.params, "sigma", 0.5f) : 0.5f;
   if (t == "mitchell")
     for (const char* k : {"B", "C"})
       if (auto v = d.params.find_float(k); v && std::abs(*v - 1.0 / 3) > 1e-6)
@@ -227,6 +227,13 @@ void resolve_screen(const PbrtBuild& b, SceneDesc& s) {
 }
 
 }  // namespace
+
+void apply_pbrt_defaults(SceneDesc& s) {
+  s.film.width = 1280, s.film.height = 720;  // pbrt-v4's RGBFilm
+  s.film.filter = {};
+  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f, s.film.filter.sigma = 0.5f;  // GaussianFilter
+  s.integrator.max_depth = 5;  // VolPathIntegrator, the default integrator
+}
 
 void translate_pbrt_option(PbrtBuild& b, const PbrtDirective& d) {
   switch (d.kind) {

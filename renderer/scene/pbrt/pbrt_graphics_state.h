@@ -23,6 +23,7 @@ struct PbrtTransformPair {
 struct PbrtAreaLight {
   Vec3 radiance;
   bool two_sided = false;
+  std::optional<double> power;  // pbrt-v4: radiance x power / (sides x pi x the shape's area)
   PbrtLocation at;
 };
 

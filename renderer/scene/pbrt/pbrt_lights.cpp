@@ -15,6 +15,15 @@ namespace {
 
 // An infinite light with an image: pbrt-v4's equal-area octahedral square, resampled into
 // pdrt's equirectangular environment (equal_area_octahedral.h).
+// A `power` or `illuminance`: pbrt-v4 applies it only when > 0 (its default -1 means unset);
+// a non-finite value is an error.
+std::optional<double> positive_or_unset(PbrtBuild& b, const PbrtParams& ps, const char* name) {
+  std::optional<double> v = ps.find_float(name);
+  if (!v) return std::nullopt;
+  if (!std::isfinite(*v)) b.fail(ps.find(name)->at, std::string("\"float ") + name + "\" must be finite, got " + pbrt_number(*v));
+  return *v > 0 ? v : std::nullopt;
+}
+
 void image_light(PbrtBuild& b, const PbrtDirective& d, float scale) {
   const PbrtParams& ps = d.params;
   const PbrtParam& f = *ps.find("filename");
@@ -35,7 +44,7 @@ void image_light(PbrtBuild& b, const PbrtDirective& d, float scale) {
   const std::optional<Mat4> inv = b.gs.cur.ctm.t[0].inverse();
   if (!inv) b.fail(d.at, "the current transform is singular");
   double e_v = 0;
-  if (auto e = ps.find_float("illuminance")) {
+  if (auto e = positive_or_unset(b, ps, "illuminance")) {
     // pbrt-v4: scale so the upper hemisphere (light space +z) gives illuminance e; every
     // texel of the equal-area square subtends 4 pi / n^2.
     double sum = 0;
@@ -80,12 +89,12 @@ void light(PbrtBuild& b, const PbrtDirective& d) {
       l.cos_cone = float(std::cos(cone * kPbrtPi / 180));
       l.cos_falloff_start = float(std::cos(std::clamp(cone - delta, 0.0, cone) * kPbrtPi / 180));
     }
-    if (auto power = ps.find_float("power")) {
-      // pbrt-v4: the intensity that radiates `power` watts (4 pi I for a point light; a spot
-      // light's cone integral), by luminance.
+    if (auto power = positive_or_unset(b, ps, "power")) {
+      // pbrt-v4 (PointLight/SpotLight::Create): scale *= power / k_e, k_e = 4 pi for a point
+      // light, a spot light's cone integral; the spectrum was already divided by its
+      // illuminant's photometric value (color()), never by the RGB colour's luminance.
       const double solid = t == "point" ? 4 * kPbrtPi : 2 * kPbrtPi * (1 - 0.5 * (l.cos_cone + l.cos_falloff_start));
-      const double lum = luminance(I);
-      if (lum > 0) I = I * float(*power / (solid * lum));
+      I = I * float(*power / solid);
     }
     l.intensity = I;
     b.place(d.at, &l.transform, &l.motion);
@@ -104,10 +113,7 @@ void light(PbrtBuild& b, const PbrtDirective& d) {
     const Vec3 travel = b.gs.cur.ctm.t[0].vector(g - f);
     if (!(length(travel) > 0)) b.fail(d.at, "the current transform collapses the light's direction");
     l.direction = normalize(travel);
-    if (auto e = ps.find_float("illuminance")) {
-      const double lum = luminance(L);
-      if (lum > 0) L = L * float(*e / lum);
-    }
+    if (auto e = positive_or_unset(b, ps, "illuminance")) L = L * float(*e);  // pbrt-v4: scale *= E_v
     l.irradiance = L;
     b.out.scene.delta_lights.push_back(l);
     return;
@@ -120,11 +126,8 @@ void light(PbrtBuild& b, const PbrtDirective& d) {
     }
     if (ps.find("filename")) return image_light(b, d, scale);
     Vec3 L = b.color(ps, "L", Vec3(1.0f), true) * scale;
-    if (auto e = ps.find_float("illuminance")) {
-      // Illuminance of the upper hemisphere: pi L (by luminance).
-      const double lum = luminance(L);
-      if (lum > 0) L = L * float(*e / (kPbrtPi * lum));
-    }
+    // pbrt-v4: scale *= E_v / pi, the illuminance of the upper hemisphere per unit radiance.
+    if (auto e = positive_or_unset(b, ps, "illuminance")) L = L * float(*e / kPbrtPi);
     b.out.scene.environment.radiance = L;
     return;
   }
@@ -145,7 +148,7 @@ void area_light(PbrtBuild& b, const PbrtDirective& d) {
   Vec3 L = b.color(d.params, "L", Vec3(1.0f), true);
   float scale = float(d.params.get_float("scale", 1));
   if (!(scale >= 0)) b.fail(d.at, "\"float scale\" must be >= 0");
-  if (d.params.find_float("power")) b.note(d.params.find("power")->at, "\"power\" of an area light is not supported (ignored)");
+  l.power = positive_or_unset(b, d.params, "power");
   l.radiance = L * scale;
   l.two_sided = d.params.get_bool("twosided", false);
   b.gs.cur.area = l;

@@ -124,6 +124,9 @@ float index_of_refraction(PbrtBuild& b, const PbrtParams& ps) {
 int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, const PbrtParams& ps, const std::string& name) {
   Material m;
   m.name = name;
+  // pbrt-v4's microfacet lobes lose the energy of multiple scattering; pdrt's compensation
+  // only where the file asks for it with a pdrt parameter.
+  m.energy_compensation = ps.get_bool("pdrt:energycompensation", false);
   for (const char* k : {"displacement", "normalmap"})
     if (const PbrtParam* p = ps.find(k)) {
       p->used = true;

@@ -11,6 +11,7 @@ class Builder {
   explicit Builder(bool strict) : b_(strict) {}
 
   PbrtImport run(const std::vector<PbrtDirective>& ds) {
+    apply_pbrt_defaults(b_.out.scene);
     for (const PbrtDirective& d : ds) {
       const std::vector<PbrtParam>* defaults = b_.gs.defaults_for(d.kind);
       if (!defaults) {

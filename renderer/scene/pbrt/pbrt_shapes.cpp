@@ -58,19 +58,72 @@ MeshInput ply_input(PbrtBuild& b, const PbrtDirective& d) {
   return m;
 }
 
-// Shape "bilinearmesh": vertices p00 p10 p01 p11 per patch, two triangles each (exact for
-// planar patches).
-void split_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput& m) {
+void check_indices(PbrtBuild& b, const PbrtDirective& d, const std::vector<int64_t>& idx, size_t points) {
+  for (int64_t i : idx)
+    if (i < 0 || uint64_t(i) >= points)
+      b.fail(d.params.find("indices") ? d.params.find("indices")->at : d.at,
+             "index " + std::to_string(i) + " is out of range [0, " + std::to_string(points - 1) + "]");
+}
+
+// Shape "bilinearmesh": vertices p00 p10 p01 p11 per patch, p(u, v) and uv(u, v) bilinear
+// in the patch's (u, v) (uv defaults to (u, v) itself, as pbrt-v4's BilinearPatch). Each patch
+// becomes an N x N grid of triangle pairs, N chosen so that position (relative to the patch's
+// longest edge) and uv stay within 1e-4 of the patch: a bilinear f = affine + t u v differs
+// from its linear interpolation on a grid of step 1/N by at most |t| / (4 N^2). Patches that
+// are parallelograms in position and uv are exact at N = 1 (two triangles).
+void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput& m) {
+  const PbrtParams& ps = d.params;
   std::vector<int64_t>& idx = m.idx;
   if (idx.empty() && m.P.size() == 4) idx = {0, 1, 2, 3};
   if (idx.size() % 4) b.fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
-  std::vector<int64_t> tri;
-  for (size_t i = 0; i < idx.size(); i += 4) {
-    // Vertices p00 p10 p01 p11: two triangles (exact for planar patches).
-    tri.insert(tri.end(), {idx[i], idx[i + 1], idx[i + 3], idx[i], idx[i + 3], idx[i + 2]});
+  check_indices(b, d, idx, m.P.size());
+  if (!m.uvs.empty() && m.uvs.size() != m.P.size())
+    b.fail(ps.find("uv")->at, "\"uv\" needs one per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.uvs.size()));
+  if (!m.N.empty() && m.N.size() != m.P.size())
+    b.fail(ps.find("N")->at, "\"N\" needs one normal per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.N.size()));
+  constexpr int kMaxGrid = 64;
+  constexpr double kTolerance = 1e-4;
+  auto grid_for = [&](double twist, double tol) { return twist > 0 ? int(std::ceil(std::sqrt(twist / (4 * tol)))) : 1; };
+  MeshInput out;
+  int64_t capped = 0;
+  for (size_t k = 0; k < idx.size(); k += 4) {
+    const size_t c[4] = {size_t(idx[k]), size_t(idx[k + 1]), size_t(idx[k + 2]), size_t(idx[k + 3])};
+    const Vec3 p[4] = {m.P[c[0]], m.P[c[1]], m.P[c[2]], m.P[c[3]]};
+    std::array<float, 2> uv[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    if (!m.uvs.empty())
+      for (int i = 0; i < 4; ++i) uv[i] = m.uvs[c[i]];
+    const double size = std::max({length(p[1] - p[0]), length(p[2] - p[0]), length(p[3] - p[1]), length(p[3] - p[2])});
+    const double twist_p = length(p[0] - p[1] - p[2] + p[3]);
+    const double twist_uv = std::max(std::abs(uv[0][0] - uv[1][0] - uv[2][0] + uv[3][0]),
+                                     std::abs(uv[0][1] - uv[1][1] - uv[2][1] + uv[3][1]));
+    int n = std::max(grid_for(twist_p, kTolerance * size), grid_for(twist_uv, kTolerance));
+    if (n > kMaxGrid) n = kMaxGrid, ++capped;
+    const int64_t base = int64_t(out.P.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const float u = float(i) / float(n), v = float(j) / float(n);
+        const float w[4] = {(1 - u) * (1 - v), u * (1 - v), (1 - u) * v, u * v};
+        Vec3 q(0.0f), nn(0.0f);
+        std::array<float, 2> t = {0, 0};
+        for (int a = 0; a < 4; ++a) {
+          q = q + p[a] * w[a];
+          t[0] += w[a] * uv[a][0], t[1] += w[a] * uv[a][1];
+          if (!m.N.empty()) nn = nn + m.N[c[a]] * w[a];
+        }
+        out.P.push_back(q);
+        out.uvs.push_back(t);
+        if (!m.N.empty()) out.N.push_back(length(nn) > 0 ? normalize(nn) : m.N[c[0]]);
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int64_t a = base + j * (n + 1) + i, r = a + 1, up = a + (n + 1), ur = up + 1;
+        out.idx.insert(out.idx.end(), {a, r, ur, a, ur, up});  // p00 p10 p11, p00 p11 p01
+      }
   }
-  idx = tri;
-  b.note(d.at, "bilinear patches are split into two triangles each (exact only where they are planar)");
+  if (capped)
+    b.note(d.at, std::to_string(capped) + " bilinear patch(es) twisted beyond a " + std::to_string(kMaxGrid) + " x " +
+                     std::to_string(kMaxGrid) + " grid of triangles: position or uv there is off the patch by more than 1e-4");
+  m = std::move(out);
 }
 
 // Shape "loopsubdiv": `levels` Loop refinements to the limit surface (loop_subdivision.h).
@@ -125,11 +178,10 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     if (P.size() != 3) b.fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
     idx = {0, 1, 2};
   }
-  if (t == "bilinearmesh") split_bilinear_patches(b, d, m);
+  if (t != "plymesh" && t != "loopsubdiv") m.uvs = ps.point2s("uv");
+  if (t == "bilinearmesh") tessellate_bilinear_patches(b, d, m);
   if (idx.size() % 3) b.fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
-  for (int64_t i : idx)
-    if (i < 0 || uint64_t(i) >= P.size())
-      b.fail(ps.find("indices") ? ps.find("indices")->at : d.at, "index " + std::to_string(i) + " is out of range [0, " + std::to_string(P.size() - 1) + "]");
+  check_indices(b, d, idx, P.size());
   for (const Vec3& p : P)
     if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
   if (t == "loopsubdiv") subdivide(b, d, m);
@@ -138,7 +190,6 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     b.fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.N.size()));
   for (Vec3& n : m.N)
     if (!(length(n) > 0) || !is_finite(n)) b.fail(n_at, "\"N\" holds a zero or non-finite normal");
-  if (t != "plymesh" && t != "loopsubdiv") m.uvs = ps.point2s("uv");
   if (!m.uvs.empty() && m.uvs.size() != P.size())
     b.fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.uvs.size()));
   for (const char* k : {"S", "faceIndices"})
@@ -180,6 +231,36 @@ void disk(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     for (size_t i = 0; i < s.mesh.indices.size(); i += 3) std::swap(s.mesh.indices[i + 1], s.mesh.indices[i + 2]);
 }
 
+// The area pbrt-v4's DiffuseAreaLight divides a `power` by: a sphere's and a disk's in object
+// space (Sphere::Area, Disk::Area), a triangle's in world space. pbrt-v4 makes every triangle
+// of a mesh a light of that power; pdrt's mesh has one radiance, so triangles of unequal area
+// get their mean (the same total power, distributed evenly; noted).
+double emitter_area(PbrtBuild& b, const PbrtDirective& d, const ShapeDesc& s) {
+  const std::string& t = d.strings[0];
+  if (t == "sphere") {
+    const double r = d.params.get_float("radius", 1);
+    return 4 * kPbrtPi * r * r;
+  }
+  if (t == "disk") {
+    const double r = d.params.get_float("radius", 1), ri = d.params.get_float("innerradius", 0);
+    return kPbrtPi * (r * r - ri * ri);
+  }
+  const Affine m = b.gs.cur.ctm.t[0].to_affine();
+  double sum = 0, lo = INFINITY, hi = 0;
+  const std::vector<Vec3>& p = s.mesh.positions;
+  const std::vector<uint32_t>& ix = s.mesh.indices;
+  for (size_t i = 0; i + 2 < ix.size(); i += 3) {
+    const Vec3 a = m.point(p[ix[i]]), e1 = m.point(p[ix[i + 1]]) - a, e2 = m.point(p[ix[i + 2]]) - a;
+    const double area = 0.5 * double(length(cross(e1, e2)));
+    sum += area, lo = std::min(lo, area), hi = std::max(hi, area);
+  }
+  const size_t n = ix.size() / 3;
+  if (n > 1 && hi > lo * (1 + 1e-3))
+    b.note(d.at, "\"power\" of an area light on triangles of unequal area: pbrt-v4 gives each triangle that power, "
+                 "pdrt gives all of them the radiance of the mean triangle (the same total power)");
+  return n ? sum / double(n) : 0;
+}
+
 // The current area light as an emitter material of its own, else the current material.
 void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
   const PbrtAttributes& cur = b.gs.cur;
@@ -188,6 +269,12 @@ void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
     m.name = "area light at " + cur.area->at.str();
     m.type = MaterialType::Emitter;
     m.radiance = cur.area->radiance;
+    if (cur.area->power) {
+      // pbrt-v4 (DiffuseAreaLight::Create): scale *= power / (sides x pi x area).
+      const double area = emitter_area(b, d, s);
+      const double k = (cur.area->two_sided ? 2 : 1) * kPbrtPi * area;
+      m.radiance = k > 0 ? m.radiance * float(*cur.area->power / k) : Vec3(0.0f);
+    }
     m.two_sided = cur.area->two_sided;
     b.out.scene.materials.push_back(m);
     s.material = int(b.out.scene.materials.size()) - 1;

@@ -68,6 +68,32 @@ TEST(CameraSample, ImportanceWeightsIntegrateTheFilterAndItsMoments) {
   }
 }
 
+TEST(CameraSample, PbrtGaussianIsSeparableWithItsSigmaAndImportanceSampledExactly) {
+  // pbrt-v4's GaussianFilter: (g(x) - g(r)) (g(y) - g(r)), g the normal density of sigma 0.5.
+  FilterDesc d = filter_desc(FilterType::Gaussian, 1.5f);
+  d.sigma = 0.5f;
+  Filter filter(d);
+  auto g = [](double x) { return std::exp(-x * x / 0.5) / (std::sqrt(2 * M_PI) * 0.5); };
+  for (auto [x, y] : std::vector<std::pair<float, float>>{{0, 0}, {0.5f, 0.25f}, {-1.2f, 1.2f}, {1.4f, -0.3f}})
+    EXPECT_NEAR(filter.eval(x, y), (g(x) - g(1.5)) * (g(y) - g(1.5)), 1e-5) << x << "," << y;
+  // A square support: (1.2, 1.2) is 1.70 from the centre, outside Cook's radial Gaussian.
+  EXPECT_GT(filter.eval(1.2f, 1.2f), 0);
+  EXPECT_EQ(Filter(filter_desc(FilterType::Gaussian, 1.5f)).eval(1.2f, 1.2f), 0);
+  EXPECT_EQ(filter.eval(1.5f, 0), 0);
+  // Importance weights integrate it (mean within 4 standard errors).
+  auto sampler = make_sampler("random", 13);
+  PixelSampleState ps(*sampler);
+  const int n = 1 << 15;
+  double s = 0, s2 = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    CameraSample cs;
+    ASSERT_TRUE(get_camera_sample({filter}, int(i % 64), int(i / 64), 0, ps, &cs));
+    s += cs.weight, s2 += double(cs.weight) * cs.weight;
+  }
+  const double mean = s / n, se = std::sqrt(std::max(0.0, s2 / n - mean * mean) / n);
+  EXPECT_NEAR(mean, filter_integral(filter, [](double, double) { return 1.0; }), 4 * se + 1e-4);
+}
+
 TEST(CameraSample, ImportanceWastesNoWeightOnPositiveFilters) {
   // Offsets follow |f|, so the weights of a positive filter are nearly constant: the useful
   // fraction (E w)^2 / E w^2 of the Gaussian is >= 0.99 (0.58 when offsets were uniform over

@@ -890,6 +890,7 @@ TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent)
   Material floor;
   floor.type = MaterialType::Conductor;
   floor.roughness = std::pow(0.04f, 0.25f);
+  floor.energy_compensation = false;  // pbrt-v4 has none
   conductor_from_reflectance({0.9f, 0.6f, 0.3f}, &floor);
   ShapeDesc fq;
   fq.mesh.positions = {{-3, 0, -3}, {3, 0, -3}, {3, 0, 3}, {-3, 0, 3}};
@@ -1085,4 +1086,70 @@ TEST(PbrtImport, StratifiedSampleCountsTooLargeToMultiplyAreRefused) {
                          "[9000000000000000]\n" + std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n"),
             "s.pbrt:1:1: \"integer xsamples\" and \"integer ysamples\" must be in [1, 2^24], got 9000000000000000 and "
             "9000000000000000");
+}
+
+namespace {
+
+// Position and uv of the bilinear patch with corners p00 p10 p01 p11 at (u, v).
+template <class T>
+T bilerp(const T c[4], double u, double v) {
+  return c[0] * float((1 - u) * (1 - v)) + c[1] * float(u * (1 - v)) + c[2] * float((1 - u) * v) + c[3] * float(u * v);
+}
+
+// Largest distance between points linearly interpolated on the imported triangles and the
+// patch at the same uv (uv is the patch's own (u, v) here), and the triangle count.
+double worst_patch_error(const MeshData& m, const Vec3 corners[4], int* triangles) {
+  double worst = 0;
+  *triangles = int(m.indices.size() / 3);
+  if (m.uvs.size() != m.positions.size()) return INFINITY;  // the patch's uv must be there
+  for (size_t t = 0; t < m.indices.size(); t += 3)
+    for (auto [b1, b2] : std::vector<std::pair<float, float>>{{1.f / 3, 1.f / 3}, {0.5f, 0.5f}, {0.5f, 0}, {0.1f, 0.7f}}) {
+      const float b0 = 1 - b1 - b2;
+      const uint32_t i0 = m.indices[t], i1 = m.indices[t + 1], i2 = m.indices[t + 2];
+      const Vec3 q = m.positions[i0] * b0 + m.positions[i1] * b1 + m.positions[i2] * b2;
+      const double u = b0 * m.uvs[i0][0] + b1 * m.uvs[i1][0] + b2 * m.uvs[i2][0];
+      const double v = b0 * m.uvs[i0][1] + b1 * m.uvs[i1][1] + b2 * m.uvs[i2][1];
+      worst = std::max(worst, double(length(q - bilerp(corners, u, v))));
+    }
+  return worst;
+}
+
+}  // namespace
+
+TEST(PbrtImport, TwistedBilinearPatchIsTessellatedWithinItsToleranceWithBilinearUv) {
+  // A saddle: two triangles would miss its centre by 0.25; pbrt-v4 intersects the patch.
+  const Vec3 corners[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1}};
+  PbrtImport im = import(std::string(kCamera) + "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0  1 1 1]\n");
+  ASSERT_EQ(im.scene.shapes.size(), 1u);
+  int triangles = 0;
+  EXPECT_LT(worst_patch_error(im.scene.shapes[0].mesh, corners, &triangles), 1e-4 * std::sqrt(2.0));
+  EXPECT_GT(triangles, 2);
+  EXPECT_LE(triangles, 2 * 64 * 64);
+  EXPECT_TRUE(im.report.empty());
+}
+
+TEST(PbrtImport, PlanarPatchWithNonAffineUvGetsBilinearUvNotADiagonalSeam) {
+  // The unit square with uv corners (0,0) (1,0) (0,1) (2,2): uv is bilinear in position.
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0  1 1 0] "
+                         "\"point2 uv\" [0 0  1 0  0 1  2 2]\n");
+  ASSERT_EQ(im.scene.shapes.size(), 1u);
+  const MeshData& m = im.scene.shapes[0].mesh;
+  const std::array<float, 2> uv[4] = {{0, 0}, {1, 0}, {0, 1}, {2, 2}};
+  ASSERT_EQ(m.uvs.size(), m.positions.size());
+  double worst = 0;
+  for (size_t t = 0; t < m.indices.size(); t += 3)
+    for (auto [b1, b2] : std::vector<std::pair<float, float>>{{1.f / 3, 1.f / 3}, {0.5f, 0.5f}, {0.1f, 0.7f}}) {
+      const float b0 = 1 - b1 - b2;
+      const uint32_t i[3] = {m.indices[t], m.indices[t + 1], m.indices[t + 2]};
+      const Vec3 q = m.positions[i[0]] * b0 + m.positions[i[1]] * b1 + m.positions[i[2]] * b2;
+      for (int k = 0; k < 2; ++k) {
+        const double got = b0 * m.uvs[i[0]][k] + b1 * m.uvs[i[1]][k] + b2 * m.uvs[i[2]][k];
+        const double want = (1 - q.x) * (1 - q.y) * uv[0][k] + q.x * (1 - q.y) * uv[1][k] + (1 - q.x) * q.y * uv[2][k] +
+                            q.x * q.y * uv[3][k];
+        worst = std::max(worst, std::abs(got - want));
+      }
+    }
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_GT(m.indices.size(), 6u);
 }

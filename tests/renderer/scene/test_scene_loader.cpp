@@ -286,6 +286,19 @@ TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {
   EXPECT_FLOAT_EQ(s.film.filter.radius, 0.5f);
 }
 
+TEST_F(SceneLoader, GaussianSigmaSelectsPbrtsSeparableGaussianAndOnlyForGaussians) {
+  SceneDesc s = load_scene(scene(
+      "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+      " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"gaussian\", \"sigma\": 0.5}}}"));
+  EXPECT_FLOAT_EQ(s.film.filter.sigma, 0.5f);
+  EXPECT_ERROR(scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+                     " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"box\", \"sigma\": 0.5}}}"),
+               "film.filter.sigma is a parameter of the \"gaussian\" filter only, not of \"box\"");
+  EXPECT_ERROR(scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+                     " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"sigma\": -1}}}"),
+               "film.filter.sigma");
+}
+
 TEST_F(SceneLoader, MaterialTypeDefaults) {
   SceneDesc s = load_scene(scene(kHead + R"(  "materials": {
     "d": {"type": "diffuse"}, "g": {"type": "glossy", "roughness": 0.5},

@@ -3,6 +3,7 @@
 #include "sampling/generators/pmj02bn.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/fixed_point.h"
 #include "sampling/core/rng.h"
 #include "sampling/generators/generator.h"
 
@@ -18,11 +19,6 @@
 
 namespace pdrt {
 namespace {
-
-constexpr double kFixed = 0x1.0p-32;
-
-// The top `bits` bits of a 32-bit fixed-point coordinate.
-uint32_t top(uint32_t v, int bits) { return bits ? v >> (32 - bits) : 0u; }
 
 class Builder {
  public:
@@ -70,7 +66,9 @@ class Builder {
 
   int64_t size() const { return int64_t(xy_.size() / 2); }
 
-  Square sub_square(uint32_t i, int d) const { return {top(xy_[2 * i], d), top(xy_[2 * i + 1], d)}; }
+  Square sub_square(uint32_t i, int d) const {
+    return {fixed_top_bits(xy_[2 * i], d), fixed_top_bits(xy_[2 * i + 1], d)};
+  }
 
   std::vector<uint32_t> shuffled(uint32_t n) {
     std::vector<uint32_t> v(n);
@@ -89,36 +87,22 @@ class Builder {
     return (std::size_t(a) << L_) | (std::size_t(xbits) << (L_ - a)) | ybits;
   }
   void mark(uint32_t X, uint32_t Y) {
-    for (int a = 0; a <= L_; ++a) occ_[interval(a, top(X, a), top(Y, L_ - a))] = 1;
+    for (int a = 0; a <= L_; ++a) occ_[interval(a, fixed_top_bits(X, a), fixed_top_bits(Y, L_ - a))] = 1;
   }
 
-  // The L-bit x strata of sub-square (qx, qy) (d bits each) that leave every interval with more
-  // than d bits of x empty; y's bits of such a shape are fewer than d, so the sub-square fixes
-  // them (Pharr 2019: the x and the y choices are independent). Grown one bit at a time.
-  void valid_x(uint32_t qx, uint32_t qy, int d, std::vector<uint32_t>& out) const {
-    out.assign(1, qx);
-    for (int a = d + 1; a <= L_; ++a) {
-      const uint32_t yb = qy >> (d - (L_ - a));
-      const std::size_t live = out.size();
-      for (std::size_t j = 0; j < live; ++j)
+  // The L-bit strata of `axis` (0: x, 1: y) in sub-square (qx, qy) (d bits each) that leave
+  // every interval with more than d bits on that axis empty. The other axis has fewer than d bits
+  // in such a shape, which the sub-square fixes, so the x and the y choices are independent
+  // (Pharr 2019). Grown one bit at a time, dropping the children whose interval is taken.
+  void valid_strata(int axis, uint32_t qx, uint32_t qy, int d, std::vector<uint32_t>& out) const {
+    out.assign(1, axis ? qy : qx);
+    for (int bits = d + 1; bits <= L_; ++bits) {
+      const int other = L_ - bits;
+      const uint32_t fixed = (axis ? qx : qy) >> (d - other);
+      for (uint32_t prefix : out)
         for (uint32_t bit = 0; bit < 2; ++bit) {
-          const uint32_t xb = (out[j] << 1) | bit;
-          if (!occ_[interval(a, xb, yb)]) tmp_.push_back(xb);
-        }
-      out.swap(tmp_);
-      tmp_.clear();
-    }
-  }
-  void valid_y(uint32_t qx, uint32_t qy, int d, std::vector<uint32_t>& out) const {
-    out.assign(1, qy);
-    for (int b = d + 1; b <= L_; ++b) {
-      const int a = L_ - b;
-      const uint32_t xb = qx >> (d - a);
-      const std::size_t live = out.size();
-      for (std::size_t j = 0; j < live; ++j)
-        for (uint32_t bit = 0; bit < 2; ++bit) {
-          const uint32_t yb = (out[j] << 1) | bit;
-          if (!occ_[interval(a, xb, yb)]) tmp_.push_back(yb);
+          const uint32_t c = (prefix << 1) | bit;
+          if (!occ_[axis ? interval(other, fixed, c) : interval(bits, c, fixed)]) tmp_.push_back(c);
         }
       out.swap(tmp_);
       tmp_.clear();
@@ -146,8 +130,8 @@ class Builder {
       Option& p = opt[live];
       p.q = options[o];
       if (!square_free(p.q.first, p.q.second, d)) continue;
-      valid_x(p.q.first, p.q.second, d, p.xs);
-      valid_y(p.q.first, p.q.second, d, p.ys);
+      valid_strata(0, p.q.first, p.q.second, d, p.xs);
+      valid_strata(1, p.q.first, p.q.second, d, p.ys);
       if (!p.xs.empty() && !p.ys.empty()) ++live;
     }
     if (!live) throw std::logic_error("pmj02bn: no valid stratum left for point " + std::to_string(size()));
@@ -163,7 +147,7 @@ class Builder {
         bx = X, by = Y;
         break;
       }
-      const double dist = nearest(X * kFixed, Y * kFixed, best);
+      const double dist = nearest(unit_from_u32(X), unit_from_u32(Y), best);
       if (dist > best) best = dist, bx = X, by = Y;
     }
     add(bx, by);
@@ -179,7 +163,7 @@ class Builder {
   }
   std::size_t cell(uint32_t X, uint32_t Y) const {
     const int d = std::countr_zero(unsigned(g_));
-    return std::size_t(top(Y, d)) * g_ + top(X, d);
+    return std::size_t(fixed_top_bits(Y, d)) * g_ + fixed_top_bits(X, d);
   }
 
   // Toroidal distance from (x, y) to the nearest point; stops early with some distance at most
@@ -191,7 +175,8 @@ class Builder {
     auto visit = [&](int i, int j) {
       const int32_t p = grid_[std::size_t((j + g_) % g_) * g_ + std::size_t((i + g_) % g_)];
       if (p < 0) return false;
-      double dx = std::abs(xy_[2 * std::size_t(p)] * kFixed - x), dy = std::abs(xy_[2 * std::size_t(p) + 1] * kFixed - y);
+      const uint32_t* q = xy_.data() + 2 * std::size_t(p);
+      double dx = std::abs(unit_from_u32(q[0]) - x), dy = std::abs(unit_from_u32(q[1]) - y);
       dx = std::min(dx, 1.0 - dx), dy = std::min(dy, 1.0 - dy);
       best2 = std::min(best2, dx * dx + dy * dy);
       return best2 <= stop2;
@@ -208,7 +193,8 @@ class Builder {
   }
 
   void add(uint32_t X, uint32_t Y) {
-    const double near = size() ? nearest(X * kFixed, Y * kFixed, -1.0) : std::numeric_limits<double>::infinity();
+    const double inf = std::numeric_limits<double>::infinity();
+    const double near = size() ? nearest(unit_from_u32(X), unit_from_u32(Y), -1.0) : inf;
     min_ = std::min(min_, near);
     radius_.push_back(min_);
     grid_[cell(X, Y)] = int32_t(size());
@@ -256,7 +242,7 @@ PointSet pmj02bn(int64_t count, uint64_t seed, int candidates) {
   ps.periodic = true;
   const std::vector<uint32_t> xy = b.take_xy();
   ps.coords.reserve(xy.size());
-  for (uint32_t v : xy) ps.coords.push_back(v * kFixed);
+  for (uint32_t v : xy) ps.coords.push_back(unit_from_u32(v));
   ps.radius = b.take_radius();
   return ps;
 }

@@ -60,7 +60,8 @@ class Pmj02bnSampler final : public Sampler {
     perm.resize(n);
     IndexShuffle(h ^ kShuffleSalt).fill(n, perm.data());
     out->own.resize(2 * std::size_t(n));
-    for (uint32_t i = 0; i < n; ++i) std::memcpy(out->own.data() + 2 * std::size_t(i), seq + 2 * std::size_t(perm[i]), 8);
+    for (uint32_t i = 0; i < n; ++i)
+      std::memcpy(out->own.data() + 2 * std::size_t(i), seq + 2 * std::size_t(perm[i]), 8);
     out->coords = out->own.data();
     out->count = n;
     out->grows = n < kLength;

@@ -264,7 +264,7 @@ void SceneParser::film(const JsonObject& o) {
 void SceneParser::sampler(const JsonObject& o) {
   o.allow({"type", "spp", "seed", "adaptive"});
   SamplerDesc& s = scene_.sampler;
-  if (auto n = o.get("type")) s.type = n->choice({"random", "jitter", "poisson", "poisson-065", "sobol", "regular"});
+  if (auto n = o.get("type")) s.type = n->choice({"random", "jitter", "poisson", "poisson-065", "sobol", "pmj02bn", "regular"});
   if (auto n = o.get("spp")) s.spp = int(n->integer_in(kSppRange));
   if (auto n = o.get("seed")) s.seed = n->integer_in(kSeedRange);
   if (auto n = o.get("adaptive")) {

@@ -11,4 +11,7 @@ inline uint32_t to_fixed(double x) {
   return v <= 0 ? 0u : v >= 4294967295.0 ? 4294967295u : uint32_t(v);
 }
 
+// The top `bits` bits (0..32) of a fixed-point coordinate: its dyadic interval of width 2^-bits.
+constexpr uint32_t fixed_top_bits(uint32_t v, int bits) { return bits ? v >> (32 - bits) : 0u; }
+
 }  // namespace pdrt

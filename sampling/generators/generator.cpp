@@ -25,6 +25,7 @@ const std::vector<MethodInfo>& methods() {
       {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false, true},
       {"stratified-pd", "2-D (0,2)-first hierarchical Poisson-disk on the torus: strata kept while rho >= 0.65 allows", 2, true, false, true},
       {"owen-pd", "2-D Owen-scrambled Sobol, scramble annealed for Poisson-disk prefixes ((0,m,2)-nets; periodic, count <= 65536)", 2, true, false, true},
+      {"pmj02bn", "2-D progressive multi-jittered (0,2), the best of m candidates per point (Christensen et al. 2018; periodic, count <= 65536)", 2, true, false, true},
   };
   return list;
 }
@@ -76,12 +77,13 @@ void validate(const GeneratorParams& p) {
     }
     throw UsageError("--method: unknown method '" + p.method + "' (known: " + known + ")");
   }
-  if (p.method == "owen-pd") {  // one fixed construction: 2-D, toroidal, at most 2^16 points
-    if (p.dim != 2) throw UsageError("--dim must be 2 for method 'owen-pd', got " + std::to_string(p.dim));
-    if (!p.periodic) throw UsageError("--periodic is required for method 'owen-pd' (its distances are toroidal)");
+  if (p.method == "owen-pd" || p.method == "pmj02bn") {  // 2-D constructions on the torus, at most 2^16 points
+    if (p.dim != 2) throw UsageError("--dim must be 2 for method '" + p.method + "', got " + std::to_string(p.dim));
+    if (!p.periodic)
+      throw UsageError("--periodic is required for method '" + p.method + "' (its distances are toroidal)");
     if (p.count && *p.count > kOwenPoissonMaxCount)
-      throw UsageError("--count must be at most " + std::to_string(kOwenPoissonMaxCount) + " for method 'owen-pd', got " +
-                       std::to_string(*p.count));
+      throw UsageError("--count must be at most " + std::to_string(kOwenPoissonMaxCount) + " for method '" + p.method +
+                       "', got " + std::to_string(*p.count));
   }
   if (p.dim < 1 || p.dim > m->max_dim)
     throw UsageError("--dim must be between 1 and " + std::to_string(m->max_dim) + " for method '" + p.method +
@@ -141,6 +143,7 @@ PointSet generate(const GeneratorParams& p) {
   else if (m == "stratified-bc") out = generate_stratified_bc(p);
   else if (m == "stratified-pd") out = generate_stratified_pd(p);
   else if (m == "owen-pd") out = generate_owen_pd(p);
+  else if (m == "pmj02bn") out = generate_pmj02bn(p);
   else out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;

@@ -15,7 +15,7 @@
 namespace pdrt {
 
 inline constexpr IntRange kLloydIterationsRange{0, 10000};
-inline constexpr int64_t kOwenPoissonMaxCount = 65536;  // owen-pd: 2^16 Sobol points
+inline constexpr int64_t kOwenPoissonMaxCount = 65536;  // owen-pd: 2^16 Sobol points; pmj02bn too
 
 struct GeneratorParams {
   std::string method = "gamito";
@@ -30,7 +30,7 @@ struct GeneratorParams {
   // (30 + magnification x placed, McCool §4); best-candidate:
   // candidates per placed point m (1); lloyd: Monte Carlo probes per site (64); balanced:
   // darts per placed point, the best kept (32); stratified-bc: candidates per point (16);
-  // stratified-pd: open intervals tried per point (64).
+  // stratified-pd: open intervals tried per point (64); pmj02bn: candidates per point (10).
   std::optional<int64_t> attempts;
   std::optional<double> decay;          // mccool: radius multiplier per step, in (0,1) (0.97)
   std::optional<double> magnification;  // mccool: extra missed darts allowed per placed point (128)
@@ -87,5 +87,6 @@ PointSet generate_balanced(const GeneratorParams& p);
 PointSet generate_stratified_bc(const GeneratorParams& p);
 PointSet generate_stratified_pd(const GeneratorParams& p);
 PointSet generate_owen_pd(const GeneratorParams& p);
+PointSet generate_pmj02bn(const GeneratorParams& p);
 
 }  // namespace pdrt

@@ -1,6 +1,7 @@
 #include "sampling/generators/stratified_poisson_2d.h"
 
 #include "sampling/core/errors.h"
+#include "sampling/core/fixed_point.h"
 #include "sampling/core/rng.h"
 #include "sampling/generators/generator.h"
 
@@ -16,8 +17,6 @@ namespace pdrt {
 namespace {
 
 constexpr double kFixed = 0x1.0p-32;
-
-uint32_t top(uint32_t v, int bits) { return bits ? v >> (32 - bits) : 0u; }
 
 // Nearest-point queries on the torus: a uniform grid searched ring by ring.
 class TorusGrid {
@@ -82,7 +81,7 @@ struct Level {
   uint8_t occ(int a, uint32_t i) const { return occ_[(std::size_t(a) << L) + i]; }
   std::vector<uint32_t> open;  // free intervals of the reference shape
 
-  static uint32_t index(uint32_t X, uint32_t Y, int a, int L) { return (top(X, a) << (L - a)) | top(Y, L - a); }
+  static uint32_t index(uint32_t X, uint32_t Y, int a, int L) { return (fixed_top_bits(X, a) << (L - a)) | fixed_top_bits(Y, L - a); }
 
   void reset(int level, const std::vector<uint32_t>& fixed_xy) {
     L = level, sx = (L + 1) / 2, sy = L - sx;

@@ -15,6 +15,7 @@ std::unique_ptr<Sampler> make_random_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_regular_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_progressive_jitter_sampler(uint64_t seed);
 std::unique_ptr<Sampler> make_sobol_sampler(uint64_t seed);
+std::unique_ptr<Sampler> make_pmj02bn_sampler(uint64_t seed);
 
 const char* family_name(Family f) {
   switch (f) {
@@ -31,7 +32,7 @@ void Sampler::prepare(int, int, Family, int, PreparedStream* out) const { out->c
 int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
 
 const std::vector<std::string>& sampler_names() {
-  static const std::vector<std::string> names = {"random", "jitter", "poisson", "poisson-065", "sobol"};
+  static const std::vector<std::string> names = {"random", "jitter", "poisson", "poisson-065", "sobol", "pmj02bn"};
   return names;
 }
 
@@ -55,6 +56,7 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
   if (name == "regular") return make_regular_sampler(seed);
   if (name == "jitter") return make_progressive_jitter_sampler(seed);
   if (name == "sobol") return make_sobol_sampler(seed);
+  if (name == "pmj02bn") return make_pmj02bn_sampler(seed);
   if (name == "poisson") return make_poisson_sampler(seed, default_tables());
   if (name == "poisson-065") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
   throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");

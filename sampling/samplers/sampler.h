@@ -203,8 +203,8 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol): unbiased over seeds,
-// the ones every sampler test and `compare`'s defaults cover.
+// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol, pmj02bn): unbiased over seeds,
+// the ones every sampler test covers (`compare` defaults to the first five).
 const std::vector<std::string>& sampler_names();
 // Every name `make_sampler` accepts: sampler_names() and the `regular` baseline (the same
 // deterministic pattern in every pixel, Cook's regular sampling; biased, for aliasing demos).

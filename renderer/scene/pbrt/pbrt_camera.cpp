@@ -170,7 +170,7 @@ void sampler(PbrtBuild& b, const PbrtDirective& d) {
   const std::string& t = d.strings[0];
   SamplerDesc& s = b.out.scene.sampler;
   if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = "sobol";
-  else if (t == "pmj02bn") s.type = "poisson";
+  else if (t == "pmj02bn") s.type = "pmj02bn";
   else if (t == "stratified") s.type = "jitter";
   else if (t == "independent") s.type = "random";
   else b.note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");

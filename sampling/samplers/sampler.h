@@ -3,6 +3,7 @@
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
 #include "sampling/core/derived_seeds.h"
+#include "sampling/samplers/sampler_names.h"
 #include "sampling/samplers/sampler_profile.h"
 
 #include <algorithm>
@@ -203,17 +204,14 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol): unbiased over seeds,
-// the ones every sampler test and `compare`'s defaults cover.
+// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol): the ones every
+// sampler test and `compare`'s defaults cover.
 const std::vector<std::string>& sampler_names();
-// Every name `make_sampler` accepts: sampler_names() and the `regular` baseline (the same
-// deterministic pattern in every pixel, Cook's regular sampling; biased, for aliasing demos).
+// Every name `make_sampler` accepts: sampler_names() and `regular`.
 const std::vector<std::string>& all_sampler_names();
 std::string sampler_name_list();  // "random, jitter, ..., regular"
 
 // Throws UsageError naming the sampler for an unknown name.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed);
-
-
-
+std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed);
 }  // namespace pdrt

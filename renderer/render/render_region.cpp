@@ -15,9 +15,6 @@ RenderRegion render_region(const SceneDesc& desc) {
   const int W = desc.film.width, H = desc.film.height;
   RenderRegion r;
   r.crop = crop_pixels(desc.film.crop_window, W, H);
-  if (r.crop.empty())
-    throw InputError(desc.film.size_where + ": film.crop_window covers no pixel of the " + std::to_string(W) + "x" +
-                     std::to_string(H) + " film");
   const int reach =
       desc.film.filter.reconstruction == Reconstruction::Splat ? int(std::ceil(desc.film.filter.radius)) + 1 : 0;
   int margin = reach;

@@ -13,6 +13,7 @@
 #include "renderer/render/tile_passes.h"
 #include "renderer/render/tile_waves.h"
 #include "renderer/render/warning_relay.h"
+#include "renderer/scene/render_settings.h"
 #include "sampling/core/errors.h"
 
 #include <tbb/global_control.h>
@@ -41,9 +42,8 @@ void check_film_memory(int width, int height, const std::string& where, int film
 // gathered over the ranks, with their warnings.
 RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
   const AdaptiveDesc& ad = desc.sampler.adaptive;
-  const bool split = ad.enabled && ad.decision == "split";
-  if (split && desc.film.filter.reconstruction == Reconstruction::Rank)
-    throw InputError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
+  check_render_settings(desc);
+  const bool split = ad.enabled && ad.decision == AdaptiveDecision::Split;
   const RenderRegion region = render_region(desc);
   check_film_memory(region.rect.width(), region.rect.height(), desc.film.size_where, split ? 2 : 1);
   std::optional<tbb::global_control> limit;

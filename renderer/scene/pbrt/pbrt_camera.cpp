@@ -1,7 +1,9 @@
 #include "renderer/scene/pbrt/pbrt_build_context.h"
 
 #include "renderer/scene/crop_window.h"
+#include "renderer/scene/render_settings.h"
 #include "sampling/core/errors.h"
+#include "sampling/samplers/sampler_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,9 +118,8 @@ void crop(PbrtBuild& b, const PbrtParams& ps) {
     f.crop_window = {unit(std::min(c[0], c[1])), unit(std::max(c[0], c[1])), unit(std::min(c[2], c[3])),
                      unit(std::max(c[2], c[3]))};
   }
-  if (crop_pixels(f.crop_window, f.width, f.height).empty())
-    b.fail((cw ? cw : pb)->at, std::string(cw ? "\"float cropwindow\"" : "\"integer pixelbounds\"") + " covers no pixel of the " +
-                                 std::to_string(f.width) + "x" + std::to_string(f.height) + " film");
+  if (std::string p = crop_window_problem(f); !p.empty())
+    b.fail((cw ? cw : pb)->at, std::string(cw ? "\"float cropwindow\" " : "\"integer pixelbounds\" ") + p);
 }
 
 void film(PbrtBuild& b, const PbrtDirective& d) {
@@ -169,10 +170,11 @@ void filter(PbrtBuild& b, const PbrtDirective& d) {
 void sampler(PbrtBuild& b, const PbrtDirective& d) {
   const std::string& t = d.strings[0];
   SamplerDesc& s = b.out.scene.sampler;
-  if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = "sobol";
-  else if (t == "pmj02bn") s.type = "poisson";
-  else if (t == "stratified") s.type = "jitter";
-  else if (t == "independent") s.type = "random";
+  // pbrt-v4's samplers as the pdrt sampler nearest each.
+  if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = sampler_name(SamplerKind::Sobol);
+  else if (t == "pmj02bn") s.type = sampler_name(SamplerKind::Poisson);
+  else if (t == "stratified") s.type = sampler_name(SamplerKind::Jitter);
+  else if (t == "independent") s.type = sampler_name(SamplerKind::Random);
   else b.note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");
   int64_t spp = 16;
   if (t == "stratified") {

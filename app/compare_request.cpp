@@ -21,13 +21,15 @@ namespace pdrt::cli {
 
 namespace {
 
-// The part of `render`'s overrides that compare has: the film's size, the reconstruction and
-// the adaptive sweep's metric, variance and decision.
+// The part of `render`'s overrides that compare has: the film's size, the reconstruction, the
+// adaptive sweep's metric, variance and decision, and path regularisation, off unless asked (a
+// scene's own integrator.regularize is not what compare measures).
 SceneOverrides scene_overrides(const CompareRequest& r) {
   SceneOverrides o;
   o.width = r.width, o.height = r.height;
   o.reconstruction = r.reconstruction;
   o.metric = r.adaptive_metric, o.variance = r.adaptive_variance, o.decision = r.adaptive_decision;
+  o.regularize = r.regularize;
   return o;
 }
 
@@ -89,7 +91,6 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
     scene = load_scene(r.scene, r.strict);
     c.scene_content = scene_content(scene, read);
   }
-  // Unbiased unless asked: a scene's own integrator.regularize is not what compare measures.
   if (check_budget && !r.quiet) {
     if (scene.integrator.regularize && !r.regularize)
       std::fprintf(stderr, "pdrt compare: %s sets integrator.regularize; compare renders without it (unbiased) "
@@ -98,7 +99,6 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
       std::fprintf(stderr, "pdrt compare: --regularize: the renders are biased (path regularisation), the reference "
                            "is not\n");
   }
-  scene.integrator.regularize = r.regularize;
   apply_overrides(scene_overrides(r), scene);
   // What compare renders: the scene without adaptive refinement, and with --adaptive the sweep.
   SceneDesc rendered = scene;

@@ -237,7 +237,9 @@ void SceneParser::film(const JsonObject& o) {
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
     if (auto old = fo.get("selection"))
-      old->fail_key("was replaced by \"reconstruction\": \"importance\" (default), \"splat\" or \"rank\"");
+      old->fail_key(std::string("was replaced by \"reconstruction\": \"") + reconstruction_name(Reconstruction::Importance) +
+                    "\" (default), \"" + reconstruction_name(Reconstruction::Splat) + "\" or \"" +
+                    reconstruction_name(Reconstruction::Rank) + "\"");
     fo.allow({"type", "radius", "reconstruction"});
     std::string type = "gaussian";
     if (auto t = fo.get("type")) type = t->choice({"box", "tent", "gaussian", "mitchell"});

@@ -41,11 +41,13 @@ void add_compare_command(CLI::App& app) {
   add_real_option(cmd, "--adaptive-threshold", o->adaptive_threshold,
                   "Centre of the sweep (default: the scene's, else the metric's default)");
   cmd->add_option("--adaptive-metric", o->adaptive_metric,
-                  "error-per-sample | relative-error | contrast (default: the scene's)");
-  cmd->add_option("--adaptive-variance", o->adaptive_variance, "samples | halves (default: the scene's)");
-  cmd->add_option("--adaptive-decision", o->adaptive_decision, "shared | split (default: the scene's)");
+                  name_list(kAdaptiveMetricNames, " | ") + " (default: the scene's)");
+  cmd->add_option("--adaptive-variance", o->adaptive_variance,
+                  name_list(kAdaptiveVarianceNames, " | ") + " (default: the scene's)");
+  cmd->add_option("--adaptive-decision", o->adaptive_decision,
+                  name_list(kAdaptiveDecisionNames, " | ") + " (default: the scene's)");
   cmd->add_option("--reconstruction", o->reconstruction,
-                  "importance | splat | rank, for every render and the reference (default: the scene's)");
+                  name_list(kReconstructionNames, " | ") + ", for every render and the reference (default: the scene's)");
   add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
                      "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
       ->default_str("64");

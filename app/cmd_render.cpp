@@ -6,6 +6,7 @@
 #include "app/numeric_option.h"
 #include "app/output_path.h"
 #include "app/partial_summary.h"
+#include "app/scene_overrides.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
@@ -62,20 +63,81 @@ nlohmann::json spp_distribution(const std::vector<float>& samples) {
   return j;
 }
 
+// The image's metadata: what rendered it and how.
+Metadata image_metadata(const std::string& scene_file, const SceneDesc& scene, const RenderResult& r) {
+  const AdaptiveDesc& ad = scene.sampler.adaptive;
+  Metadata md = {{"Software", std::string("pdrt ") + PDRT_VERSION},
+                 {"pdrt:version", PDRT_VERSION},
+                 {"pdrt:scene", scene_file},
+                 {"pdrt:sampler", scene.sampler.type},
+                 {"pdrt:spp", std::to_string(scene.sampler.spp)},
+                 {"pdrt:reconstruction", reconstruction_name(scene.film.filter.reconstruction)},
+                 {"pdrt:seed", std::to_string(scene.sampler.seed)},
+                 {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
+                 {"pdrt:partial", r.stats.partial ? "true" : "false"}};
+  // Biased options are named wherever the image goes.
+  if (scene.integrator.regularize) md.push_back({"pdrt:regularize", "true"});
+  if (ad.enabled)
+    md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
+                                       ", " + adaptive_metric_name(ad.metric) + " " +
+                                       std::to_string(effective_threshold(ad)) + ", decision " +
+                                       adaptive_decision_name(ad.decision)});
+  return md;
+}
+
+// The --stats file.
+nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene, const RenderResult& r) {
+  const AdaptiveDesc& ad = scene.sampler.adaptive;
+  nlohmann::json j;
+  j["scene"] = scene_file;
+  j["sampler"] = scene.sampler.type;
+  j["seed"] = scene.sampler.seed;
+  j["width"] = scene.film.width;
+  j["height"] = scene.film.height;
+  if (scene.film.crop_window != std::array<float, 4>{0, 1, 0, 1}) {  // the image is the crop's size
+    const PixelRect c = crop_pixels(scene.film.crop_window, scene.film.width, scene.film.height);
+    j["crop_pixels"] = {c.x0, c.x1, c.y0, c.y1};
+  }
+  j["spp"] = scene.sampler.spp;
+  j["reconstruction"] = reconstruction_name(scene.film.filter.reconstruction);
+  j["regularize"] = scene.integrator.regularize;  // biased when true
+  j["seconds"] = r.stats.seconds;
+  j["rays"] = r.stats.rays;
+  j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
+  j["samples"] = r.stats.samples;
+  j["nonfinite_samples"] = r.stats.nonfinite_samples;
+  j["spp_mean"] = r.stats.spp_mean;
+  j["spp_distribution"] = spp_distribution(r.image.samples);
+  if (ad.enabled)
+    j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
+                     {"metric", adaptive_metric_name(ad.metric)},
+                     {"threshold", effective_threshold(ad)},
+                     {"variance", adaptive_variance_name(ad.variance)},
+                     {"decision", adaptive_decision_name(ad.decision)},
+                     {"rounds", r.stats.adaptive_rounds}};
+  j["cpu_seconds"] = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
+  j["sampler_share"] = profile_json(r.stats.sampler_profile);
+  j["triangles"] = r.stats.triangles;
+  j["threads"] = r.stats.threads;
+  j["partial"] = r.stats.partial;
+  if (r.stats.ranks.size() > 1) {
+    j["ranks"] = nlohmann::json::array();
+    for (const RankStats& k : r.stats.ranks)
+      j["ranks"].push_back({{"rank", k.rank}, {"seconds", k.seconds}, {"exchange_seconds", k.exchange_seconds},
+                            {"samples", k.samples}, {"rays", k.rays}, {"tiles", k.tiles}, {"bytes_sent", k.bytes_sent}});
+  }
+  return j;
+}
+
 }  // namespace
 
 void add_render_command(CLI::App& app) {
   struct Opts {
-    std::string scene, stats, sampler;
+    std::string scene, stats;
     std::vector<std::string> outs;
-    std::optional<int> spp, width, height;
-    std::optional<uint64_t> seed;
-    std::optional<int> min_spp, max_spp;
-    std::optional<double> threshold;
-    std::string metric, variance, decision, reconstruction;
+    SceneOverrides set;
     int threads = 0;
-    bool quiet = false, adaptive = false, allow_long = false, strict = false, regularize = false,
-         no_regularize = false;
+    bool quiet = false, allow_long = false, strict = false, regularize = false, no_regularize = false;
   };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("render", "Render a scene file (docs/scene-format.md) to an image.");
@@ -86,27 +148,29 @@ void add_render_command(CLI::App& app) {
                   "formats of the same render")
       ->required()
       ->allow_extra_args(false);
-  add_integer_option(cmd, "--spp", o->spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
-  cmd->add_option("--sampler", o->sampler, "random | jitter | poisson | poisson-065 | sobol | regular (overrides sampler.type)");
-  add_integer_option(cmd, "--seed", o->seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
+  SceneOverrides& set = o->set;
+  add_integer_option(cmd, "--spp", set.spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
+  cmd->add_option("--sampler", set.sampler, name_list(kSamplerNames, " | ") + " (overrides sampler.type)");
+  add_integer_option(cmd, "--seed", set.seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)");
-  add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
-  add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height in pixels (overrides film.height)");
+  add_integer_option(cmd, "--width", set.width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
+  add_integer_option(cmd, "--height", set.height, kFilmSizeRange, "Image height in pixels (overrides film.height)");
   cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
-  cmd->add_option("--reconstruction", o->reconstruction,
-                  "importance | splat | rank: how samples become pixels (overrides film.filter.reconstruction)");
-  cmd->add_flag("--adaptive", o->adaptive,
+  cmd->add_option("--reconstruction", set.reconstruction,
+                  name_list(kReconstructionNames, " | ") + ": how samples become pixels (overrides film.filter.reconstruction)");
+  cmd->add_flag("--adaptive", set.adaptive,
                 "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
                 "--max-spp option turns it on too)");
-  add_integer_option(cmd, "--min-spp", o->min_spp, kSppRange,
+  add_integer_option(cmd, "--min-spp", set.min_spp, kSppRange,
                      "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
-  add_integer_option(cmd, "--max-spp", o->max_spp, kSppRange,
+  add_integer_option(cmd, "--max-spp", set.max_spp, kSppRange,
                      "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
-  add_real_option(cmd, "--adaptive-threshold", o->threshold, "Adaptive: convergence threshold (default: the metric's)");
-  cmd->add_option("--adaptive-metric", o->metric, "Adaptive: error-per-sample | relative-error | contrast");
-  cmd->add_option("--adaptive-variance", o->variance, "Adaptive: samples | halves");
-  cmd->add_option("--adaptive-decision", o->decision,
-                  "Adaptive: shared | split (split: odd samples decide, even samples estimate; unbiased)");
+  add_real_option(cmd, "--adaptive-threshold", set.threshold, "Adaptive: convergence threshold (default: the metric's)");
+  cmd->add_option("--adaptive-metric", set.metric, "Adaptive: " + name_list(kAdaptiveMetricNames, " | "));
+  cmd->add_option("--adaptive-variance", set.variance, "Adaptive: " + name_list(kAdaptiveVarianceNames, " | "));
+  cmd->add_option("--adaptive-decision", set.decision,
+                  "Adaptive: " + name_list(kAdaptiveDecisionNames, " | ") +
+                      " (split: odd samples decide, even samples estimate; unbiased)");
   auto* regularize = cmd->add_flag(
       "--regularize", o->regularize,
       "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
@@ -122,19 +186,7 @@ void add_render_command(CLI::App& app) {
     // Validate every argument before loading or rendering anything (numbers are checked
     // while parsing: app/numeric_option.h).
     for (const auto& out : o->outs) require_output_path("-o/--out", out);
-    if (!o->sampler.empty()) {
-      bool known = false;
-      for (const auto& n : all_sampler_names()) known = known || n == o->sampler;
-      if (!known) throw UsageError("--sampler: unknown sampler \"" + o->sampler + "\" (" + sampler_name_list() + ")");
-    }
-    if (o->threshold && !(*o->threshold > 0 && std::isfinite(*o->threshold)))
-      throw UsageError("--adaptive-threshold must be > 0, got " + std::to_string(*o->threshold));
-    if (!o->metric.empty()) require_adaptive_choice("--adaptive-metric", o->metric, kAdaptiveMetrics);
-    if (!o->variance.empty()) require_adaptive_choice("--adaptive-variance", o->variance, kAdaptiveVariances);
-    if (!o->decision.empty()) require_adaptive_choice("--adaptive-decision", o->decision, kAdaptiveDecisions);
-    Reconstruction recon{};
-    if (!o->reconstruction.empty() && !parse_reconstruction(o->reconstruction, &recon))
-      throw UsageError("--reconstruction: unknown mode \"" + o->reconstruction + "\" (importance, splat, rank)");
+    check_override_names(o->set);
     for (std::size_t i = 0; i < o->outs.size(); ++i) {
       check_image_extension(o->outs[i]);
       for (std::size_t k = 0; k < i; ++k)
@@ -143,31 +195,14 @@ void add_render_command(CLI::App& app) {
     }
 
     SceneDesc scene = load_scene(o->scene, o->strict);
-    AdaptiveDesc& ad = scene.sampler.adaptive;
-    ad.enabled = ad.enabled || o->adaptive || o->min_spp || o->max_spp || o->threshold || !o->metric.empty() ||
-                 !o->variance.empty() || !o->decision.empty();
-    if (o->min_spp) ad.min_spp = *o->min_spp;
-    if (o->max_spp) ad.max_spp = *o->max_spp;
-    if (o->threshold) ad.threshold = *o->threshold;
-    if (!o->metric.empty()) ad.metric = o->metric;
-    if (!o->variance.empty()) ad.variance = o->variance;
-    if (!o->decision.empty()) ad.decision = o->decision;
-    if (ad.enabled && ad.min_spp > ad.max_spp)
-      throw UsageError("adaptive: min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" +
-                       std::to_string(ad.max_spp) + ")");
-    if (!o->reconstruction.empty()) scene.film.filter.reconstruction = recon;
-    if (ad.enabled && ad.decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
-      throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
-    if (o->spp) scene.sampler.spp = *o->spp;
-    if (!o->sampler.empty()) scene.sampler.type = o->sampler;
-    if (o->seed) scene.sampler.seed = *o->seed;
-    if (o->width) scene.film.width = *o->width;
-    if (o->height) scene.film.height = *o->height;
-    if (o->regularize) scene.integrator.regularize = true;
-    if (o->no_regularize) scene.integrator.regularize = false;
+    if (o->regularize) o->set.regularize = true;
+    if (o->no_regularize) o->set.regularize = false;
+    apply_overrides(o->set, scene);
+    check_overridden_settings(scene);
+    const AdaptiveDesc& ad = scene.sampler.adaptive;
+    const bool split = ad.enabled && ad.decision == AdaptiveDecision::Split;
     check_film_memory(scene.film.width, scene.film.height,
-                      o->width || o->height ? "--width/--height" : scene.film.size_where,
-                      ad.enabled && ad.decision == "split" ? 2 : 1);
+                      o->set.width || o->set.height ? "--width/--height" : scene.film.size_where, split ? 2 : 1);
     check_sample_budget(scene_sample_count(scene), describe_sample_count(scene), o->allow_long);
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
@@ -189,7 +224,7 @@ void add_render_command(CLI::App& app) {
       std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
                    format_sample_cost(scene_sample_count(scene)).c_str());
 
-    auto sampler = make_scene_sampler(scene.sampler);
+    auto sampler = make_scene_sampler(scene.sampler, scene.film);
     RenderOptions ro;
     ro.threads = o->threads;
     ro.quiet = quiet;
@@ -203,60 +238,11 @@ void add_render_command(CLI::App& app) {
       return;
     }
 
-    Metadata md = {{"Software", std::string("pdrt ") + PDRT_VERSION},
-                   {"pdrt:version", PDRT_VERSION},
-                   {"pdrt:scene", o->scene},
-                   {"pdrt:sampler", scene.sampler.type},
-                   {"pdrt:spp", std::to_string(scene.sampler.spp)},
-                   {"pdrt:reconstruction", reconstruction_name(scene.film.filter.reconstruction)},
-                   {"pdrt:seed", std::to_string(scene.sampler.seed)},
-                   {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
-                   {"pdrt:partial", r.stats.partial ? "true" : "false"}};
-    // Biased options are named wherever the image goes.
-    if (scene.integrator.regularize) md.push_back({"pdrt:regularize", "true"});
-    if (ad.enabled)
-      md.push_back({"pdrt:adaptive", "min_spp " + std::to_string(ad.min_spp) + ", max_spp " + std::to_string(ad.max_spp) +
-                                         ", " + ad.metric + " " + std::to_string(effective_threshold(ad)) +
-                                         ", decision " + ad.decision});
     // One render, every requested format; each file is written all-or-nothing.
+    const Metadata md = image_metadata(o->scene, scene, r);
     for (const auto& out : o->outs) write_image(out, r.image, md);
     if (!o->stats.empty()) {
-      nlohmann::json j;
-      j["scene"] = o->scene;
-      j["sampler"] = scene.sampler.type;
-      j["seed"] = scene.sampler.seed;
-      j["width"] = scene.film.width;
-      j["height"] = scene.film.height;
-      if (scene.film.crop_window != std::array<float, 4>{0, 1, 0, 1}) {  // the image is the crop's size
-        const PixelRect c = crop_pixels(scene.film.crop_window, scene.film.width, scene.film.height);
-        j["crop_pixels"] = {c.x0, c.x1, c.y0, c.y1};
-      }
-      j["spp"] = scene.sampler.spp;
-      j["reconstruction"] = reconstruction_name(scene.film.filter.reconstruction);
-      j["regularize"] = scene.integrator.regularize;  // biased when true
-      j["seconds"] = r.stats.seconds;
-      j["rays"] = r.stats.rays;
-      j["mrays_per_second"] = r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0;
-      j["samples"] = r.stats.samples;
-      j["nonfinite_samples"] = r.stats.nonfinite_samples;
-      j["spp_mean"] = r.stats.spp_mean;
-      j["spp_distribution"] = spp_distribution(r.image.samples);
-      if (ad.enabled)
-        j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
-                         {"metric", ad.metric},       {"threshold", effective_threshold(ad)},
-                         {"variance", ad.variance},   {"decision", ad.decision},
-                         {"rounds", r.stats.adaptive_rounds}};
-      j["cpu_seconds"] = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
-      j["sampler_share"] = profile_json(r.stats.sampler_profile);
-      j["triangles"] = r.stats.triangles;
-      j["threads"] = r.stats.threads;
-      j["partial"] = r.stats.partial;
-      if (r.stats.ranks.size() > 1) {
-        j["ranks"] = nlohmann::json::array();
-        for (const RankStats& k : r.stats.ranks)
-          j["ranks"].push_back({{"rank", k.rank}, {"seconds", k.seconds}, {"exchange_seconds", k.exchange_seconds},
-                                {"samples", k.samples}, {"rays", k.rays}, {"tiles", k.tiles}, {"bytes_sent", k.bytes_sent}});
-      }
+      const nlohmann::json j = stats_json(o->scene, scene, r);
       write_file_atomically(o->stats, [&](std::ostream& os) { os << j.dump(2) << "\n"; });
     }
     std::string names;

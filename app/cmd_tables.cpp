@@ -24,8 +24,10 @@ void add_tables_command(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("tables", "Generate the precomputed sample tables (one file per family and table set).");
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
-  cmd->add_option("--set", o->set, "Table set: poisson, poisson-065 or all")
-      ->check(CLI::IsMember({"poisson", "poisson-065", "all"}))
+  std::vector<std::string> sets;
+  for (TableSetKind k : kTableSets) sets.push_back(table_set_name(k));
+  cmd->add_option("--set", o->set, "Table set: " + sets[0] + ", " + sets[1] + " or all")
+      ->check(CLI::IsMember([&] { sets.push_back("all"); return sets; }()))
       ->default_str("all");
   add_integer_option(cmd, "--seed,-s", o->seed, IntRange{0, UINT64_MAX}, "Seed of the table set")->default_str("1");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");

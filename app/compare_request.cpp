@@ -2,6 +2,8 @@
 
 #include "app/numeric_option.h"
 #include "app/python_plots.h"
+#include "app/scene_overrides.h"
+#include "renderer/compare/compare_job.h"
 #include "renderer/render/renderer.h"
 #include "renderer/compare/scene_inputs.h"
 #include "renderer/render/sample_budget.h"
@@ -10,14 +12,49 @@
 #include "renderer/scene/scene_loader.h"
 #include "sampling/core/errors.h"
 #include "sampling/core/hash.h"
-#include "sampling/core/input_file.h"
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace pdrt::cli {
+
+namespace {
+
+// The part of `render`'s overrides that compare has: the film's size, the reconstruction, the
+// adaptive sweep's metric, variance and decision, and path regularisation, off unless asked (a
+// scene's own integrator.regularize is not what compare measures).
+SceneOverrides scene_overrides(const CompareRequest& r) {
+  SceneOverrides o;
+  o.width = r.width, o.height = r.height;
+  o.reconstruction = r.reconstruction;
+  o.metric = r.adaptive_metric, o.variance = r.adaptive_variance, o.decision = r.adaptive_decision;
+  o.regularize = r.regularize;
+  return o;
+}
+
+// The scene file's bytes and every other file the load read (meshes, included files, textures
+// and environment images): the scene's content, which keys the reference cache.
+std::string scene_content(const SceneDesc& scene, const InputFileRecord& read) {
+  std::string content = read.first_text();
+  content += scene_inputs_text(scene, read.files());
+  // A resampled environment (a pbrt octahedral map) is also keyed by the pixels made from it.
+  if (scene.environment.has_map()) {
+    const EnvironmentDesc& e = scene.environment;
+    const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));
+    content +=
+        "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " + std::to_string(fnv1a(px));
+  }
+  return content;
+}
+
+}  // namespace
+
+std::string default_samplers() {
+  std::string s;
+  for (const std::string& name : compare_default_sampler_names()) s += (s.empty() ? "" : ",") + name;
+  return s;
+}
 
 CompareOptions compare_options(const CompareRequest& r) {
   CompareOptions c;
@@ -32,9 +69,6 @@ CompareOptions compare_options(const CompareRequest& r) {
   for (const auto& t : split(r.spp)) c.spp.push_back(int(parse_integer_option("--spp", t, kSppRange)));
   c.adaptive = r.adaptive;
   c.adaptive_threshold = r.adaptive_threshold;
-  c.adaptive_metric = r.adaptive_metric;
-  c.adaptive_variance = r.adaptive_variance;
-  c.adaptive_decision = r.adaptive_decision;
   c.adaptive_target_spp = r.adaptive_target_spp;
   c.reference_spp = r.reference_spp;
   c.seeds = r.seeds;
@@ -43,9 +77,7 @@ CompareOptions compare_options(const CompareRequest& r) {
   c.cache_dir = r.cache;
   c.scene_label = r.label.empty() ? r.scene : r.label;
   validate_compare_options(c);
-  Reconstruction recon{};
-  if (!r.reconstruction.empty() && !parse_reconstruction(r.reconstruction, &recon))
-    throw UsageError("--reconstruction: unknown mode \"" + r.reconstruction + "\" (importance, splat, rank)");
+  check_override_names(scene_overrides(r));
   return c;
 }
 
@@ -53,29 +85,12 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   PreparedCompare p;
   CompareOptions& c = p.options;
   c = compare_options(r);
-  Reconstruction recon{};
-  if (!r.reconstruction.empty()) parse_reconstruction(r.reconstruction, &recon);
-
   SceneDesc& scene = p.scene;
-  InputFileRecord read;
-  scene = load_scene(r.scene, r.strict);
   {
-    std::ifstream in = open_for_reading(r.scene);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    c.scene_content = ss.str();
+    InputFileRecord read;
+    scene = load_scene(r.scene, r.strict);
+    c.scene_content = scene_content(scene, read);
   }
-  // Meshes, included files, textures and environment images are the scene's content too.
-  c.scene_content += scene_inputs_text(scene, read.files());
-  // A resampled environment (a pbrt octahedral map) is also keyed by the pixels made from it.
-  if (scene.environment.has_map()) {
-    const EnvironmentDesc& e = scene.environment;
-    const std::string_view px(reinterpret_cast<const char*>(e.rgb.data()), e.rgb.size() * sizeof(float));
-    c.scene_content +=
-        "|environment " + std::to_string(e.width) + "x" + std::to_string(e.height) + " " + std::to_string(fnv1a(px));
-  }
-  if (!r.reconstruction.empty()) scene.film.filter.reconstruction = recon;
-  // Unbiased unless asked: a scene's own integrator.regularize is not what compare measures.
   if (check_budget && !r.quiet) {
     if (scene.integrator.regularize && !r.regularize)
       std::fprintf(stderr, "pdrt compare: %s sets integrator.regularize; compare renders without it (unbiased) "
@@ -84,12 +99,12 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
       std::fprintf(stderr, "pdrt compare: --regularize: the renders are biased (path regularisation), the reference "
                            "is not\n");
   }
-  scene.integrator.regularize = r.regularize;
-  const std::string& decision = c.adaptive_decision.empty() ? scene.sampler.adaptive.decision : c.adaptive_decision;
-  if (c.adaptive && decision == "split" && scene.film.filter.reconstruction == Reconstruction::Rank)
-    throw UsageError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
-  if (r.width) scene.film.width = *r.width;
-  if (r.height) scene.film.height = *r.height;
+  apply_overrides(scene_overrides(r), scene);
+  // What compare renders: the scene without adaptive refinement, and with --adaptive the sweep.
+  SceneDesc rendered = scene;
+  rendered.sampler.adaptive.enabled = false;
+  if (c.adaptive) rendered.sampler.adaptive = sweep_adaptive(scene, c);
+  check_overridden_settings(rendered);
   if (check_budget) {
     check_film_memory(scene.film.width, scene.film.height, r.width || r.height ? "--width/--height" : scene.film.size_where);
     check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),

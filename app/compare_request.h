@@ -12,10 +12,13 @@
 
 namespace pdrt::cli {
 
+// "random,jitter,poisson,poisson-065,sobol": compare_default_sampler_names().
+std::string default_samplers();
+
 struct CompareRequest {
   std::string scene, label;  // the file to load; the name the report shows (default: scene)
   bool strict = false;
-  std::string samplers = "random,jitter,poisson,poisson-065,sobol", spp = "1,4,16,64,256", cache;
+  std::string samplers = default_samplers(), spp = "1,4,16,64,256", cache;
   std::optional<int> width, height;
   int reference_spp = 4096, threads = 0, seeds = 4;
   double adaptive_threshold = 0;

@@ -73,7 +73,7 @@ void BM_RawEmbreePrimaryShadow(benchmark::State& state) {
 // pdrt itself, max_depth 1 (primary, shadow and the MIS extension ray), manual time = the
 // rendering only (the BVH build is excluded, as for the raw loop).
 void BM_PdrtRenderDirect(benchmark::State& state) {
-  auto sampler = make_scene_sampler(scene().sampler);
+  auto sampler = make_scene_sampler(scene().sampler, scene().film);
   RenderOptions o;
   o.quiet = true;
   int64_t total = 0;

@@ -64,7 +64,7 @@ Measure measure(int count, bool instanced) {
     close(fd[0]);
     const auto t0 = std::chrono::steady_clock::now();
     SceneDesc s = grid_scene(count, instanced);
-    auto sampler = make_scene_sampler(s.sampler);
+    auto sampler = make_scene_sampler(s.sampler, s.film);
     RenderOptions o;
     o.quiet = true;
     RenderResult r = render(s, *sampler, o);

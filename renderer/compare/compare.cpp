@@ -43,8 +43,8 @@ void validate_compare_options(const CompareOptions& o) {
   if (o.samplers.empty()) throw UsageError("--samplers: give at least one sampler");
   std::set<std::string> seen;
   for (const auto& s : o.samplers) {
-    const auto& names = all_sampler_names();
-    if (std::find(names.begin(), names.end(), s) == names.end())
+    SamplerKind kind{};
+    if (!parse_sampler(s, &kind))
       throw UsageError("--samplers: unknown sampler \"" + s + "\" (" + sampler_name_list() + ")");
     if (!seen.insert(s).second) throw UsageError("--samplers: \"" + s + "\" given twice");
   }
@@ -53,11 +53,6 @@ void validate_compare_options(const CompareOptions& o) {
     if (o.spp[i] < 1) throw UsageError("--spp: sample counts must be >= 1, got " + std::to_string(o.spp[i]));
     if (i && o.spp[i] <= o.spp[i - 1]) throw UsageError("--spp: sample counts must increase");
   }
-  if (!o.adaptive_metric.empty()) require_adaptive_choice("--adaptive-metric", o.adaptive_metric, kAdaptiveMetrics);
-  if (!o.adaptive_variance.empty())
-    require_adaptive_choice("--adaptive-variance", o.adaptive_variance, kAdaptiveVariances);
-  if (!o.adaptive_decision.empty())
-    require_adaptive_choice("--adaptive-decision", o.adaptive_decision, kAdaptiveDecisions);
   if (o.adaptive_threshold < 0) throw UsageError("--adaptive-threshold must be > 0");
   if (o.adaptive && std::find(o.spp.begin(), o.spp.end(), o.adaptive_target_spp) == o.spp.end())
     throw UsageError("--adaptive-target-spp " + std::to_string(o.adaptive_target_spp) +

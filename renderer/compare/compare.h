@@ -3,6 +3,7 @@
 // each image's error against an independent high-spp reference, and writes a report
 // (results.json/csv, images, heat maps, crops, plots, index.html).
 #include "renderer/scene/scene_desc.h"
+#include "sampling/samplers/sampler.h"
 
 #include <filesystem>
 #include <functional>
@@ -12,17 +13,16 @@
 namespace pdrt {
 
 struct CompareOptions {
-  std::vector<std::string> samplers{"random", "jitter", "poisson", "poisson-065", "sobol"};
+  std::vector<std::string> samplers = compare_default_sampler_names();  // sampling/samplers/sampler_names.h
   std::vector<int> spp{1, 4, 16, 64, 256};
   bool adaptive = false;
-  double adaptive_threshold = 0;    // > 0: the centre of the threshold sweep (else the scene's, else the metric's default)
-  std::string adaptive_metric;      // non-empty overrides the metric
-  std::string adaptive_variance;    // non-empty overrides the variance estimator
-  std::string adaptive_decision;    // non-empty overrides the decision (shared | split)
+  // > 0: the centre of the threshold sweep (else the scene's, else the metric's default). The
+  // sweep's metric, variance and decision are the scene's (with the command line's overrides).
+  double adaptive_threshold = 0;
   int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
   int seeds = 4;                    // independent renders per (sampler, spp): compare_seed(scene seed, 0..seeds-1)
   int reference_spp = 4096;         // rendered as two independent halves, whose difference measures its noise
-  std::string reference_sampler = "sobol";
+  std::string reference_sampler = sampler_name(SamplerKind::Sobol);
   int threads = 0;
   bool quiet = false;
   std::filesystem::path out;

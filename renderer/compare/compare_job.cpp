@@ -117,13 +117,10 @@ std::string describe(const CompareJob& job) {
 }
 
 AdaptiveDesc sweep_adaptive(const SceneDesc& base, const CompareOptions& o) {
-  AdaptiveDesc ad = base.sampler.adaptive;
-  if (!ad.enabled) ad = AdaptiveDesc{}, ad.enabled = true;
+  AdaptiveDesc ad = base.sampler.adaptive;  // as a loader left it (defaults when off), with the overrides
+  ad.enabled = true;
   ad.min_spp = sweep_min_spp(o);
   ad.max_spp = sweep_max_spp(o);
-  if (!o.adaptive_metric.empty()) ad.metric = o.adaptive_metric;
-  if (!o.adaptive_variance.empty()) ad.variance = o.adaptive_variance;
-  if (!o.adaptive_decision.empty()) ad.decision = o.adaptive_decision;
   return ad;
 }
 
@@ -162,7 +159,7 @@ SceneDesc job_scene(const SceneDesc& base, const CompareOptions& o, const Compar
 CompareRender render_job(const SceneDesc& base, const CompareOptions& o, const CompareJob& job) {
   const SceneDesc s = job_scene(base, o, job);
   auto render_scene = [&] {
-    auto sampler = make_scene_sampler(s.sampler);
+    auto sampler = make_scene_sampler(s.sampler, s.film);
     RenderOptions ro;
     ro.threads = o.threads;
     ro.quiet = true;

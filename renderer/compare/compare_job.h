@@ -60,8 +60,9 @@ double job_cost(const CompareJob& job, const CompareOptions& o);
 // "reference half 1/2", "poisson 16 spp seed 2", "poisson adaptive step -4".
 std::string describe(const CompareJob& job);
 
-// The adaptive settings of every sweep step (the scene's, else the defaults, with the
-// comparison's overrides and spp range), and the sweep's centre threshold.
+// The adaptive settings of every sweep step (the scene's metric, variance and decision, which
+// are the defaults unless the scene or the command line set them, with the sweep's spp range),
+// and the sweep's centre threshold.
 AdaptiveDesc sweep_adaptive(const SceneDesc& base, const CompareOptions& o);
 double sweep_centre(const SceneDesc& base, const CompareOptions& o);
 double sweep_threshold(const SceneDesc& base, const CompareOptions& o, int step);

@@ -207,8 +207,8 @@ void add_adaptive(const CompareOptions& o, const CompareResults& results, json& 
                        {"seconds", r.seconds}});
       if (st.step != 0) continue;
       ja.push_back({{"sampler", s.sampler},
-                    {"metric", ad.metric},
-                    {"variance", ad.variance},
+                    {"metric", adaptive_metric_name(ad.metric)},
+                    {"variance", adaptive_variance_name(ad.variance)},
                     {"threshold", st.threshold},
                     {"min_spp", ad.min_spp},
                     {"max_spp", ad.max_spp},

@@ -92,7 +92,7 @@ UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, con
   {
     SamplerDesc d = ctx.base.sampler;
     d.type = name, d.seed = compare_seed(ctx.base.sampler.seed, 0);
-    const auto sampler = make_scene_sampler(d);
+    const auto sampler = make_scene_sampler(d, ctx.base.film);
     for (int f = 0; f < kFamilyCount; ++f)
       run.used.push_back(analyze_stream(*sampler, Family(f), ctx.width, ctx.height, n, kUsedSamplePixels));
   }

@@ -16,21 +16,13 @@ constexpr double kImageMeanFloor = 1e-4;
 
 }  // namespace
 
-void require_adaptive_choice(const std::string& flag, const std::string& value,
-                             std::initializer_list<const char*> names) {
-  std::string list;
-  for (const char* n : names) {
-    if (value == n) return;
-    list += (list.empty() ? "" : ", ") + std::string(n);
+double default_threshold(AdaptiveMetricKind metric) {
+  switch (metric) {
+    case AdaptiveMetricKind::ErrorPerSample: return 1.0 / 16;
+    case AdaptiveMetricKind::RelativeError: return 0.01;
+    case AdaptiveMetricKind::Contrast: return 0.4;
   }
-  throw UsageError(flag + " must be one of " + list + ", got \"" + value + "\"");
-}
-
-double default_threshold(const std::string& metric) {
-  if (metric == "error-per-sample") return 1.0 / 16;
-  if (metric == "relative-error") return 0.01;
-  if (metric == "contrast") return 0.4;
-  throw std::invalid_argument("unknown adaptive metric \"" + metric + "\"");
+  return 0;
 }
 
 double effective_threshold(const AdaptiveDesc& ad) {
@@ -38,16 +30,11 @@ double effective_threshold(const AdaptiveDesc& ad) {
 }
 
 AdaptiveMetric::AdaptiveMetric(const AdaptiveDesc& ad)
-    : halves_(ad.variance == "halves"), threshold_(effective_threshold(ad)) {
-  kind_ = ad.metric == "contrast"         ? Kind::Contrast
-          : ad.metric == "relative-error" ? Kind::RelativeError
-                                          : Kind::ErrorPerSample;
-  if (ad.variance != "samples" && !halves_) throw std::invalid_argument("unknown adaptive variance \"" + ad.variance + "\"");
-}
+    : kind_(ad.metric), halves_(ad.variance == AdaptiveVariance::Halves), threshold_(effective_threshold(ad)) {}
 
 bool AdaptiveMetric::converged(const PixelAccum& p) const {
   if (p.samples < 2 || p.w == 0) return false;  // no spread to judge yet
-  if (kind_ == Kind::Contrast) {
+  if (kind_ == AdaptiveMetricKind::Contrast) {
     // Mitchell (1987): per-channel thresholds t, 0.75 t, 1.5 t (0.4/0.3/0.6 for t = 0.4).
     const double scale[3] = {1.0, 0.75, 1.5};
     for (int k = 0; k < 3; ++k)
@@ -55,7 +42,7 @@ bool AdaptiveMetric::converged(const PixelAccum& p) const {
     return true;
   }
   const double var_of_mean = halves_ ? p.half_variance_of_mean() : p.variance_of_mean();
-  if (kind_ == Kind::RelativeError)
+  if (kind_ == AdaptiveMetricKind::RelativeError)
     return std::sqrt(var_of_mean) <= threshold_ * std::max(std::abs(p.mean_luminance()), kRelativeFloor);
   // error-per-sample: sqrt(V/n) with V the variance of the mean, i.e. sigma / n. One more
   // sample lowers the pixel's squared error by about sigma^2 / n^2, so stopping every pixel at

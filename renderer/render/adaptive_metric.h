@@ -1,21 +1,16 @@
 #pragma once
 // When a pixel of an adaptive render has converged: the metrics of `sampler.adaptive.metric`,
 // their default thresholds, and the `variance` estimators they read (docs/renderer.md). The
-// accepted names are scene_desc.h's, beside AdaptiveDesc.
+// names are scene/settings_names.h's.
 #include "renderer/render/film.h"
 #include "renderer/scene/scene_desc.h"
 
-#include <initializer_list>
 #include <string>
 
 namespace pdrt {
 
-// Throws UsageError "`flag` must be one of a, b, c, got "value"" unless `value` is a name.
-void require_adaptive_choice(const std::string& flag, const std::string& value,
-                             std::initializer_list<const char*> names);
-
 // Each metric's own default: error-per-sample 1/16, relative-error 0.01, contrast 0.4.
-double default_threshold(const std::string& metric);
+double default_threshold(AdaptiveMetricKind metric);
 
 // The threshold in force: the scene's (or command line's) if given, else the metric's default.
 double effective_threshold(const AdaptiveDesc& ad);
@@ -27,12 +22,12 @@ class AdaptiveMetric {
   // error-per-sample compares against the image's mean luminance; call before converged()
   // with the mean over all pixels of the current round.
   void set_image_mean(double mean_luminance) { image_mean_ = mean_luminance; }
-  bool needs_image_mean() const { return kind_ == Kind::ErrorPerSample; }
+  bool needs_image_mean() const { return kind_ == AdaptiveMetricKind::ErrorPerSample; }
 
   bool converged(const PixelAccum& p) const;
 
  private:
-  enum class Kind { ErrorPerSample, RelativeError, Contrast } kind_;
+  AdaptiveMetricKind kind_;
   bool halves_;
   double threshold_;
   double image_mean_ = 0;

@@ -6,10 +6,11 @@
 
 namespace pdrt {
 
-std::unique_ptr<Sampler> make_decision_sampler(const SamplerDesc& scene_sampler, const Sampler& sampler) {
+std::unique_ptr<Sampler> make_decision_sampler(const SamplerDesc& scene_sampler, const FilmDesc& film,
+                                               const Sampler& sampler) {
   SamplerDesc d = scene_sampler;
   d.type = sampler.name(), d.seed = decider_seed(sampler.seed());
-  return make_scene_sampler(d);
+  return make_scene_sampler(d, film);
 }
 
 }  // namespace pdrt

@@ -29,6 +29,7 @@ struct RenderFilms {
 };
 
 // The decision samples' sampler under "split": `sampler`'s kind, seeded apart from it.
-std::unique_ptr<Sampler> make_decision_sampler(const SamplerDesc& scene_sampler, const Sampler& sampler);
+std::unique_ptr<Sampler> make_decision_sampler(const SamplerDesc& scene_sampler, const FilmDesc& film,
+                                               const Sampler& sampler);
 
 }  // namespace pdrt

@@ -15,9 +15,6 @@ RenderRegion render_region(const SceneDesc& desc) {
   const int W = desc.film.width, H = desc.film.height;
   RenderRegion r;
   r.crop = crop_pixels(desc.film.crop_window, W, H);
-  if (r.crop.empty())
-    throw InputError(desc.film.size_where + ": film.crop_window covers no pixel of the " + std::to_string(W) + "x" +
-                     std::to_string(H) + " film");
   const int reach =
       desc.film.filter.reconstruction == Reconstruction::Splat ? int(std::ceil(desc.film.filter.radius)) + 1 : 0;
   int margin = reach;
@@ -35,7 +32,8 @@ void warn_adaptive_crop(const SceneDesc& desc, const RenderRegion& region, int r
   const bool cropped = region.crop.width() < desc.film.width || region.crop.height() < desc.film.height;
   if (desc.sampler.adaptive.enabled && cropped && !quiet && (rounds > region.margin_rounds || region.metric_needs_mean))
     warn(std::string("pdrt: warning: the crop window of an adaptive render may differ from the full render's crop (") +
-         (region.metric_needs_mean ? "error-per-sample compares with the crop's mean"
+         (region.metric_needs_mean ? adaptive_metric_name(AdaptiveMetricKind::ErrorPerSample) +
+                                        std::string(" compares with the crop's mean")
                                    : "refinement ran past the rounds the crop's margin covers") +
          ")");
 }

@@ -22,7 +22,7 @@ struct RenderRegion {
   }
 };
 
-// The region of `desc`'s film; InputError when the crop window covers no pixel.
+// The region of `desc`'s film, whose crop window covers a pixel (check_render_settings).
 RenderRegion render_region(const SceneDesc& desc);
 
 // Warns (unless `quiet`) that a cropped adaptive render may differ from the crop of the full

@@ -13,6 +13,7 @@
 #include "renderer/render/tile_passes.h"
 #include "renderer/render/tile_waves.h"
 #include "renderer/render/warning_relay.h"
+#include "renderer/scene/render_settings.h"
 #include "sampling/core/errors.h"
 
 #include <tbb/global_control.h>
@@ -23,7 +24,10 @@
 
 namespace pdrt {
 
-std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d) { return make_sampler(d.type, d.seed); }
+std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d, const FilmDesc& film) {
+  const SamplerShape shape{d.adaptive.enabled ? d.adaptive.min_spp : d.spp, film.width, film.height};
+  return make_sampler(d.type, d.seed, shape);
+}
 
 void check_film_memory(int width, int height, const std::string& where, int films) {
   double need = double(width) * double(height) * double(Film::kBytesPerPixel) * films;
@@ -41,9 +45,8 @@ void check_film_memory(int width, int height, const std::string& where, int film
 // gathered over the ranks, with their warnings.
 RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderOptions& opt) {
   const AdaptiveDesc& ad = desc.sampler.adaptive;
-  const bool split = ad.enabled && ad.decision == "split";
-  if (split && desc.film.filter.reconstruction == Reconstruction::Rank)
-    throw InputError("adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"");
+  check_render_settings(desc);
+  const bool split = ad.enabled && ad.decision == AdaptiveDecision::Split;
   const RenderRegion region = render_region(desc);
   check_film_memory(region.rect.width(), region.rect.height(), desc.film.size_where, split ? 2 : 1);
   std::optional<tbb::global_control> limit;
@@ -60,7 +63,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);
   RenderFilms films(region.rect.width(), region.rect.height(), split);
-  const std::unique_ptr<Sampler> decider = split ? make_decision_sampler(desc.sampler, sampler) : nullptr;
+  const std::unique_ptr<Sampler> decider = split ? make_decision_sampler(desc.sampler, desc.film, sampler) : nullptr;
   const PixelRenderer pixels{camera, scene, integrator, filter, desc.film.filter.reconstruction, region.rect.x0,
                              region.rect.y0};
   clock.build_done();

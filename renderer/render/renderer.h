@@ -57,8 +57,9 @@ struct RenderResult {
   RenderStats stats;
 };
 
-// The sampler the scene (after command-line overrides) asks for.
-std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d);
+// The sampler the scene (after command-line overrides) asks for; `film` gives the samplers that
+// arrange samples across pixels (zsobol) the image and the first pass's samples per pixel.
+std::unique_ptr<Sampler> make_scene_sampler(const SamplerDesc& d, const FilmDesc& film);
 
 // Refuses (InputError) a film whose buffers would not fit in this machine's memory; the
 // message starts with `where` (the scene's film.width location, or the options that set it).

@@ -4,6 +4,7 @@
 // so the scene loader states its rules and never formats a position itself.
 #include "renderer/scene/json_locations.h"
 #include "sampling/core/int_range.h"
+#include "sampling/core/name_table.h"
 #include "renderer/scene/vec3.h"
 
 #include <nlohmann/json.hpp>
@@ -72,6 +73,13 @@ class JsonNode {
   bool boolean() const;
   std::string string() const;
   std::string choice(std::initializer_list<const char*> options) const;
+  // The value a name table gives the string ("must be one of a, b, c" otherwise).
+  template <class E, std::size_t N>
+  E choice(const NamedValue<E> (&table)[N]) const {
+    E v{};
+    if (!parse_name_in(table, string(), &v)) fail_got("must be one of " + name_list(table));
+    return v;
+  }
   Vec3 vec3() const;
   Vec3 nonzero_vec3() const;
   Vec3 color() const;     // reflectance: components in [0, 1]

@@ -3,13 +3,14 @@
 // (docs/scene-format.md) and the renderer consumes. Everything here is already checked:
 // finite numbers, positive sizes, material indices in range, non-degenerate triangles.
 #include "renderer/scene/material.h"
+#include "renderer/scene/settings_names.h"
 #include "renderer/scene/texture_desc.h"
 #include "renderer/scene/transform.h"
+#include "sampling/samplers/sampler_names.h"
 
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -45,22 +46,6 @@ struct CameraDesc {
 
 enum class FilterType { Box, Tent, Gaussian, Mitchell };
 
-// How samples become pixels (docs/renderer.md, "Reconstruction"):
-//   Importance  offsets drawn in proportion to |f|, weight sign(f) * integral |f| (pbrt-v4)
-//   Splat       the image-plane pattern at pixel scale; each sample feeds every pixel whose
-//               filter covers it (Cook §4.2)
-//   Rank        offsets uniform over the support, kept when a randomised rank is below the
-//               normalised filter value (McCool–Fiume §5.2)
-enum class Reconstruction { Importance, Splat, Rank };
-inline constexpr const char* kReconstructionNames[] = {"importance", "splat", "rank"};
-inline const char* reconstruction_name(Reconstruction r) { return kReconstructionNames[int(r)]; }
-// False for a name that is none of kReconstructionNames.
-inline bool parse_reconstruction(const std::string& name, Reconstruction* out) {
-  for (int i = 0; i < 3; ++i)
-    if (name == kReconstructionNames[i]) return *out = Reconstruction(i), true;
-  return false;
-}
-
 struct FilterDesc {
   FilterType type = FilterType::Gaussian;
   float radius = 1.5f;             // pixels (Cook's w = 1.5 for the Gaussian)
@@ -81,26 +66,17 @@ struct FilmDesc {
   std::array<float, 4> crop_window{0, 1, 0, 1};
 };
 
-// The accepted names of AdaptiveDesc's metric, variance and decision, in the order messages
-// list them (render/adaptive_metric.h gives them their meaning).
-inline constexpr std::initializer_list<const char*> kAdaptiveMetrics = {"error-per-sample", "relative-error",
-                                                                        "contrast"};
-inline constexpr std::initializer_list<const char*> kAdaptiveVariances = {"samples", "halves"};
-inline constexpr std::initializer_list<const char*> kAdaptiveDecisions = {"shared", "split"};
-
 struct AdaptiveDesc {
   bool enabled = false;
   int min_spp = 4, max_spp = 256;
   float threshold = 0;  // 0 = the metric's own default (adaptive_metric.h)
-  std::string metric = "error-per-sample";  // error-per-sample | relative-error | contrast
-  std::string variance = "samples";         // samples | halves: how the mean's variance is estimated
-  // shared: every sample both decides and estimates (Kirk-Arvo biased); split: odd samples
-  // decide, even samples estimate (unbiased, half the samples in the image).
-  std::string decision = "shared";
+  AdaptiveMetricKind metric = AdaptiveMetricKind::ErrorPerSample;
+  AdaptiveVariance variance = AdaptiveVariance::Samples;
+  AdaptiveDecision decision = AdaptiveDecision::Shared;
 };
 
 struct SamplerDesc {
-  std::string type = "poisson";
+  std::string type = sampler_name(SamplerKind::Poisson);  // one of kSamplerNames
   int spp = 16;
   uint64_t seed = 0;
   AdaptiveDesc adaptive;

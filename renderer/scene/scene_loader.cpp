@@ -5,11 +5,13 @@
 #include "sampling/core/errors.h"
 #include "sampling/core/printable.h"
 #include "sampling/core/warnings.h"
+#include "sampling/samplers/sampler_names.h"
 #include "renderer/scene/asset_path.h"
 #include "renderer/scene/crop_window.h"
 #include "renderer/scene/environment_image.h"
 #include "renderer/scene/json_document.h"
 #include "renderer/scene/obj_loader.h"
+#include "renderer/scene/render_settings.h"
 #include "renderer/scene/scene_limits.h"
 #include "renderer/scene/text_file.h"
 
@@ -204,14 +206,8 @@ void SceneParser::crop_window(const JsonNode& n) {
   std::array<float, 4> w = window(n);
   for (float v : w)
     if (!(v >= 0 && v <= 1)) n.fail_got("must lie within [0, 1] (fractions of the film, y down)");
-  PixelRect px = crop_pixels(w, f.width, f.height);
-  if (px.empty()) {
-    std::ostringstream s;
-    s << "covers no pixel of the " << f.width << "x" << f.height << " film (pixels ceil(size * bound) are ["
-      << px.x0 << ", " << px.x1 << ") x [" << px.y0 << ", " << px.y1 << "))";
-    n.fail_got(s.str());
-  }
   f.crop_window = w;
+  if (std::string p = crop_window_problem(f); !p.empty()) n.fail_got(p);
 }
 
 void SceneParser::check_time(const JsonNode& t, float previous, bool first) const {
@@ -241,7 +237,9 @@ void SceneParser::film(const JsonObject& o) {
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
     if (auto old = fo.get("selection"))
-      old->fail_key("was replaced by \"reconstruction\": \"importance\" (default), \"splat\" or \"rank\"");
+      old->fail_key(std::string("was replaced by \"reconstruction\": \"") + reconstruction_name(Reconstruction::Importance) +
+                    "\" (default), \"" + reconstruction_name(Reconstruction::Splat) + "\" or \"" +
+                    reconstruction_name(Reconstruction::Rank) + "\"");
     fo.allow({"type", "radius", "sigma", "reconstruction"});
     std::string type = "gaussian";
     if (auto t = fo.get("type")) type = t->choice({"box", "tent", "gaussian", "mitchell"});
@@ -256,15 +254,14 @@ void SceneParser::film(const JsonObject& o) {
       if (f.filter.type != FilterType::Gaussian) s->fail_key("is a parameter of the \"gaussian\" filter only, not of \"" + type + "\"");
       f.filter.sigma = s->positive();
     }
-    if (auto m = fo.get("reconstruction"))
-      parse_reconstruction(m->choice({"importance", "splat", "rank"}), &f.filter.reconstruction);
+    if (auto m = fo.get("reconstruction")) f.filter.reconstruction = m->choice(kReconstructionNames);
   }
 }
 
 void SceneParser::sampler(const JsonObject& o) {
   o.allow({"type", "spp", "seed", "adaptive"});
   SamplerDesc& s = scene_.sampler;
-  if (auto n = o.get("type")) s.type = n->choice({"random", "jitter", "poisson", "poisson-065", "sobol", "pmj02bn", "regular"});
+  if (auto n = o.get("type")) s.type = sampler_name(n->choice(kSamplerNames));
   if (auto n = o.get("spp")) s.spp = int(n->integer_in(kSppRange));
   if (auto n = o.get("seed")) s.seed = n->integer_in(kSeedRange);
   if (auto n = o.get("adaptive")) {
@@ -280,14 +277,11 @@ void SceneParser::sampler(const JsonObject& o) {
       min_n->fail_got("must be <= max_spp (default " + std::to_string(s.adaptive.max_spp) + ")");
     }
     if (auto t = a.get("threshold")) s.adaptive.threshold = t->positive();
-    if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetrics);
-    if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVariances);
+    if (auto m = a.get("metric")) s.adaptive.metric = m->choice(kAdaptiveMetricNames);
+    if (auto v = a.get("variance")) s.adaptive.variance = v->choice(kAdaptiveVarianceNames);
     if (auto d = a.get("decision")) {
-      s.adaptive.decision = d->choice(kAdaptiveDecisions);
-      // Rank selection keeps a candidate by its index among all of the pixel's, so the odd
-      // and even halves are not each an unbiased estimate.
-      if (s.adaptive.decision == "split" && scene_.film.filter.reconstruction == Reconstruction::Rank)
-        d->fail_got("\"split\" needs film.filter.reconstruction \"importance\" or \"splat\" (not \"rank\")");
+      s.adaptive.decision = d->choice(kAdaptiveDecisionNames);
+      if (std::string p = decision_problem(s.adaptive, scene_.film.filter.reconstruction); !p.empty()) d->fail(p);
     }
   }
 }
@@ -1098,6 +1092,7 @@ SceneDesc load_scene(const fs::path& file, bool strict) {
   if (is_pbrt_scene(file)) {
     PbrtImport imported = load_pbrt_scene(file, strict);
     for (const std::string& line : imported.report) warn(printable(line));
+    check_render_settings(imported.scene);
     return std::move(imported.scene);
   }
   std::string reason;
@@ -1108,6 +1103,7 @@ SceneDesc load_scene(const fs::path& file, bool strict) {
   SceneParser parser(doc, file.parent_path());
   SceneDesc scene = parser.parse();
   scene.file = file;
+  check_render_settings(scene);
   if (scene.degenerate_triangles > 0)
     warn(printable(doc.name()) + ": warning: skipped " + std::to_string(scene.degenerate_triangles) + " degenerate triangle" +
          (scene.degenerate_triangles == 1 ? "" : "s"));

@@ -234,8 +234,8 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
   ojson sampler = {{"type", s.sampler.type}, {"spp", s.sampler.spp}, {"seed", s.sampler.seed}};
   if (s.sampler.adaptive.enabled) {
     const AdaptiveDesc& a = s.sampler.adaptive;
-    sampler["adaptive"] = {{"min_spp", a.min_spp}, {"max_spp", a.max_spp}, {"metric", a.metric},
-                           {"variance", a.variance}, {"decision", a.decision}};
+    sampler["adaptive"] = {{"min_spp", a.min_spp}, {"max_spp", a.max_spp}, {"metric", adaptive_metric_name(a.metric)},
+                           {"variance", adaptive_variance_name(a.variance)}, {"decision", adaptive_decision_name(a.decision)}};
     if (a.threshold > 0) sampler["adaptive"]["threshold"] = a.threshold;
   }
   j["sampler"] = sampler;

@@ -44,6 +44,7 @@ std::optional<std::string> read_text_file(const std::filesystem::path& file, std
     reason = std::strerror(errno ? errno : EIO);
     return std::nullopt;
   }
+  note_input_text(text);
   return text;
 }
 

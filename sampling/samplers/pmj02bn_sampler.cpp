@@ -35,7 +35,7 @@ const uint32_t* sequence(uint32_t k) {
 class Pmj02bnSampler final : public Sampler {
  public:
   explicit Pmj02bnSampler(uint64_t seed) : Sampler(seed) {}
-  std::string name() const override { return "pmj02bn"; }
+  std::string name() const override { return sampler_name(SamplerKind::Pmj02bn); }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     PreparedStream p;

@@ -102,7 +102,7 @@ __attribute__((target_clones("avx2", "default"))) void level_1d(int k, uint32_t 
 class ProgressiveJitterSampler final : public Sampler {
  public:
   explicit ProgressiveJitterSampler(uint64_t seed) : Sampler(seed) {}
-  std::string name() const override { return "jitter"; }
+  std::string name() const override { return sampler_name(SamplerKind::Jitter); }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (family_dim(f) == 2) return get_2d(px, py, index, f, bounce)[0];
     const uint64_t s = stream(px, py, f, bounce);

@@ -12,7 +12,7 @@ uint64_t value_bits(uint64_t stream, uint64_t index) { return mix64(stream ^ (in
 class RandomSampler final : public Sampler {
  public:
   explicit RandomSampler(uint64_t seed) : Sampler(seed) {}
-  std::string name() const override { return "random"; }
+  std::string name() const override { return sampler_name(SamplerKind::Random); }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     return unit_from_u32(uint32_t(value_bits(stream(px, py, f, bounce), uint64_t(index)) >> 32));
   }

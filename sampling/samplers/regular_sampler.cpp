@@ -32,7 +32,7 @@ uint32_t sobol_second(uint32_t i) {
 class RegularSampler final : public Sampler {
  public:
   explicit RegularSampler(uint64_t seed) : Sampler(seed) {}
-  std::string name() const override { return "regular"; }
+  std::string name() const override { return sampler_name(SamplerKind::Regular); }
   double get_1d(int, int, int64_t index, Family, int) const override {
     return unit_from_u32(van_der_corput(uint32_t(index)) + 0x80000000u);
   }

@@ -1,6 +1,8 @@
 // Generation, serialisation and checking of hierarchical Poisson-disk tables.
 #include "sampling/samplers/sample_table.h"
 
+#include "sampling/samplers/sampler.h"
+
 #include "sampling/core/atomic_file.h"
 #include "sampling/generators/balanced_relaxation_1d.h"
 #include "sampling/core/errors.h"
@@ -382,7 +384,10 @@ const char* construction_name(Construction c) {
   return names[int(c) < kConstructionCount ? int(c) : 0];
 }
 
-const char* table_set_name(TableSetKind k) { return k == TableSetKind::Poisson065 ? "poisson-065" : "poisson"; }
+// A table set is named after the sampler that reads it.
+const char* table_set_name(TableSetKind k) {
+  return sampler_name(k == TableSetKind::Poisson065 ? SamplerKind::Poisson065 : SamplerKind::Poisson);
+}
 
 Construction table_set_construction(TableSetKind kind, Family family) {
   if (kind == TableSetKind::Poisson065) return family == Family::Time ? Construction::Balanced : Construction::StratifiedPD;

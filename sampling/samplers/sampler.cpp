@@ -4,6 +4,7 @@
 #include "sampling/core/bit_reverse.h"
 #include "sampling/core/errors.h"
 #include "sampling/samplers/poisson_sampler.h"
+#include "sampling/samplers/zsobol_sampler.h"
 #include "sampling/core/rng.h"
 
 #include <algorithm>
@@ -32,34 +33,49 @@ void Sampler::prepare(int, int, Family, int, PreparedStream* out) const { out->c
 int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<int64_t>::max(); }
 
 const std::vector<std::string>& sampler_names() {
-  static const std::vector<std::string> names = {"random", "jitter", "poisson", "poisson-065", "sobol", "pmj02bn"};
-  return names;
-}
-
-const std::vector<std::string>& all_sampler_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = sampler_names();
-    n.push_back("regular");
+    std::vector<std::string> n = all_sampler_names();
+    n.pop_back();  // regular, last in kSamplerNames
     return n;
   }();
   return names;
 }
 
-std::string sampler_name_list() {
-  std::string known;
-  for (const auto& n : all_sampler_names()) known += (known.empty() ? "" : ", ") + n;
-  return known;
+const std::vector<std::string>& all_sampler_names() {
+  static const std::vector<std::string> names = names_in(kSamplerNames);
+  return names;
 }
 
-std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed) {
-  if (name == "random") return make_random_sampler(seed);
-  if (name == "regular") return make_regular_sampler(seed);
-  if (name == "jitter") return make_progressive_jitter_sampler(seed);
-  if (name == "sobol") return make_sobol_sampler(seed);
-  if (name == "pmj02bn") return make_pmj02bn_sampler(seed);
-  if (name == "poisson") return make_poisson_sampler(seed, default_tables());
-  if (name == "poisson-065") return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
-  throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
+std::string sampler_name_list() { return name_list(kSamplerNames); }
+
+const std::vector<std::string>& compare_default_sampler_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (SamplerKind k : kCompareDefaultSamplers) n.push_back(sampler_name(k));
+    return n;
+  }();
+  return names;
+}
+
+std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const SamplerShape& shape) {
+  switch (kind) {
+    case SamplerKind::Random: return make_random_sampler(seed);
+    case SamplerKind::Regular: return make_regular_sampler(seed);
+    case SamplerKind::Jitter: return make_progressive_jitter_sampler(seed);
+    case SamplerKind::Sobol: return make_sobol_sampler(seed);
+    case SamplerKind::Pmj02bn: return make_pmj02bn_sampler(seed);
+    case SamplerKind::ZSobol: return make_zsobol_sampler(seed, shape);
+    case SamplerKind::Poisson: return make_poisson_sampler(seed, default_tables());
+    case SamplerKind::Poisson065: return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
+  }
+  return nullptr;
+}
+
+std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed, const SamplerShape& shape) {
+  SamplerKind kind{};
+  if (!parse_sampler(name, &kind))
+    throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
+  return make_sampler(kind, seed, shape);
 }
 
 uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce) {

@@ -3,6 +3,7 @@
 // (pixel, sample index, dimension family, bounce, seed), so images do not depend on thread
 // count or tile order, and raising a pixel from n to m samples only appends samples.
 #include "sampling/core/derived_seeds.h"
+#include "sampling/samplers/sampler_names.h"
 #include "sampling/samplers/sampler_profile.h"
 
 #include <algorithm>
@@ -203,17 +204,24 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The Monte Carlo samplers (random, jitter, poisson, poisson-065, sobol, pmj02bn): unbiased over seeds,
-// the ones every sampler test covers (`compare` defaults to the first five).
+// The Monte Carlo samplers (every kind but `regular`): unbiased over seeds, the ones every
+// sampler test covers; `compare` defaults to compare_default_sampler_names() of them.
 const std::vector<std::string>& sampler_names();
-// Every name `make_sampler` accepts: sampler_names() and the `regular` baseline (the same
-// deterministic pattern in every pixel, Cook's regular sampling; biased, for aliasing demos).
+// Every name `make_sampler` accepts: sampler_names() and `regular`.
 const std::vector<std::string>& all_sampler_names();
 std::string sampler_name_list();  // "random, jitter, ..., regular"
 
-// Throws UsageError naming the sampler for an unknown name.
-std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed);
+// `compare`'s default samplers (kCompareDefaultSamplers), by name.
+const std::vector<std::string>& compare_default_sampler_names();
 
+// What a sampler that arranges samples across pixels (zsobol) needs of the render: the
+// samples per pixel of its first pass (the block each pixel takes) and the film's size.
+struct SamplerShape {
+  int64_t samples_per_pixel = 16;
+  int width = 1024, height = 1024;
+};
 
-
+// Throws UsageError naming the sampler for an unknown name (and for a shape zsobol cannot order).
+std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed, const SamplerShape& shape = {});
+std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const SamplerShape& shape = {});
 }  // namespace pdrt

@@ -22,7 +22,7 @@ __attribute__((target_clones("avx2", "default"))) void scramble(uint32_t n, cons
 class SobolSampler final : public Sampler {
  public:
   explicit SobolSampler(uint64_t seed) : Sampler(seed) {}
-  std::string name() const override { return "sobol"; }
+  std::string name() const override { return sampler_name(SamplerKind::Sobol); }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     const uint64_t s = stream(px, py, f, bounce);
     return unit_from_u32(sobol_0(uint32_t(IndexShuffle(s)(uint64_t(index))), s));

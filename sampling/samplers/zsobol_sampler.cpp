@@ -47,7 +47,7 @@ int ceil_log2(int64_t n) { return n <= 1 ? 0 : 64 - __builtin_clzll(uint64_t(n -
 
 class ZSobolSampler final : public Sampler {
  public:
-  ZSobolSampler(uint64_t seed, const ZSobolOptions& o) : Sampler(seed) {
+  ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed) {
     if (o.samples_per_pixel < 1) throw UsageError("sampler zsobol: samples per pixel must be >= 1");
     if (o.width < 1 || o.height < 1) throw UsageError("sampler zsobol: the image must have at least one pixel");
     m_ = ceil_log2(o.samples_per_pixel);
@@ -58,7 +58,7 @@ class ZSobolSampler final : public Sampler {
                        std::to_string(2 * k_ + m_) +
                        " bits of Morton and sample index, at most 32 (fewer samples per pixel or a smaller image)");
   }
-  std::string name() const override { return "zsobol"; }
+  std::string name() const override { return sampler_name(SamplerKind::ZSobol); }
   double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
     uint64_t key;
     const uint32_t j = sobol_index(px, py, index, f, bounce, &key);
@@ -112,8 +112,8 @@ uint32_t zsobol_sobol_index(uint32_t z, int bits, uint64_t key) {
   return out;
 }
 
-std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const ZSobolOptions& options) {
-  return std::make_unique<ZSobolSampler>(seed, options);
+std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const SamplerShape& shape) {
+  return std::make_unique<ZSobolSampler>(seed, shape);
 }
 
 }  // namespace pdrt

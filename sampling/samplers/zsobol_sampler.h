@@ -15,14 +15,10 @@
 
 namespace pdrt {
 
-struct ZSobolOptions {
-  int64_t samples_per_pixel = 16;  // rounded up to a power of two: the block a pixel takes
-  int width = 1, height = 1;       // the image; pixels outside it wrap onto it
-};
-
-// Throws UsageError when Morton index and sample index need more than 32 bits together
+// shape.samples_per_pixel rounded up to a power of two is the block a pixel takes; pixels
+// outside the shape's image wrap onto it. Throws UsageError when Morton index and sample index need more than 32 bits together
 // (the 32-bit fixed-point values see no more).
-std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const ZSobolOptions& options);
+std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const SamplerShape& shape);
 
 // The Sobol index pixel (px, py)'s sample `index` takes for the dimension key `key`, below
 // 2^(2 k + m) for 2^k >= the image's larger side and 2^m samples per pixel; exposed for tests.

@@ -112,6 +112,39 @@ TEST(CliRender, UnknownReconstructionIsAUsageError) {
   EXPECT_NE(r.err.find("adaptive decision \"split\" needs reconstruction"), std::string::npos) << r.err;
 }
 
+// The split-with-rank refusal in one wording wherever the settings come from: a JSON scene,
+// render's and compare's overrides over a JSON scene, and render's over a pbrt scene (the
+// overrides share one path, app/scene_overrides.h; the validator is renderer/scene/render_settings.h).
+TEST(CliRender, SplitWithRankIsRefusedInOneWordingFromEveryEntry) {
+  const std::string words = "\"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"";
+  fs::path d = scratch_dir("render_split_rank");
+  fs::path in_file = d / "split.json";
+  std::ofstream(in_file) << R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {"width": 24, "height": 16, "filter": {"reconstruction": "rank"}},
+  "sampler": {"spp": 4, "adaptive": {"decision": "split"}},
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+}
+)";
+  auto r = run_pdrt("render " + in_file.string() + " -o " + (d / "a.exr").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("sampler.adaptive.decision " + words), std::string::npos) << r.err;
+  fs::path plain = write_scene(d);
+  fs::path pbrt = d / "s.pbrt";
+  std::ofstream(pbrt) << "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\n"
+                         "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+                         "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+  const std::string overrides = " --reconstruction rank --adaptive-decision split";
+  for (const std::string& command :
+       {"render " + plain.string() + " -o " + (d / "b.exr").string() + overrides,
+        "render " + pbrt.string() + " -o " + (d / "c.exr").string() + overrides,
+        "compare " + plain.string() + " --out " + (d / "cmp").string() + " --no-plots --adaptive" + overrides}) {
+    r = run_pdrt(command);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("adaptive decision " + words), std::string::npos) << command << ": " << r.err;
+  }
+}
+
 // "threads" is the count the render ran on: --threads 0 (the default) means all of them.
 TEST(CliRender, StatsReportTheThreadsUsedNotTheOption) {
   fs::path d = scratch_dir("render_threads");

@@ -138,7 +138,7 @@ inline double mean_rgb(const Image& im, int x, int y) {
 }
 
 inline RenderResult render_quietly(const SceneDesc& s, int threads = 0) {
-  auto sampler = make_scene_sampler(s.sampler);
+  auto sampler = make_scene_sampler(s.sampler, s.film);
   RenderOptions o;
   o.quiet = true;
   o.threads = threads;

@@ -77,7 +77,7 @@ struct PbrtBuild {
 // Camera, Film, PixelFilter, Sampler, Integrator (pbrt_camera.cpp).
 void translate_pbrt_option(PbrtBuild& b, const PbrtDirective& d);
 // pbrt-v4's values for the options a file leaves out: Film 1280 x 720, the Gaussian filter of
-// radius 1.5 and sigma 0.5, maximum depth 5 (docs/pbrt-import.md, "Defaults").
+// radius 1.5 and sigma 0.5, maximum depth 5, the zsobol sampler at 16 spp (docs/pbrt-import.md).
 void apply_pbrt_defaults(SceneDesc& s);
 // pbrt-v4's default camera when the file has none; then the screen window and pdrt's vertical
 // field of view from the film's resolution.

@@ -1,7 +1,9 @@
 #include "renderer/scene/pbrt/pbrt_build_context.h"
 
 #include "renderer/scene/crop_window.h"
+#include "renderer/scene/render_settings.h"
 #include "sampling/core/errors.h"
+#include "sampling/samplers/sampler_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,9 +118,8 @@ void crop(PbrtBuild& b, const PbrtParams& ps) {
     f.crop_window = {unit(std::min(c[0], c[1])), unit(std::max(c[0], c[1])), unit(std::min(c[2], c[3])),
                      unit(std::max(c[2], c[3]))};
   }
-  if (crop_pixels(f.crop_window, f.width, f.height).empty())
-    b.fail((cw ? cw : pb)->at, std::string(cw ? "\"float cropwindow\"" : "\"integer pixelbounds\"") + " covers no pixel of the " +
-                                 std::to_string(f.width) + "x" + std::to_string(f.height) + " film");
+  if (std::string p = crop_window_problem(f); !p.empty())
+    b.fail((cw ? cw : pb)->at, std::string(cw ? "\"float cropwindow\" " : "\"integer pixelbounds\" ") + p);
 }
 
 void film(PbrtBuild& b, const PbrtDirective& d) {
@@ -169,10 +170,12 @@ void filter(PbrtBuild& b, const PbrtDirective& d) {
 void sampler(PbrtBuild& b, const PbrtDirective& d) {
   const std::string& t = d.strings[0];
   SamplerDesc& s = b.out.scene.sampler;
-  if (t == "zsobol" || t == "sobol" || t == "paddedsobol" || t == "halton") s.type = "sobol";
-  else if (t == "pmj02bn") s.type = "pmj02bn";
-  else if (t == "stratified") s.type = "jitter";
-  else if (t == "independent") s.type = "random";
+  // pbrt-v4's samplers as the pdrt sampler of the same construction, else the nearest.
+  if (t == "zsobol") s.type = sampler_name(SamplerKind::ZSobol);
+  else if (t == "sobol" || t == "paddedsobol" || t == "halton") s.type = sampler_name(SamplerKind::Sobol);
+  else if (t == "pmj02bn") s.type = sampler_name(SamplerKind::Pmj02bn);
+  else if (t == "stratified") s.type = sampler_name(SamplerKind::Jitter);
+  else if (t == "independent") s.type = sampler_name(SamplerKind::Random);
   else b.note(d.at, "Sampler \"" + t + "\" is unknown (poisson used)");
   int64_t spp = 16;
   if (t == "stratified") {
@@ -233,6 +236,7 @@ void apply_pbrt_defaults(SceneDesc& s) {
   s.film.filter = {};
   s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f, s.film.filter.sigma = 0.5f;  // GaussianFilter
   s.integrator.max_depth = 5;  // VolPathIntegrator, the default integrator
+  s.sampler.type = sampler_name(SamplerKind::ZSobol), s.sampler.spp = 16;  // ZSobolSampler
 }
 
 void translate_pbrt_option(PbrtBuild& b, const PbrtDirective& d) {

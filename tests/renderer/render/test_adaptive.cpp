@@ -21,8 +21,8 @@ SceneDesc adaptive_scene(const char* metric, float threshold, const char* varian
   s.shapes.push_back(sphere({-1.0f, 3, 2}, 0.5f, add_material(s, emitter(8.0f))));
   s.sampler.adaptive.enabled = true;
   s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 64;
-  s.sampler.adaptive.metric = metric, s.sampler.adaptive.threshold = threshold;
-  s.sampler.adaptive.variance = variance;
+  s.sampler.adaptive.metric = value_named(kAdaptiveMetricNames, metric), s.sampler.adaptive.threshold = threshold;
+  s.sampler.adaptive.variance = value_named(kAdaptiveVarianceNames, variance);
   return s;
 }
 
@@ -136,7 +136,8 @@ SceneDesc constant_scene(const char* metric, const char* variance) {
   s.environment.radiance = Vec3(0.7f);  // nothing but a constant environment
   s.sampler.adaptive.enabled = true;
   s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 64, s.sampler.adaptive.threshold = 1e-4f;
-  s.sampler.adaptive.metric = metric, s.sampler.adaptive.variance = variance;
+  s.sampler.adaptive.metric = value_named(kAdaptiveMetricNames, metric);
+  s.sampler.adaptive.variance = value_named(kAdaptiveVarianceNames, variance);
   return s;
 }
 
@@ -163,11 +164,11 @@ TEST(Adaptive, HalvesStopConstantColourPixelsAtMinSpp) {
 
 TEST(Adaptive, EachMetricHasItsOwnDefaultThreshold) {
   AdaptiveDesc ad;  // threshold 0: not given
-  EXPECT_EQ(ad.metric, "error-per-sample");
+  EXPECT_EQ(ad.metric, AdaptiveMetricKind::ErrorPerSample);
   EXPECT_DOUBLE_EQ(effective_threshold(ad), 1.0 / 16);
-  ad.metric = "relative-error";
+  ad.metric = AdaptiveMetricKind::RelativeError;
   EXPECT_DOUBLE_EQ(effective_threshold(ad), 0.01);
-  ad.metric = "contrast";
+  ad.metric = AdaptiveMetricKind::Contrast;
   EXPECT_DOUBLE_EQ(effective_threshold(ad), 0.4);
   ad.threshold = 0.25f;
   EXPECT_DOUBLE_EQ(effective_threshold(ad), 0.25) << "a given threshold wins";

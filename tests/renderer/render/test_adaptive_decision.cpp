@@ -34,7 +34,7 @@ SceneDesc subpixel_emitters(const char* decision, uint64_t seed, const char* sam
   s.sampler.type = sampler_type;
   s.sampler.adaptive.enabled = true;
   s.sampler.adaptive.min_spp = 4, s.sampler.adaptive.max_spp = 256;
-  s.sampler.adaptive.decision = decision;
+  s.sampler.adaptive.decision = value_named(kAdaptiveDecisionNames, decision);
   return s;
 }
 

@@ -117,7 +117,7 @@ TEST(CropWindow, AdaptiveCroppedRenderIsTheCropOfTheFullRender) {
       SceneDesc s = crop_scene(sampler, 4);
       s.film.filter.reconstruction = m;
       s.sampler.adaptive.enabled = true;
-      s.sampler.adaptive.metric = "relative-error";
+      s.sampler.adaptive.metric = AdaptiveMetricKind::RelativeError;
       s.sampler.adaptive.threshold = 0.05f;
       s.sampler.adaptive.min_spp = 1, s.sampler.adaptive.max_spp = 16;
       RenderResult full = render_quietly(s);

@@ -206,7 +206,7 @@ TEST(RenderDeterminism, SamePixelAndSampleIndexReplayTheSamePath) {
   LightSampler lights(scene, materials.textures());
   PathIntegrator integrator(scene, lights, materials, s.integrator);
   ThinLensCamera cam(s.camera, 16, 16);
-  auto sampler = make_scene_sampler(s.sampler);
+  auto sampler = make_scene_sampler(s.sampler, s.film);
   PixelSampleState a(*sampler), b(*sampler);
   int differing = 0;
   for (int i = 0; i < 64; ++i) {

@@ -1000,9 +1000,11 @@ TEST(PbrtImport, CropWindowAndPixelBoundsMapOntoPdrtsCropWindow) {
   EXPECT_EQ(import_error(head + film(200, 100, "\"float cropwindow\" [0 1 0]") + world),
             "s.pbrt:3:64: \"float cropwindow\" needs 4 values [x0 x1 y0 y1], got 3");
   EXPECT_EQ(import_error(head + film(200, 100, "\"float cropwindow\" [0.5 0.5 0 1]") + world),
-            "s.pbrt:3:64: \"float cropwindow\" covers no pixel of the 200x100 film");
+            "s.pbrt:3:64: \"float cropwindow\" covers no pixel of the 200x100 film (pixels ceil(size * bound) are "
+            "[100, 100) x [0, 100))");
   EXPECT_EQ(import_error(head + film(200, 100, "\"integer pixelbounds\" [300 400 0 10]") + world),
-            "s.pbrt:3:64: \"integer pixelbounds\" covers no pixel of the 200x100 film");
+            "s.pbrt:3:64: \"integer pixelbounds\" covers no pixel of the 200x100 film (pixels ceil(size * bound) are "
+            "[200, 200) x [0, 10))");
 }
 
 // pbrt's camera space is left-handed: LookAt from -z towards the origin puts world +x on the

@@ -1,0 +1,49 @@
+#include "renderer/scene/render_settings.h"
+
+#include "renderer/scene/crop_window.h"
+#include "sampling/core/errors.h"
+
+#include <sstream>
+
+namespace pdrt {
+
+std::string adaptive_spp_problem(const AdaptiveDesc& ad) {
+  if (!ad.enabled || ad.min_spp <= ad.max_spp) return "";
+  return "min_spp (" + std::to_string(ad.min_spp) + ") must be <= max_spp (" + std::to_string(ad.max_spp) + ")";
+}
+
+std::string decision_problem(const AdaptiveDesc& ad, Reconstruction reconstruction) {
+  if (!ad.enabled || ad.decision != AdaptiveDecision::Split || reconstruction != Reconstruction::Rank) return "";
+  return std::string("\"") + adaptive_decision_name(AdaptiveDecision::Split) + "\" needs reconstruction \"" +
+         reconstruction_name(Reconstruction::Importance) + "\" or \"" + reconstruction_name(Reconstruction::Splat) +
+         "\", not \"" + reconstruction_name(Reconstruction::Rank) + "\"";
+}
+
+std::string crop_window_problem(const FilmDesc& f) {
+  const PixelRect px = crop_pixels(f.crop_window, f.width, f.height);
+  if (!px.empty()) return "";
+  std::ostringstream s;
+  s << "covers no pixel of the " << f.width << "x" << f.height << " film (pixels ceil(size * bound) are [" << px.x0
+    << ", " << px.x1 << ") x [" << px.y0 << ", " << px.y1 << "))";
+  return s.str();
+}
+
+std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
+  using Setting = SettingsProblem::Setting;
+  const AdaptiveDesc& ad = s.sampler.adaptive;
+  if (std::string p = adaptive_spp_problem(ad); !p.empty()) return SettingsProblem{Setting::AdaptiveSpp, "adaptive: " + p};
+  if (std::string p = decision_problem(ad, s.film.filter.reconstruction); !p.empty())
+    return SettingsProblem{Setting::AdaptiveDecision, "adaptive decision " + p};
+  if (std::string p = crop_window_problem(s.film); !p.empty())
+    return SettingsProblem{Setting::CropWindow, "film.crop_window " + p};
+  return std::nullopt;
+}
+
+void check_render_settings(const SceneDesc& s) {
+  const std::optional<SettingsProblem> p = render_settings_problem(s);
+  if (!p) return;
+  if (p->setting == SettingsProblem::Setting::CropWindow) throw InputError(s.film.size_where + ": " + p->message);
+  throw InputError(p->message);
+}
+
+}  // namespace pdrt

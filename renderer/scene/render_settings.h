@@ -1,0 +1,38 @@
+#pragma once
+// The rules that tie a scene's render settings together (each value's own range is checked
+// where it is read). Each rule is written here once; `check_render_settings` runs them all
+// after either loader (scene_loader.cpp) and the renderer runs it again, and the command line
+// runs `render_settings_problem` after its overrides (app/scene_overrides.h). A loader that
+// can point at the setting in its file calls the rule there too, to name the place.
+#include "renderer/scene/scene_desc.h"
+
+#include <optional>
+#include <string>
+
+namespace pdrt {
+
+// Each rule's complaint, to follow the setting's name; "" when the settings keep the rule.
+// sampler.adaptive: "min_spp (8) must be <= max_spp (4)" (adaptive on only).
+std::string adaptive_spp_problem(const AdaptiveDesc& ad);
+// sampler.adaptive.decision: "\"split\" needs reconstruction \"importance\" or \"splat\", not
+// \"rank\"" (adaptive on only): rank selection keeps a candidate by its index among all of the
+// pixel's, so the odd and even halves are not each an unbiased estimate.
+std::string decision_problem(const AdaptiveDesc& ad, Reconstruction reconstruction);
+// film.crop_window: "covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8))".
+std::string crop_window_problem(const FilmDesc& film);
+
+struct SettingsProblem {
+  enum class Setting { AdaptiveSpp, AdaptiveDecision, CropWindow } setting;
+  // The setting named as outside a file: "adaptive: min_spp ...", "adaptive decision \"split\"
+  // needs ...", "film.crop_window covers no pixel ...".
+  std::string message;
+};
+
+// The first rule `s` breaks, in the order above, or nothing.
+std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s);
+
+// InputError with the problem's message (the crop window's after film.size_where, which names
+// the film's size in the scene file).
+void check_render_settings(const SceneDesc& s);
+
+}  // namespace pdrt

@@ -1,0 +1,31 @@
+#pragma once
+// The samplers' names (make_sampler in sampler.h builds them), apart from sampler.h so that the
+// scene description can name its default without the sampler interface.
+#include "sampling/core/name_table.h"
+
+#include <iterator>
+#include <string>
+
+namespace pdrt {
+
+// The samplers `make_sampler` builds, and their names: the one list of them (the scene file's
+// sampler.type, --sampler, --samplers, help texts and messages all read it). Every kind but
+// `regular` is a Monte Carlo sampler, unbiased over seeds; `regular` is Cook's regular sampling
+// (the same deterministic pattern in every pixel; biased, for aliasing demos).
+enum class SamplerKind { Random, Jitter, Poisson, Poisson065, Sobol, Pmj02bn, ZSobol, Regular };
+inline constexpr NamedValue<SamplerKind> kSamplerNames[] = {
+    {SamplerKind::Random, "random"},   {SamplerKind::Jitter, "jitter"},
+    {SamplerKind::Poisson, "poisson"}, {SamplerKind::Poisson065, "poisson-065"},
+    {SamplerKind::Sobol, "sobol"},     {SamplerKind::Pmj02bn, "pmj02bn"},
+    {SamplerKind::ZSobol, "zsobol"},   {SamplerKind::Regular, "regular"}};
+// What `compare` sweeps unless told: the project's own and the classic baselines (the peers
+// pmj02bn and zsobol on request, so the default sweep's time stays as documented).
+inline constexpr SamplerKind kCompareDefaultSamplers[] = {SamplerKind::Random, SamplerKind::Jitter, SamplerKind::Poisson,
+                                                          SamplerKind::Poisson065, SamplerKind::Sobol};
+static_assert(covers_in_order(kSamplerNames) && std::size(kSamplerNames) == std::size_t(SamplerKind::Regular) + 1,
+              "kSamplerNames names every SamplerKind, in order, regular last");
+inline const char* sampler_name(SamplerKind k) { return name_in(kSamplerNames, k); }
+// False for a name that is none of kSamplerNames.
+inline bool parse_sampler(const std::string& name, SamplerKind* out) { return parse_name_in(kSamplerNames, name, out); }
+
+}  // namespace pdrt

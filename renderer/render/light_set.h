@@ -40,7 +40,6 @@ class LightSet {
   // nothing.
   std::size_t light_count() const { return lights_.size(); }
   std::size_t environment_id() const { return environment_id_; }
-  const Light& light(std::size_t id) const { return lights_[id]; }
   const LightSelector& selector() const { return selector_; }
 
  private:

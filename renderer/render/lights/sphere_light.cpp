@@ -34,6 +34,33 @@ ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, 
   return x;
 }
 
+// The sphere at the normalised time as seen from ref: transform, centre, radius and the
+// vector to the centre with its squared length.
+struct SphereView {
+  Affine m;
+  Vec3 c;
+  float r;
+  Vec3 to_c;
+  float dc2;
+};
+
+SphereView view_from(const AreaEmitter& e, const Vec3& ref, float time) {
+  SphereView v;
+  v.m = e.scene->transform(e.shape, time);
+  v.c = v.m.point(e.scene->sphere_center(e.shape));
+  v.r = sphere_radius_at(*e.scene, e.shape, v.m);
+  v.to_c = v.c - ref;
+  v.dc2 = dot(v.to_c, v.to_c);
+  return v;
+}
+
+// 1 - cos of the half-angle of the cone a sphere of radius r subtends at squared distance
+// dc2, without cancellation for small spheres.
+float one_minus_cos_max(float r, float dc2) {
+  const float sin2_max = r * r / dc2, cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
+  return sin2_max / (1 + cos_max);
+}
+
 }  // namespace
 
 LightBounds SphereLight::bounds() const {
@@ -82,17 +109,15 @@ bool SphereLight::sample_area(const Affine& m, const Vec3& c, float r, const Vec
 
 bool SphereLight::sample(const Vec3& ref, float time, std::array<double, 2> u, LightSample* out) const {
   const EmbreeScene& s = *emitter.scene;
-  Affine m = s.transform(emitter.shape, time);
-  Vec3 c = m.point(s.sphere_center(emitter.shape));
-  float r = sphere_radius_at(s, emitter.shape, m);
-  Vec3 to_c = c - ref;
-  float dc2 = dot(to_c, to_c);
+  const SphereView v = view_from(emitter, ref, time);
+  const Affine& m = v.m;
+  const Vec3 c = v.c, to_c = v.to_c;
+  const float r = v.r, dc2 = v.dc2;
   if (sees_sphere_from_inside(dc2, r)) return sample_area(m, c, r, ref, u, out);
   // Outside: uniform over the cone of directions the sphere subtends (pbrt-v3 §14.2.2).
   float dc = std::sqrt(dc2);
-  float sin2_max = r * r / dc2, cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
-  float one_minus_cos_max = sin2_max / (1 + cos_max);  // no cancellation for small spheres
-  float one_minus_cos = float(u[0]) * one_minus_cos_max;
+  float cone = one_minus_cos_max(r, dc2);
+  float one_minus_cos = float(u[0]) * cone;
   float cos_t = 1 - one_minus_cos, sin_t = std::sqrt(std::max(0.0f, one_minus_cos * (2 - one_minus_cos)));
   float phi = float(2 * kPi * u[1]);
   Frame f(to_c / dc);
@@ -104,25 +129,20 @@ bool SphereLight::sample(const Vec3& ref, float time, std::array<double, 2> u, L
   out->x = sphere_light_point(s, emitter.shape, m, c, r, ref + wi * dist);
   out->n = normalize(out->x.p - c);
   out->radiance = emitter.radiance(emitter.material(), sphere_hit(s, emitter.shape, m, out->x.p));
-  out->pdf = 1.0f / (2 * kPi * one_minus_cos_max);
+  out->pdf = 1.0f / (2 * kPi * cone);
   return dist > 0;
 }
 
 float SphereLight::pdf(const Vec3& ref, const SurfaceHit& hit, float time, float pick) const {
-  const EmbreeScene& s = *emitter.scene;
-  Affine m = s.transform(emitter.shape, time);
-  Vec3 c = m.point(s.sphere_center(emitter.shape));
-  float r = sphere_radius_at(s, emitter.shape, m);
-  Vec3 to_c = c - ref;
-  float dc2 = dot(to_c, to_c);
+  const SphereView v = view_from(emitter, ref, time);
+  const float r = v.r;
   float density;
-  if (sees_sphere_from_inside(dc2, r)) {
+  if (sees_sphere_from_inside(v.dc2, r)) {
     Vec3 d = hit.p - ref;
     float d2 = dot(d, d), cos_l = std::abs(dot(hit.ng, d)) / std::sqrt(d2);
     density = cos_l > 0 ? d2 / (cos_l * 4 * kPi * r * r) : 0.0f;
   } else {
-    float sin2_max = r * r / dc2, cos_max = std::sqrt(std::max(0.0f, 1 - sin2_max));
-    density = 1.0f / (2 * kPi * (sin2_max / (1 + cos_max)));
+    density = 1.0f / (2 * kPi * one_minus_cos_max(r, v.dc2));
   }
   return pick * density;
 }

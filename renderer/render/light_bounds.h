@@ -7,6 +7,8 @@
 // unbiased.
 #include "renderer/scene/vec3.h"
 
+#include <cmath>
+
 namespace pdrt {
 
 struct Box3 {
@@ -45,6 +47,22 @@ struct LightBounds {
 };
 
 LightBounds merge(const LightBounds& a, const LightBounds& b);
+
+// Moving emitters' boxes are the union of the boxes at kTimeSamples times over the shutter,
+// padded by the largest step a point takes between two of them (a bound on how far it strays
+// in between). Their normal cone is the whole sphere, so an error here changes only the
+// estimate, never makes a contributing light's importance zero.
+inline constexpr int kTimeSamples = 65;
+
+// A light at infinity, beside the BVH, in the same units: its importance at a point of unit
+// normal n is phi (the environment: pi x its mean luminance) or, for a directional one (a
+// distant light arriving from w), phi |n . w|.
+struct InfiniteLightBounds {
+  Vec3 w{0.0f};
+  float phi = 0;
+  bool directional = false;
+  float importance(const Vec3& n) const { return directional ? phi * std::abs(dot(n, w)) : phi; }
+};
 
 // What importance() reads, with its derived terms (box centre, bounding-sphere radius, sin
 // theta_o) precomputed: the BVH evaluates it twice per level of every light choice.

@@ -1,6 +1,6 @@
 #pragma once
 // The scene's materials at render time: the owner of the scene's textures (opened once; the
-// light sampler borrows them for textured emitters), the BSDF of every material built once (and
+// light set borrows them for textured emitters), the BSDF of every material built once (and
 // its regularised twin when the integrator regularises), and the shading at a hit in one call:
 // a mix resolved to one component (mix_material.h), texture bindings evaluated at the hit's
 // footprint (texture_footprint.h) into a BSDF built for that hit.

@@ -15,7 +15,7 @@ float power_heuristic(float a, float b) {
 
 }  // namespace
 
-PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const MaterialSet& materials,
+PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSet& lights, const MaterialSet& materials,
                                const IntegratorDesc& settings)
     : scene_(scene), lights_(lights), materials_(materials), settings_(settings) {
   if (settings.regularize && !materials.regularizes())

@@ -7,7 +7,7 @@
 // replayable sampler, from the stream sample_dimensions.h names for it.
 #include "renderer/render/bsdf.h"
 #include "renderer/render/embree_scene.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "renderer/render/material_set.h"
 #include "renderer/render/sample_dimensions.h"
 #include "sampling/samplers/sampler.h"
@@ -26,7 +26,7 @@ struct PathResult {
 
 class PathIntegrator {
  public:
-  PathIntegrator(const EmbreeScene& scene, const LightSampler& lights, const MaterialSet& materials,
+  PathIntegrator(const EmbreeScene& scene, const LightSet& lights, const MaterialSet& materials,
                  const IntegratorDesc& settings);
   PathResult trace(Ray ray, const PixelSampleState& sampler) const;
   // The same path when the camera ray's intersection is already known (`found` false: it
@@ -36,7 +36,7 @@ class PathIntegrator {
  private:
   PathResult trace(Ray ray, const PixelSampleState& sampler, const SurfaceHit* first, bool found) const;
   const EmbreeScene& scene_;
-  const LightSampler& lights_;
+  const LightSet& lights_;
   const MaterialSet& materials_;
   IntegratorDesc settings_;
 };

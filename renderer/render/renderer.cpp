@@ -3,7 +3,7 @@
 #include "renderer/render/adaptive_rounds.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/filter.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "renderer/render/path_integrator.h"
 #include "renderer/render/pixel_renderer.h"
 #include "renderer/render/render_films.h"
@@ -58,7 +58,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const int footprint_spp = desc.sampler.adaptive.enabled ? desc.sampler.adaptive.max_spp : desc.sampler.spp;
   MaterialSet materials(scene, TextureFootprint(desc.camera, desc.film.width, desc.film.height, footprint_spp),
                         desc.integrator.regularize);
-  LightSampler lights(scene, materials.textures());
+  LightSet lights(scene, materials.textures());
   PathIntegrator integrator(scene, lights, materials, desc.integrator);
   ThinLensCamera camera(desc.camera, desc.film.width, desc.film.height);
   Filter filter(desc.film.filter);

@@ -114,7 +114,7 @@ struct ShapeDesc {
 // "prototypes"). Its shapes are in the prototype's own space (each with its static transform,
 // no motion: Embree instances one level deep) and carry no emitter material: pbrt-v4 refuses
 // area lights in instances, and the loader does too. A renderer given emitters here anyway
-// sees them only through BSDF sampling (they are not in the light sampler).
+// sees them only through BSDF sampling (they are not in the light set).
 struct PrototypeDesc {
   std::string name;
   std::vector<ShapeDesc> shapes;

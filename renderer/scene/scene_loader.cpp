@@ -833,7 +833,7 @@ void SceneParser::objects(const JsonNode& n, int prototype) {
   }
 }
 
-// pbrt-v4 refuses area lights in instances: the light sampler knows each emitter once, in
+// pbrt-v4 refuses area lights in instances: the light set holds each emitter once, in
 // world space, and an instanced emitter would be many.
 void SceneParser::refuse_emitter(const JsonNode& at, int material, int prototype) const {
   if (prototype < 0 || material < 0 || scene_.materials[size_t(material)].type != MaterialType::Emitter) return;

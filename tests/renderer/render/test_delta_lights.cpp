@@ -3,7 +3,7 @@
 // origin and at scales 1e-3 .. 1e5; shadows; and light selection with delta lights among area
 // lights and the environment (probabilities that sum to 1, images that add up).
 #include "renderer/render/embree_scene.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "sampling/core/rng.h"
 #include "tests/support/render_fixtures.h"
 
@@ -350,7 +350,7 @@ TEST(DeltaLights, SelectionProbabilitiesSumToOneWithDeltaLights) {
       EmbreeDevice device;
       EmbreeScene scene(s, device);
       TextureSet textures(scene.desc());
-      LightSampler lights(scene, textures);
+      LightSet lights(scene, textures);
       ASSERT_EQ(lights.light_count(), 2u + 2 + 1 + (env ? 1 : 0));
       const std::size_t spot = 3;
       Rng rng(5);
@@ -360,21 +360,21 @@ TEST(DeltaLights, SelectionProbabilitiesSumToOneWithDeltaLights) {
         double z = 1 - 2 * rng.uniform(), r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * M_PI * rng.uniform();
         const Vec3 n(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z));
         double sum = 0;
-        for (std::size_t l = 0; l < lights.light_count(); ++l) sum += lights.select_pmf(p, n, l);
+        for (std::size_t l = 0; l < lights.light_count(); ++l) sum += lights.selector().select_pmf(p, n, l);
         ASSERT_NEAR(sum, 1.0, 1e-4) << "scale " << scale << " point " << i;
         // The spot's cone: 20° about -y from its position (canonical units).
         const Vec3 from_spot = (p - at.offset) * (1 / scale) - Vec3(-2, 3, 0);
         const bool in_cone = angle_deg(from_spot, {0, -1, 0}) < 20;
         if (in_cone) {
-          EXPECT_GT(lights.select_pmf(p, n, spot), 0) << "inside the spot's cone, scale " << scale;
+          EXPECT_GT(lights.selector().select_pmf(p, n, spot), 0) << "inside the spot's cone, scale " << scale;
         } else if (angle_deg(from_spot, {0, -1, 0}) > 20.5) {
-          spot_zero += lights.select_pmf(p, n, spot) == 0;
+          spot_zero += lights.selector().select_pmf(p, n, spot) == 0;
         }
         for (float u : {0.0f, 0.2f, 0.5f, 0.7f, 0.9f, 0.999f}) {
           std::size_t l;
           float pm;
-          if (!lights.select(p, n, u, &l, &pm)) continue;
-          ASSERT_EQ(pm, lights.select_pmf(p, n, l)) << "light " << l;
+          if (!lights.selector().select(p, n, u, &l, &pm)) continue;
+          ASSERT_EQ(pm, lights.selector().select_pmf(p, n, l)) << "light " << l;
         }
       }
       EXPECT_GT(spot_zero, 100) << "outside its cone a spot light is never picked";

@@ -5,7 +5,7 @@
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/environment_map.h"
 #include "renderer/scene/equirect.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "sampling/analysis/incomplete_gamma.h"
 #include "sampling/core/rng.h"
 #include "tests/support/render_fixtures.h"
@@ -233,8 +233,8 @@ TEST(EnvironmentMap, SelectionOddsScaleWithTheMapsRadiance) {
     EmbreeDevice device;
     EmbreeScene scene(s, device);
     TextureSet textures(scene.desc());
-    LightSampler lights(scene, textures);
-    pmf[k] = lights.select_pmf({0.3f, 0, 0.2f}, {0, 1, 0}, lights.environment_id());
+    LightSet lights(scene, textures);
+    pmf[k] = lights.selector().select_pmf({0.3f, 0, 0.2f}, {0, 1, 0}, lights.environment_id());
     odds[k] = pmf[k] / (1 - pmf[k]);
   }
   EXPECT_LT(pmf[0], 0.01);
@@ -243,15 +243,15 @@ TEST(EnvironmentMap, SelectionOddsScaleWithTheMapsRadiance) {
 }
 
 // The map's light sample: direction, radiance and pdf of the map, times the pick.
-TEST(EnvironmentMap, LightSamplerDrawsFromTheMap) {
+TEST(EnvironmentMap, LightSetDrawsFromTheMap) {
   SceneDesc s = quad_light_and_map(10);
   EmbreeDevice device;
   EmbreeScene scene(s, device);
   TextureSet textures(scene.desc());
-  LightSampler lights(scene, textures);
+  LightSet lights(scene, textures);
   const Vec3 ref(0.3f, 0, 0.2f), n(0, 1, 0);
-  const float pick = lights.select_pmf(ref, n, lights.environment_id());
-  const EnvironmentMap& map = lights.environment_map();
+  const float pick = lights.selector().select_pmf(ref, n, lights.environment_id());
+  const EnvironmentMap& map = *lights.environment_light().map;
   Rng rng(5);
   int env = 0;
   for (int i = 0; i < 2000; ++i) {

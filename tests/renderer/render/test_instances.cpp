@@ -303,7 +303,7 @@ TEST(Instances, SceneBoundsCoverTheInstances) {
 }
 
 // An emitter inside a prototype (the loader refuses it; a SceneDesc built in code may hold one)
-// is not in the light sampler, so only BSDF sampling reaches it, with MIS weight 1: unbiased.
+// is not in the light set, so only BSDF sampling reaches it, with MIS weight 1: unbiased.
 // A diffuse plane (0.5) under an instanced 2 x 2 square of radiance 1 at height 1 reads
 // rho * L * F at the point below its centre (F = 0.5541, the square's form factor), within
 // 3 % (16 384 cosine-sampled directions over the 8 x 8 patch seen: about 1 % standard error).

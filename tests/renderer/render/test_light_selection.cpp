@@ -1,7 +1,7 @@
 // Light selection by estimated contribution at the shading point (light BVH with the
 // environment on the same footing; issue 14 defect 4).
 #include "renderer/render/embree_scene.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "sampling/analysis/incomplete_gamma.h"
 #include "sampling/core/rng.h"
 #include "tests/support/render_fixtures.h"
@@ -58,7 +58,7 @@ TEST(LightSelection, PmfSumsToOneAwayFromTheOriginAtEveryScale) {
         EmbreeDevice device;
         EmbreeScene scene(s, device);
         TextureSet textures(scene.desc());
-        LightSampler lights(scene, textures);
+        LightSet lights(scene, textures);
         ASSERT_EQ(lights.light_count(), 2u * 5 + 3 + (env ? 1 : 0));
         Rng rng(11);
         int nonzero = 0;
@@ -68,7 +68,7 @@ TEST(LightSelection, PmfSumsToOneAwayFromTheOriginAtEveryScale) {
           Vec3 n = random_unit(rng);
           double sum = 0;
           for (std::size_t l = 0; l < lights.light_count(); ++l) {
-            float pm = lights.select_pmf(p, n, l);
+            float pm = lights.selector().select_pmf(p, n, l);
             ASSERT_GE(pm, 0.0f);
             sum += pm;
           }
@@ -78,8 +78,8 @@ TEST(LightSelection, PmfSumsToOneAwayFromTheOriginAtEveryScale) {
           for (float u : {0.0f, 0.3f, 0.77f, 0.999f}) {
             std::size_t l;
             float pm;
-            ASSERT_TRUE(lights.select(p, n, u, &l, &pm));
-            ASSERT_EQ(pm, lights.select_pmf(p, n, l));
+            ASSERT_TRUE(lights.selector().select(p, n, u, &l, &pm));
+            ASSERT_EQ(pm, lights.selector().select_pmf(p, n, l));
           }
         }
         EXPECT_GT(nonzero, 190) << "points see some light";
@@ -92,7 +92,7 @@ TEST(LightSelection, PickFrequenciesMatchThePmf) {
   EmbreeDevice device;
   EmbreeScene scene(s, device);
   TextureSet textures(scene.desc());
-  LightSampler lights(scene, textures);
+  LightSet lights(scene, textures);
   Rng rng(5);
   const int kPicks = 200000;
   for (int point = 0; point < 4; ++point) {
@@ -102,13 +102,13 @@ TEST(LightSelection, PickFrequenciesMatchThePmf) {
     for (int i = 0; i < kPicks; ++i) {
       std::size_t l;
       float pm;
-      if (lights.select(p, n, float(rng.uniform()), &l, &pm)) ++count[l];
+      if (lights.selector().select(p, n, float(rng.uniform()), &l, &pm)) ++count[l];
     }
     // Bins expected to hold >= 20 picks; the rest pooled into one bin.
     double chi2 = 0, pooled_e = 0, pooled_o = 0;
     int bins = 0;
     for (std::size_t l = 0; l < count.size(); ++l) {
-      double e = kPicks * double(lights.select_pmf(p, n, l));
+      double e = kPicks * double(lights.selector().select_pmf(p, n, l));
       if (e < 20) {
         pooled_e += e, pooled_o += count[l];
         continue;
@@ -133,11 +133,11 @@ TEST(LightSelection, NearDimLightGetsMostPicksBesideIt) {
   EmbreeDevice device;
   EmbreeScene scene(s, device);
   TextureSet textures(scene.desc());
-  LightSampler lights(scene, textures);
+  LightSet lights(scene, textures);
   ASSERT_EQ(lights.light_count(), 4u);
   const Vec3 p(0.02f, 0, 0.03f), n(0, 1, 0);
-  const double dim = lights.select_pmf(p, n, 0) + lights.select_pmf(p, n, 1);
-  const double bright = lights.select_pmf(p, n, 2) + lights.select_pmf(p, n, 3);
+  const double dim = lights.selector().select_pmf(p, n, 0) + lights.selector().select_pmf(p, n, 1);
+  const double bright = lights.selector().select_pmf(p, n, 2) + lights.selector().select_pmf(p, n, 3);
   EXPECT_GT(dim, 0.8);
   EXPECT_GT(bright, 1e-3);
   int dim_picks = 0;
@@ -161,8 +161,8 @@ TEST(LightSelection, EnvironmentShareDoesNotGrowWithTheScene) {
     EmbreeDevice device;
     EmbreeScene scene(s, device);
     TextureSet textures(scene.desc());
-    LightSampler lights(scene, textures);
-    share[big] = lights.select_pmf({0.2f, 0, 0.1f}, {0, 1, 0}, lights.environment_id());
+    LightSet lights(scene, textures);
+    share[big] = lights.selector().select_pmf({0.2f, 0, 0.1f}, {0, 1, 0}, lights.environment_id());
   }
   EXPECT_EQ(share[0], share[1]);
   EXPECT_LT(share[1], 0.2);

@@ -2,7 +2,7 @@
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/filter.h"
 #include "renderer/compare/image_metrics.h"
-#include "renderer/render/light_sampler.h"
+#include "renderer/render/light_set.h"
 #include "renderer/render/path_integrator.h"
 #include "tests/support/render_fixtures.h"
 #include "renderer/render/thin_lens_camera.h"
@@ -203,7 +203,7 @@ TEST(RenderDeterminism, SamePixelAndSampleIndexReplayTheSamePath) {
   EmbreeDevice device;
   EmbreeScene scene(s, device);
   MaterialSet materials(scene, TextureFootprint(s.camera, 16, 16, s.sampler.spp), s.integrator.regularize);
-  LightSampler lights(scene, materials.textures());
+  LightSet lights(scene, materials.textures());
   PathIntegrator integrator(scene, lights, materials, s.integrator);
   ThinLensCamera cam(s.camera, 16, 16);
   auto sampler = make_scene_sampler(s.sampler, s.film);

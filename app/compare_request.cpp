@@ -50,12 +50,6 @@ std::string scene_content(const SceneDesc& scene, const InputFileRecord& read) {
 
 }  // namespace
 
-std::string default_samplers() {
-  std::string s;
-  for (const std::string& name : compare_default_sampler_names()) s += (s.empty() ? "" : ",") + name;
-  return s;
-}
-
 CompareOptions compare_options(const CompareRequest& r) {
   CompareOptions c;
   auto split = [](const std::string& s) {

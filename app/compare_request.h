@@ -12,8 +12,13 @@
 
 namespace pdrt::cli {
 
-// "random,jitter,poisson,poisson-065,sobol": compare_default_sampler_names().
-std::string default_samplers();
+// "random,jitter,poisson,poisson-065,sobol": kCompareDefaultSamplers. Inline (the name table
+// only), so the plan readers link without the samplers (tests/fuzz).
+inline std::string default_samplers() {
+  std::string s;
+  for (const std::string& name : compare_default_sampler_names()) s += (s.empty() ? "" : ",") + name;
+  return s;
+}
 
 struct CompareRequest {
   std::string scene, label;  // the file to load; the name the report shows (default: scene)

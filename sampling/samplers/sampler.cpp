@@ -48,15 +48,6 @@ const std::vector<std::string>& all_sampler_names() {
 
 std::string sampler_name_list() { return name_list(kSamplerNames); }
 
-const std::vector<std::string>& compare_default_sampler_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n;
-    for (SamplerKind k : kCompareDefaultSamplers) n.push_back(sampler_name(k));
-    return n;
-  }();
-  return names;
-}
-
 std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const SamplerShape& shape) {
   switch (kind) {
     case SamplerKind::Random: return make_random_sampler(seed);

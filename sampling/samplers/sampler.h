@@ -211,9 +211,6 @@ const std::vector<std::string>& sampler_names();
 const std::vector<std::string>& all_sampler_names();
 std::string sampler_name_list();  // "random, jitter, ..., regular"
 
-// `compare`'s default samplers (kCompareDefaultSamplers), by name.
-const std::vector<std::string>& compare_default_sampler_names();
-
 // What a sampler that arranges samples across pixels (zsobol) needs of the render: the
 // samples per pixel of its first pass (the block each pixel takes) and the film's size.
 struct SamplerShape {

@@ -5,6 +5,7 @@
 
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace pdrt {
 
@@ -25,6 +26,12 @@ inline constexpr SamplerKind kCompareDefaultSamplers[] = {SamplerKind::Random, S
 static_assert(covers_in_order(kSamplerNames) && std::size(kSamplerNames) == std::size_t(SamplerKind::Regular) + 1,
               "kSamplerNames names every SamplerKind, in order, regular last");
 inline const char* sampler_name(SamplerKind k) { return name_in(kSamplerNames, k); }
+// kCompareDefaultSamplers by name (inline: the plan readers link without the samplers).
+inline std::vector<std::string> compare_default_sampler_names() {
+  std::vector<std::string> n;
+  for (SamplerKind k : kCompareDefaultSamplers) n.push_back(sampler_name(k));
+  return n;
+}
 // False for a name that is none of kSamplerNames.
 inline bool parse_sampler(const std::string& name, SamplerKind* out) { return parse_name_in(kSamplerNames, name, out); }
 

@@ -204,11 +204,8 @@ ojson inline_mesh(const MeshData& mesh) {
   return o;
 }
 
-}  // namespace
 
-void write_scene_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options) {
-  ojson j;
-  const CameraDesc& c = s.camera;
+ojson camera_json(const CameraDesc& c) {
   ojson cam = {{"position", vec(c.position)}, {"look_at", vec(c.look_at)}, {"up", vec(c.up)},
                {"vfov_deg", c.vfov_deg}, {"aperture_radius", c.aperture_radius}};
   if (c.focus_distance > 0) cam["focus_distance"] = c.focus_distance;
@@ -222,7 +219,11 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
     for (const CameraKey& k : c.motion)
       cam["motion"].push_back({{"time", k.time}, {"position", vec(k.position)}, {"look_at", vec(k.look_at)}});
   }
-  j["camera"] = cam;
+  return cam;
+}
+
+// Film, sampler and integrator.
+void write_render_options(const SceneDesc& s, ojson& j) {
   static const char* kFilters[] = {"box", "tent", "gaussian", "mitchell"};
   j["film"] = {{"width", s.film.width}, {"height", s.film.height},
                {"filter", {{"type", kFilters[int(s.film.filter.type)]}, {"radius", s.film.filter.radius},
@@ -241,39 +242,40 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
   j["sampler"] = sampler;
   j["integrator"] = {{"max_depth", s.integrator.max_depth}, {"rr_depth", s.integrator.rr_depth}};
   if (s.integrator.regularize) j["integrator"]["regularize"] = true;
+}
 
-  if (!s.textures.empty()) {
-    ojson tx = ojson::object();
-    for (size_t i = 0; i < s.textures.size(); ++i) {
-      const TextureDesc& t = s.textures[i];
-      ojson o;
-      if (t.kind == TextureDesc::Kind::Constant) {
-        o = {{"type", "constant"}, {"value", vec(unit(t.value))}};
-      } else if (t.kind == TextureDesc::Kind::Checkerboard) {
-        o = {{"type", "checkerboard"}, {"scale", ojson::array({t.scale_u, t.scale_v})},
-             {"color0", texture_input(t.color0)}, {"color1", texture_input(t.color1)}};
-      } else if (t.kind == TextureDesc::Kind::Image) {
-        o = {{"type", "image"}, {"file", fs::absolute(t.file).string()}, {"filter", filter_name(t.filter)},
-             {"wrap", wrap_name(t.wrap)}, {"encoding", encoding_name(t.encoding)},
-             {"scale", ojson::array({t.scale_u, t.scale_v})}};
-      } else if (t.kind == TextureDesc::Kind::Scale) {
-        o = {{"type", "scale"}, {"tex", texture_input(t.tex)}, {"scale", texture_input(t.scale)}};
-      } else if (t.kind == TextureDesc::Kind::Mix) {
-        o = {{"type", "mix"}, {"tex1", texture_input(t.tex1)}, {"tex2", texture_input(t.tex2)}};
-        o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture)) : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
-      } else if (t.kind == TextureDesc::Kind::Invert) {
-        o = {{"type", "invert"}, {"tex", texture_input(t.tex)}};
-      } else {
-        o = {{"type", "power"}, {"tex", texture_input(t.tex)}, {"exponent", t.exponent}};
-      }
-      tx[texture_name(int(i))] = o;
+ojson textures_json(const SceneDesc& s) {
+  ojson tx = ojson::object();
+  for (size_t i = 0; i < s.textures.size(); ++i) {
+    const TextureDesc& t = s.textures[i];
+    ojson o;
+    if (t.kind == TextureDesc::Kind::Constant) {
+      o = {{"type", "constant"}, {"value", vec(unit(t.value))}};
+    } else if (t.kind == TextureDesc::Kind::Checkerboard) {
+      o = {{"type", "checkerboard"}, {"scale", ojson::array({t.scale_u, t.scale_v})},
+           {"color0", texture_input(t.color0)}, {"color1", texture_input(t.color1)}};
+    } else if (t.kind == TextureDesc::Kind::Image) {
+      o = {{"type", "image"}, {"file", fs::absolute(t.file).string()}, {"filter", filter_name(t.filter)},
+           {"wrap", wrap_name(t.wrap)}, {"encoding", encoding_name(t.encoding)},
+           {"scale", ojson::array({t.scale_u, t.scale_v})}};
+    } else if (t.kind == TextureDesc::Kind::Scale) {
+      o = {{"type", "scale"}, {"tex", texture_input(t.tex)}, {"scale", texture_input(t.scale)}};
+    } else if (t.kind == TextureDesc::Kind::Mix) {
+      o = {{"type", "mix"}, {"tex1", texture_input(t.tex1)}, {"tex2", texture_input(t.tex2)}};
+      o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture)) : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
+    } else if (t.kind == TextureDesc::Kind::Invert) {
+      o = {{"type", "invert"}, {"tex", texture_input(t.tex)}};
+    } else {
+      o = {{"type", "power"}, {"tex", texture_input(t.tex)}, {"exponent", t.exponent}};
     }
-    j["textures"] = tx;
+    tx[texture_name(int(i))] = o;
   }
-  ojson mats = ojson::object();
-  for (size_t i = 0; i < s.materials.size(); ++i) mats[numbered('m', i)] = material(s.materials[i]);
-  j["materials"] = mats;
+  return tx;
+}
 
+// Shapes, prototypes (into j["prototypes"]) and instances; meshes as OBJ files beside
+// json_file unless inlined.
+ojson objects_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options, ojson& j) {
   const fs::path mesh_dir = json_file.parent_path() / (json_file.stem().string() + ".meshes");
   ojson objects = ojson::array();
   bool made_dir = false;
@@ -320,8 +322,11 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
     place(o, in.transform, in.motion);
     objects.push_back(o);
   }
-  j["objects"] = objects;
+  return objects;
+}
 
+// Delta lights and the environment; a resampled environment image is written beside json_file.
+ojson lights_json(const SceneDesc& s, const fs::path& json_file) {
   ojson lights = ojson::array();
   for (const DeltaLightDesc& l : s.delta_lights) {
     ojson o;
@@ -353,6 +358,21 @@ void write_scene_json(const SceneDesc& s, const fs::path& json_file, const Scene
   } else if (!is_black(e.radiance)) {
     lights.push_back({{"type", "environment"}, {"radiance", vec(e.radiance)}});
   }
+  return lights;
+}
+
+}  // namespace
+
+void write_scene_json(const SceneDesc& s, const fs::path& json_file, const SceneWriteOptions& options) {
+  ojson j;
+  j["camera"] = camera_json(s.camera);
+  write_render_options(s, j);
+  if (!s.textures.empty()) j["textures"] = textures_json(s);
+  ojson mats = ojson::object();
+  for (size_t i = 0; i < s.materials.size(); ++i) mats[numbered('m', i)] = material(s.materials[i]);
+  j["materials"] = mats;
+  j["objects"] = objects_json(s, json_file, options, j);
+  const ojson lights = lights_json(s, json_file);
   if (!lights.empty()) j["lights"] = lights;
   write_file_atomically(json_file, [&](std::ostream& out) { out << j.dump(1) << "\n"; });
 }

@@ -86,8 +86,8 @@ void add_analyze_command(CLI::App& app) {
   table->excludes(files);
   cmd->add_flag("--periodic", o->periodic, "Toroidal distances (for sets generated with --periodic)");
   add_integer_option(cmd, "--resolution", o->resolution, IntRange{0, INT32_MAX},
-                  "Periodogram grid size R (even; 2-D: 32..4096, 1-D: 64..16777216); default: the smallest power "
-                  "of two >= 4 N^(1/d)");
+                     "Periodogram grid size R (even; 2-D: 32..4096, 1-D: 64..16777216); default: the smallest power "
+                     "of two >= 4 N^(1/d)");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
   cmd->add_flag("--no-plots", o->no_plots, "Skip the PNG plots (no python3/matplotlib needed)");
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
@@ -115,8 +115,7 @@ void add_analyze_command(CLI::App& app) {
     if (!o->no_plots) python = find_plot_python();
     const fs::path out = o->out;
     std::error_code ec;
-    if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-      throw InputError(o->out + ": exists and is not a directory");
+    if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o->out + ": exists and is not a directory");
     create_output_directory(out);
     check_writable(out / "stats.json");
 
@@ -170,13 +169,14 @@ void add_analyze_command(CLI::App& app) {
       double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const auto& s = a.stats;
       auto num = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : NAN; };
-      std::fprintf(stderr,
-                   "pdrt analyze: %zu file(s), %zu points, dim %d: min distance %.6g, rho %.4g, max empty radius %.6g "
-                   "(%s), chi2 p %.3g; periodogram %d^%d over %d realization(s); %.2f s -> %s\n",
-                   sets.size(), sets.front().size(), sets.front().dim, num(s["min_distance"]),
-                   num(s["relative_radius"]), num(s["max_empty_radius"]),
-                   s["maximal"].is_boolean() ? (s["maximal"].get<bool>() ? "maximal" : "not maximal") : "maximality undefined", num(s["chi2_p"]), pg.resolution,
-                   pg.spectral_dim, pg.realizations, secs, o->out.c_str());
+      std::fprintf(
+          stderr,
+          "pdrt analyze: %zu file(s), %zu points, dim %d: min distance %.6g, rho %.4g, max empty radius %.6g "
+          "(%s), chi2 p %.3g; periodogram %d^%d over %d realization(s); %.2f s -> %s\n",
+          sets.size(), sets.front().size(), sets.front().dim, num(s["min_distance"]), num(s["relative_radius"]),
+          num(s["max_empty_radius"]),
+          s["maximal"].is_boolean() ? (s["maximal"].get<bool>() ? "maximal" : "not maximal") : "maximality undefined",
+          num(s["chi2_p"]), pg.resolution, pg.spectral_dim, pg.realizations, secs, o->out.c_str());
     }
   });
 }

@@ -31,7 +31,8 @@ void add_collect_command(CLI::App& app) {
       for (std::size_t i = 0; i < left.size() && i < 10; ++i) list += (i ? " " : "") + std::to_string(left[i]);
       if (left.size() > 10) list += " ...";
       throw InputError(o->dir + ": " + std::to_string(left.size()) + " of " + std::to_string(plan.jobs.size()) +
-                       " jobs have not finished (" + list + "); run them with `" + command_name() + " run-job " + o->dir + " INDEX`");
+                       " jobs have not finished (" + list + "); run them with `" + command_name() + " run-job " +
+                       o->dir + " INDEX`");
     }
     CompareRequest r = plan_request(plan);
     r.quiet = o->quiet;
@@ -44,8 +45,9 @@ void add_collect_command(CLI::App& app) {
     const std::filesystem::path results =
         write_compare_report(p.scene, p.options, [&](const CompareJob& job) { return read_plan_job(plan, job); });
     if (!o->no_plots) write_compare_plots(python, p.options.out);
-    if (!o->quiet) std::fprintf(stderr, "pdrt collect: wrote %s and %s\n", results.c_str(),
-                                o->no_plots ? "no plots" : (p.options.out / "index.html").c_str());
+    if (!o->quiet)
+      std::fprintf(stderr, "pdrt collect: wrote %s and %s\n", results.c_str(),
+                   o->no_plots ? "no plots" : (p.options.out / "index.html").c_str());
   });
 }
 

@@ -31,13 +31,15 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("scene", o->scene, "Scene file: pdrt JSON, or pbrt-v4 (*.pbrt)")->required();
   cmd->add_flag("--strict", o->strict, "pbrt scenes: refuse anything pdrt cannot represent instead of listing it");
   auto* out_opt = cmd->add_option("--out,-o", o->out, "Output directory (report, images, plots)");
-  auto* plan_opt = cmd->add_option("--plan", o->plan,
-                  "Write the comparison as a plan of independent jobs into this directory instead of rendering "
-                  "(run them with `pdrt run-job`, then `pdrt collect` writes the report there)");
+  auto* plan_opt =
+      cmd->add_option("--plan", o->plan,
+                      "Write the comparison as a plan of independent jobs into this directory instead of rendering "
+                      "(run them with `pdrt run-job`, then `pdrt collect` writes the report there)");
   cmd->add_option("--samplers", o->samplers, "Comma-separated samplers")->default_val(o->samplers);
   cmd->add_option("--spp", o->spp, "Comma-separated, increasing sample counts")->default_val(o->spp);
-  cmd->add_flag("--adaptive", o->adaptive,
-                "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4, more while needed) against uniform sampling");
+  cmd->add_flag(
+      "--adaptive", o->adaptive,
+      "Also sweep adaptive refinement's threshold (x 2^k, k = -4..4, more while needed) against uniform sampling");
   add_real_option(cmd, "--adaptive-threshold", o->adaptive_threshold,
                   "Centre of the sweep (default: the scene's, else the metric's default)");
   cmd->add_option("--adaptive-metric", o->adaptive_metric,
@@ -46,8 +48,9 @@ void add_compare_command(CLI::App& app) {
                   name_list(kAdaptiveVarianceNames, " | ") + " (default: the scene's)");
   cmd->add_option("--adaptive-decision", o->adaptive_decision,
                   name_list(kAdaptiveDecisionNames, " | ") + " (default: the scene's)");
-  cmd->add_option("--reconstruction", o->reconstruction,
-                  name_list(kReconstructionNames, " | ") + ", for every render and the reference (default: the scene's)");
+  cmd->add_option(
+      "--reconstruction", o->reconstruction,
+      name_list(kReconstructionNames, " | ") + ", for every render and the reference (default: the scene's)");
   add_integer_option(cmd, "--adaptive-target-spp", o->adaptive_target_spp, kSppRange,
                      "Report the adaptive samples needed to reach the uniform RMSE at this spp (one of --spp)")
       ->default_str("64");
@@ -60,7 +63,8 @@ void add_compare_command(CLI::App& app) {
   cmd->add_option("--cache-dir", o->cache, "Reference cache directory (default ~/.cache/pdrt/references)");
   add_integer_option(cmd, "--width", o->width, kFilmSizeRange, "Image width (overrides film.width)");
   add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height (overrides film.height)");
-  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")->default_str("0");
+  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")
+      ->default_str("0");
   cmd->add_flag("--regularize", o->regularize,
                 "Biased: render with path regularisation (the reference stays unbiased; the report says so)");
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
@@ -70,7 +74,8 @@ void add_compare_command(CLI::App& app) {
     const bool planning = plan_opt->count() > 0;
     if (out_opt->count() > 0 && planning)
       throw UsageError("--out and --plan: give one (a plan's report is written into its directory)");
-    if (out_opt->count() == 0 && !planning) throw UsageError("give --out DIR (the report) or --plan DIR (a plan of jobs)");
+    if (out_opt->count() == 0 && !planning)
+      throw UsageError("give --out DIR (the report) or --plan DIR (a plan of jobs)");
     require_output_path(planning ? "--plan" : "-o/--out", planning ? o->plan : o->out);
     compare_options(*o);  // usage errors first
     std::string python;
@@ -101,8 +106,9 @@ void add_compare_command(CLI::App& app) {
     require_image_io();
     const std::filesystem::path results = run_compare(p.scene, p.options);
     if (!o->no_plots) write_compare_plots(python, p.options.out);
-    if (!o->quiet) std::fprintf(stderr, "pdrt compare: wrote %s and %s\n", results.c_str(),
-                                o->no_plots ? "no plots" : (p.options.out / "index.html").c_str());
+    if (!o->quiet)
+      std::fprintf(stderr, "pdrt compare: wrote %s and %s\n", results.c_str(),
+                   o->no_plots ? "no plots" : (p.options.out / "index.html").c_str());
   });
 }
 

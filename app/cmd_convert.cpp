@@ -18,7 +18,8 @@ void add_convert_command(CLI::App& app) {
     bool strict = false, quiet = false, inline_meshes = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("convert", "Write a scene (pbrt-v4 *.pbrt or pdrt JSON) as pdrt JSON, meshes as OBJ beside it.");
+  auto* cmd = app.add_subcommand("convert",
+                                 "Write a scene (pbrt-v4 *.pbrt or pdrt JSON) as pdrt JSON, meshes as OBJ beside it.");
   cmd->add_option("scene", o->scene, "Scene file: pdrt JSON, or pbrt-v4 (*.pbrt)")->required();
   cmd->add_option("--out,-o", o->out, "The JSON file to write (meshes go to NAME.meshes/ beside it)")->required();
   cmd->add_flag("--strict", o->strict, "pbrt scenes: refuse anything pdrt cannot represent instead of listing it");
@@ -31,8 +32,8 @@ void add_convert_command(CLI::App& app) {
     SceneDesc scene = load_scene(o->scene, o->strict);
     write_scene_json(scene, o->out, {o->inline_meshes});
     if (!o->quiet)
-      std::fprintf(stderr, "pdrt convert: %s: %zu shapes, %zu materials, %zu textures\n", o->out.c_str(), scene.shapes.size(),
-                   scene.materials.size(), scene.textures.size());
+      std::fprintf(stderr, "pdrt convert: %s: %zu shapes, %zu materials, %zu textures\n", o->out.c_str(),
+                   scene.shapes.size(), scene.materials.size(), scene.textures.size());
   });
 }
 

@@ -38,11 +38,9 @@ void add_fireflies_command(CLI::App& app) {
   cmd->add_flag("--list", o->list, "Also print each extra firefly, then each speck, as x y R G B");
   cmd->callback([o] {
     if (!(o->ratio > 1)) throw UsageError("--ratio must be > 1, got " + std::to_string(o->ratio));
-    if (!(o->speck_ratio > 1))
-      throw UsageError("--speck-ratio must be > 1, got " + std::to_string(o->speck_ratio));
+    if (!(o->speck_ratio > 1)) throw UsageError("--speck-ratio must be > 1, got " + std::to_string(o->speck_ratio));
     if (!(o->floor >= 0)) throw UsageError("--floor must be >= 0, got " + std::to_string(o->floor));
-    if (!(o->speck_floor >= 0))
-      throw UsageError("--speck-floor must be >= 0, got " + std::to_string(o->speck_floor));
+    if (!(o->speck_floor >= 0)) throw UsageError("--speck-floor must be >= 0, got " + std::to_string(o->speck_floor));
     const Image test = read_image_rgb(o->image), ref = read_image_rgb(o->reference);
     if (test.width != ref.width || test.height != ref.height)
       throw InputError(o->image + ": " + std::to_string(test.width) + "x" + std::to_string(test.height) +
@@ -52,9 +50,10 @@ void add_fireflies_command(CLI::App& app) {
     const std::vector<unsigned char> specks = speck_mask(test, ref, o->speck_ratio, o->speck_floor);
     long long n_specks = 0;
     for (unsigned char m : specks) n_specks += m;
-    std::printf("%lld fireflies (%lld in the image, %lld in the reference, ratio %g, floor %g); "
-                "%lld specks (over %g x the reference and +%g)\n",
-                c.extra, c.test, c.reference, o->ratio, o->floor, n_specks, o->speck_ratio, o->speck_floor);
+    std::printf(
+        "%lld fireflies (%lld in the image, %lld in the reference, ratio %g, floor %g); "
+        "%lld specks (over %g x the reference and +%g)\n",
+        c.extra, c.test, c.reference, o->ratio, o->floor, n_specks, o->speck_ratio, o->speck_floor);
     if (o->list) {
       const auto t = firefly_mask(test, o->ratio, o->floor), r = firefly_mask(ref, o->ratio, o->floor);
       auto print = [&](const char* what, std::size_t i) {

@@ -57,7 +57,8 @@ nlohmann::json spp_distribution(const std::vector<float>& samples) {
   nlohmann::json bins = nlohmann::json::array();
   for (std::size_t k = 0; k < count.size(); ++k)
     if (count[k])
-      bins.push_back({{"from", k == 0 ? 0.0 : std::ldexp(1.0, int(k))}, {"below", std::ldexp(1.0, int(k) + 1)},
+      bins.push_back({{"from", k == 0 ? 0.0 : std::ldexp(1.0, int(k))},
+                      {"below", std::ldexp(1.0, int(k) + 1)},
                       {"pixels", count[k]}});
   j["histogram"] = bins;
   return j;
@@ -109,7 +110,8 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   j["spp_mean"] = r.stats.spp_mean;
   j["spp_distribution"] = spp_distribution(r.image.samples);
   if (ad.enabled)
-    j["adaptive"] = {{"min_spp", ad.min_spp},     {"max_spp", ad.max_spp},
+    j["adaptive"] = {{"min_spp", ad.min_spp},
+                     {"max_spp", ad.max_spp},
                      {"metric", adaptive_metric_name(ad.metric)},
                      {"threshold", effective_threshold(ad)},
                      {"variance", adaptive_variance_name(ad.variance)},
@@ -123,8 +125,13 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   if (r.stats.ranks.size() > 1) {
     j["ranks"] = nlohmann::json::array();
     for (const RankStats& k : r.stats.ranks)
-      j["ranks"].push_back({{"rank", k.rank}, {"seconds", k.seconds}, {"exchange_seconds", k.exchange_seconds},
-                            {"samples", k.samples}, {"rays", k.rays}, {"tiles", k.tiles}, {"bytes_sent", k.bytes_sent}});
+      j["ranks"].push_back({{"rank", k.rank},
+                            {"seconds", k.seconds},
+                            {"exchange_seconds", k.exchange_seconds},
+                            {"samples", k.samples},
+                            {"rays", k.rays},
+                            {"tiles", k.tiles},
+                            {"bytes_sent", k.bytes_sent}});
   }
   return j;
 }
@@ -156,8 +163,9 @@ void add_render_command(CLI::App& app) {
   add_integer_option(cmd, "--width", set.width, kFilmSizeRange, "Image width in pixels (overrides film.width)");
   add_integer_option(cmd, "--height", set.height, kFilmSizeRange, "Image height in pixels (overrides film.height)");
   cmd->add_option("--stats", o->stats, "Write render statistics as JSON to this file");
-  cmd->add_option("--reconstruction", set.reconstruction,
-                  name_list(kReconstructionNames, " | ") + ": how samples become pixels (overrides film.filter.reconstruction)");
+  cmd->add_option(
+      "--reconstruction", set.reconstruction,
+      name_list(kReconstructionNames, " | ") + ": how samples become pixels (overrides film.filter.reconstruction)");
   cmd->add_flag("--adaptive", set.adaptive,
                 "Adaptive refinement by prefix extension (sampler.adaptive; any --adaptive-* / --min-spp / "
                 "--max-spp option turns it on too)");
@@ -165,16 +173,17 @@ void add_render_command(CLI::App& app) {
                      "Adaptive: samples every pixel starts with (sampler.adaptive.min_spp)");
   add_integer_option(cmd, "--max-spp", set.max_spp, kSppRange,
                      "Adaptive: most samples a pixel may take (sampler.adaptive.max_spp)");
-  add_real_option(cmd, "--adaptive-threshold", set.threshold, "Adaptive: convergence threshold (default: the metric's)");
+  add_real_option(cmd, "--adaptive-threshold", set.threshold,
+                  "Adaptive: convergence threshold (default: the metric's)");
   cmd->add_option("--adaptive-metric", set.metric, "Adaptive: " + name_list(kAdaptiveMetricNames, " | "));
   cmd->add_option("--adaptive-variance", set.variance, "Adaptive: " + name_list(kAdaptiveVarianceNames, " | "));
   cmd->add_option("--adaptive-decision", set.decision,
                   "Adaptive: " + name_list(kAdaptiveDecisionNames, " | ") +
                       " (split: odd samples decide, even samples estimate; unbiased)");
-  auto* regularize = cmd->add_flag(
-      "--regularize", o->regularize,
-      "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
-      "(integrator.regularize)");
+  auto* regularize =
+      cmd->add_flag("--regularize", o->regularize,
+                    "Biased: path regularisation, roughening near-specular lobes after the first non-specular bounce "
+                    "(integrator.regularize)");
   cmd->add_flag("--no-regularize", o->no_regularize, "Unbiased: no path regularisation, whatever the scene sets")
       ->excludes(regularize);
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
@@ -190,7 +199,8 @@ void add_render_command(CLI::App& app) {
     for (std::size_t i = 0; i < o->outs.size(); ++i) {
       check_image_extension(o->outs[i]);
       for (std::size_t k = 0; k < i; ++k)
-        if (std::filesystem::path(o->outs[k]).lexically_normal() == std::filesystem::path(o->outs[i]).lexically_normal())
+        if (std::filesystem::path(o->outs[k]).lexically_normal() ==
+            std::filesystem::path(o->outs[i]).lexically_normal())
           throw UsageError("--out " + o->outs[i] + " is given twice");
     }
 

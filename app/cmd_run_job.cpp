@@ -28,9 +28,11 @@ void add_run_job_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run-job", "Run jobs of a comparison plan (written by `pdrt compare --plan DIR`).");
   cmd->add_option("dir", o->dir, "The plan's directory")->required();
   cmd->add_option("index", o->indices, "Job indices (0-based, as DIR/jobs.txt lists them)");
-  cmd->add_flag("--all", o->all,
-                "Every unfinished job; under mpirun each rank takes its share (longest first, balanced by estimated cost)");
-  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")->default_str("0");
+  cmd->add_flag(
+      "--all", o->all,
+      "Every unfinished job; under mpirun each rank takes its share (longest first, balanced by estimated cost)");
+  add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")
+      ->default_str("0");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress on stderr");
   cmd->callback([o] {
     if (o->all == !o->indices.empty()) throw UsageError("give job indices or --all, not both or neither");
@@ -38,7 +40,8 @@ void add_run_job_command(CLI::App& app) {
     const long long n = static_cast<long long>(plan.jobs.size());
     for (long long i : o->indices)
       if (i < 0 || i >= n)
-        throw UsageError("job index " + std::to_string(i) + ": the plan in " + o->dir + " has jobs 0.." + std::to_string(n - 1));
+        throw UsageError("job index " + std::to_string(i) + ": the plan in " + o->dir + " has jobs 0.." +
+                         std::to_string(n - 1));
     CompareRequest r = plan_request(plan);
     const bool lead = launcher_rank() == 0;
     r.threads = o->threads;
@@ -53,8 +56,10 @@ void add_run_job_command(CLI::App& app) {
     // Finished jobs need no scene: a resumed sweep skips them without loading it.
     std::vector<int> todo;
     for (int i : mine) {
-      if (!job_finished(plan, i)) todo.push_back(i);
-      else if (!o->quiet) std::fprintf(stderr, "pdrt run-job: job %d (%s) had already finished\n", i, label(i).c_str());
+      if (!job_finished(plan, i))
+        todo.push_back(i);
+      else if (!o->quiet)
+        std::fprintf(stderr, "pdrt run-job: job %d (%s) had already finished\n", i, label(i).c_str());
     }
     if (!todo.empty()) {
       PreparedCompare p = prepare_compare(r, false);
@@ -82,7 +87,8 @@ void add_run_job_command(CLI::App& app) {
       process_group().all_gather({});
       if (lead && !o->quiet) {
         const std::size_t left = unfinished_jobs(plan).size();
-        const std::string collect = left ? "" : "; write the report with `" + command_name() + " collect " + o->dir + "`";
+        const std::string collect =
+            left ? "" : "; write the report with `" + command_name() + " collect " + o->dir + "`";
         std::fprintf(stderr, "pdrt run-job: %zu of %zu jobs finished%s\n", plan.jobs.size() - left, plan.jobs.size(),
                      collect.c_str());
       }

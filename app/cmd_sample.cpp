@@ -22,7 +22,8 @@ void add_sample_command(CLI::App& app) {
   auto o = std::make_shared<Opts>();
   std::string methods_list;
   for (const auto& m : methods()) methods_list += "\n  " + m.name + ": " + m.summary;
-  auto* cmd = app.add_subcommand("sample", "Generate a point set in [0,1)^dim and write it as CSV (x0,x1,...[,radius]).");
+  auto* cmd =
+      app.add_subcommand("sample", "Generate a point set in [0,1)^dim and write it as CSV (x0,x1,...[,radius]).");
   cmd->add_option("--method,-m", o->p.method, "Generator:" + methods_list)->required();
   add_integer_option(cmd, "--dim,-d", o->p.dim, IntRange{1, kMaxDim}, "Dimension (gamito 1..5)")->default_str("2");
   auto* count = add_integer_option(cmd, "--count,-n", o->p.count, IntRange{1, INT64_MAX},
@@ -31,11 +32,13 @@ void add_sample_command(CLI::App& app) {
   count->excludes(radius);
   cmd->add_flag("--periodic", o->p.periodic, "Toroidal domain (distances wrap around)");
   add_integer_option(cmd, "--seed,-s", o->p.seed, IntRange{0, UINT64_MAX}, "Random seed")->default_str("1");
-  add_integer_option(cmd, "--attempts,-k", o->p.attempts, IntRange{1, INT64_MAX},
-                  "dart: consecutive failures before stopping (1000); bridson: candidates per active point (30); "
-                  "mccool: consecutive missed darts before the radius shrinks (30, plus magnification per placed point); best-candidate: candidates per placed point "
-                  "(1); lloyd: Monte Carlo probes per point (64); balanced: darts per point (32); stratified-bc: candidates per "
-                  "point (16); stratified-pd: open intervals tried per point (64)");
+  add_integer_option(
+      cmd, "--attempts,-k", o->p.attempts, IntRange{1, INT64_MAX},
+      "dart: consecutive failures before stopping (1000); bridson: candidates per active point (30); "
+      "mccool: consecutive missed darts before the radius shrinks (30, plus magnification per placed point); "
+      "best-candidate: candidates per placed point "
+      "(1); lloyd: Monte Carlo probes per point (64); balanced: darts per point (32); stratified-bc: candidates per "
+      "point (16); stratified-pd: open intervals tried per point (64)");
   add_real_option(cmd, "--decay", o->p.decay, "mccool: radius multiplier per relaxation step, in (0,1) (0.97)");
   add_real_option(cmd, "--magnification", o->p.magnification,
                   "mccool: extra consecutive misses allowed per placed point (128)");

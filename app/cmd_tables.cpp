@@ -22,12 +22,16 @@ void add_tables_command(CLI::App& app) {
     bool quiet = false;
   };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("tables", "Generate the precomputed sample tables (one file per family and table set).");
+  auto* cmd =
+      app.add_subcommand("tables", "Generate the precomputed sample tables (one file per family and table set).");
   cmd->add_option("--out,-o", o->out, "Output directory (created if missing)")->required();
   std::vector<std::string> sets;
   for (TableSetKind k : kTableSets) sets.push_back(table_set_name(k));
   cmd->add_option("--set", o->set, "Table set: " + sets[0] + ", " + sets[1] + " or all")
-      ->check(CLI::IsMember([&] { sets.push_back("all"); return sets; }()))
+      ->check(CLI::IsMember([&] {
+        sets.push_back("all");
+        return sets;
+      }()))
       ->default_str("all");
   add_integer_option(cmd, "--seed,-s", o->seed, IntRange{0, UINT64_MAX}, "Seed of the table set")->default_str("1");
   cmd->add_flag("--quiet,-q", o->quiet, "No summary on stderr");
@@ -54,13 +58,13 @@ void add_tables_command(CLI::App& app) {
         double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         progress.clear_line();
         if (!o->quiet)
-          std::fprintf(stderr, "pdrt tables: %-10s %-5s %-13s %u tables x %u points%s, %.2f MiB, %.2f s\n",
-                       table_set_name(k), family_name(p.family), construction_name(p.construction), t.table_count(),
-                       p.points,
-                       p.family == Family::Pixel && p.tile > 1
-                           ? (" per pixel of a " + std::to_string(p.tile) + "x" + std::to_string(p.tile) + " tile").c_str()
-                           : "",
-                       t.memory_bytes() / 1048576.0, secs);
+          std::fprintf(
+              stderr, "pdrt tables: %-10s %-5s %-13s %u tables x %u points%s, %.2f MiB, %.2f s\n", table_set_name(k),
+              family_name(p.family), construction_name(p.construction), t.table_count(), p.points,
+              p.family == Family::Pixel && p.tile > 1
+                  ? (" per pixel of a " + std::to_string(p.tile) + "x" + std::to_string(p.tile) + " tile").c_str()
+                  : "",
+              t.memory_bytes() / 1048576.0, secs);
       }
   });
 }

@@ -87,11 +87,14 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   }
   if (check_budget && !r.quiet) {
     if (scene.integrator.regularize && !r.regularize)
-      std::fprintf(stderr, "pdrt compare: %s sets integrator.regularize; compare renders without it (unbiased) "
-                           "unless --regularize is given\n", r.scene.c_str());
+      std::fprintf(stderr,
+                   "pdrt compare: %s sets integrator.regularize; compare renders without it (unbiased) "
+                   "unless --regularize is given\n",
+                   r.scene.c_str());
     if (r.regularize)
-      std::fprintf(stderr, "pdrt compare: --regularize: the renders are biased (path regularisation), the reference "
-                           "is not\n");
+      std::fprintf(stderr,
+                   "pdrt compare: --regularize: the renders are biased (path regularisation), the reference "
+                   "is not\n");
   }
   apply_overrides(scene_overrides(r), scene);
   // What compare renders: the scene without adaptive refinement, and with --adaptive the sweep.
@@ -100,11 +103,12 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   if (c.adaptive) rendered.sampler.adaptive = sweep_adaptive(scene, c);
   check_overridden_settings(rendered);
   if (check_budget) {
-    check_film_memory(scene.film.width, scene.film.height, r.width || r.height ? "--width/--height" : scene.film.size_where);
+    check_film_memory(scene.film.width, scene.film.height,
+                      r.width || r.height ? "--width/--height" : scene.film.size_where);
     check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
                         "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
-                            " pixels x (reference + " + std::to_string(c.seeds) + " seeds x every sampler at every --spp" +
-                            (c.adaptive ? " + the sweep)" : ")"),
+                            " pixels x (reference + " + std::to_string(c.seeds) +
+                            " seeds x every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),
                         r.allow_long);
   }
   return p;

@@ -36,9 +36,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", PDRT_VERSION);
   app.require_subcommand(1);
   // One line per error, as for every other pdrt error.
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return "pdrt: " + pdrt::printable(e.what()) + " (see --help)\n";
-  });
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& e) { return "pdrt: " + pdrt::printable(e.what()) + " (see --help)\n"; });
   pdrt::cli::add_sample_command(app);
   pdrt::cli::add_analyze_command(app);
   pdrt::cli::add_tables_command(app);

@@ -17,8 +17,14 @@ namespace pdrt::cli {
 inline constexpr IntRange kThreadsRange{0, 1024};
 
 namespace detail {
-template <class T> struct option_value { using type = T; };
-template <class T> struct option_value<std::optional<T>> { using type = T; };
+template <class T>
+struct option_value {
+  using type = T;
+};
+template <class T>
+struct option_value<std::optional<T>> {
+  using type = T;
+};
 }  // namespace detail
 
 uint64_t parse_integer_option(const std::string& option, const std::string& text, IntRange range);
@@ -34,9 +40,10 @@ CLI::Option* add_integer_option(CLI::App* cmd, const std::string& names, T& targ
   const std::string name = option_display_name(names);
   return cmd
       ->add_option_function<std::string>(
-          names, [&target, name, range](const std::string& s) { 
+          names,
+          [&target, name, range](const std::string& s) {
             target = typename detail::option_value<T>::type(parse_integer_option(name, s, range));
-           },
+          },
           help + " (integer in " + range.str() + ")")
       ->type_name("INT");
 }

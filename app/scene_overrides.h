@@ -15,8 +15,8 @@ namespace pdrt::cli {
 struct SceneOverrides {
   std::optional<int> spp, width, height;
   std::optional<uint64_t> seed;
-  std::string sampler, reconstruction;    // names; empty: the scene's
-  bool adaptive = false;                  // adaptive refinement on (any adaptive option below turns it on too)
+  std::string sampler, reconstruction;  // names; empty: the scene's
+  bool adaptive = false;                // adaptive refinement on (any adaptive option below turns it on too)
   std::optional<int> min_spp, max_spp;
   std::optional<double> threshold;
   std::string metric, variance, decision;  // names; empty: the scene's

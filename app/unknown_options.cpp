@@ -14,7 +14,8 @@ int edit_distance(const std::string& a, const std::string& b) {
     for (size_t j = 1; j <= m; ++j) {
       int cost = a[i - 1] == b[j - 1] ? 0 : 1;
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[n][m];
 }
@@ -42,7 +43,8 @@ const CLI::App* chosen_subcommand(const CLI::App& app, int argc, const char* con
 }
 
 bool looks_like_option(const std::string& t) {
-  return t.size() >= 2 && t[0] == '-' && (std::isalpha(static_cast<unsigned char>(t[1])) || (t[1] == '-' && t.size() > 2));
+  return t.size() >= 2 && t[0] == '-' &&
+         (std::isalpha(static_cast<unsigned char>(t[1])) || (t[1] == '-' && t.size() > 2));
 }
 
 }  // namespace

@@ -31,7 +31,12 @@ void BM_Bridson(benchmark::State& state) {
   p.dim = int(state.range(0));
   run(state, p);
 }
-BENCHMARK(BM_Bridson)->Args({2, 100000})->Args({2, 1000000})->Args({3, 100000})->Args({4, 100000})->Args({5, 50000})
+BENCHMARK(BM_Bridson)
+    ->Args({2, 100000})
+    ->Args({2, 1000000})
+    ->Args({3, 100000})
+    ->Args({4, 100000})
+    ->Args({5, 50000})
     ->Unit(benchmark::kMillisecond);
 
 void BM_McCool(benchmark::State& state) {
@@ -40,7 +45,11 @@ void BM_McCool(benchmark::State& state) {
   p.periodic = state.range(2) != 0;
   run(state, p);
 }
-BENCHMARK(BM_McCool)->Args({2, 4096, 0})->Args({2, 4096, 1})->Args({2, 65536, 1})->Args({1, 4096, 1})
+BENCHMARK(BM_McCool)
+    ->Args({2, 4096, 0})
+    ->Args({2, 4096, 1})
+    ->Args({2, 65536, 1})
+    ->Args({1, 4096, 1})
     ->Unit(benchmark::kMillisecond);
 
 void BM_Dart(benchmark::State& state) { run(state, by_count("dart", state.range(0))); }

@@ -111,9 +111,12 @@ BENCHMARK_CAPTURE(BM_PathPattern, sobol, "sobol");
 void BM_DefaultTablesOneCore(benchmark::State& state, pdrt::TableSetKind kind) {
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
   for (auto _ : state)
-    for (const auto& p : pdrt::default_table_params(kind)) benchmark::DoNotOptimize(pdrt::generate_table(p).coords.data());
+    for (const auto& p : pdrt::default_table_params(kind))
+      benchmark::DoNotOptimize(pdrt::generate_table(p).coords.data());
 }
-BENCHMARK_CAPTURE(BM_DefaultTablesOneCore, poisson, pdrt::TableSetKind::Poisson)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(BM_DefaultTablesOneCore, poisson, pdrt::TableSetKind::Poisson)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(BM_DefaultTablesOneCore, poisson_065, pdrt::TableSetKind::Poisson065)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);

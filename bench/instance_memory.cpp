@@ -69,7 +69,8 @@ Measure measure(int count, bool instanced) {
     o.quiet = true;
     RenderResult r = render(s, *sampler, o);
     Measure m;
-    for (std::size_t i = 0; i < r.image.rgb.size(); i += 3) m.covered += r.image.rgb[i] < 0.99f ? 3.0 / r.image.rgb.size() : 0.0;
+    for (std::size_t i = 0; i < r.image.rgb.size(); i += 3)
+      m.covered += r.image.rgb[i] < 0.99f ? 3.0 / r.image.rgb.size() : 0.0;
     m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
@@ -100,9 +101,10 @@ int main(int argc, char** argv) {
   row("1 instance", one);
   row(std::to_string(instances) + " instances", many);
   row(std::to_string(copies) + " copied shapes", copied);
-  std::printf("per instance: %.0f bytes; per copy: %.0f bytes (%.0fx)\n",
-              double(many.peak_kb - one.peak_kb) * 1024 / (instances - 1),
-              double(copied.peak_kb - base.peak_kb) * 1024 / (copies - 1),
-              (double(copied.peak_kb - base.peak_kb) / (copies - 1)) / (double(many.peak_kb - one.peak_kb) / (instances - 1)));
+  std::printf(
+      "per instance: %.0f bytes; per copy: %.0f bytes (%.0fx)\n",
+      double(many.peak_kb - one.peak_kb) * 1024 / (instances - 1),
+      double(copied.peak_kb - base.peak_kb) * 1024 / (copies - 1),
+      (double(copied.peak_kb - base.peak_kb) / (copies - 1)) / (double(many.peak_kb - one.peak_kb) / (instances - 1)));
   return 0;
 }

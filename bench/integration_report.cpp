@@ -50,15 +50,16 @@ int main() {
   samplers.push_back({"poisson-065, unshifted", make_poisson_sampler(1, p065, {.shift = false})});
   samplers.push_back({"poisson", make_poisson_sampler(1, default_tables())});
   samplers.push_back({"poisson, isometric shifts", make_poisson_sampler(1, default_tables(),
-                                                                       {.plane = PoissonShift::Isometric,
-                                                                        .pixel = PoissonShift::Isometric,
-                                                                        .time = PoissonShift::Isometric})});
+                                                                        {.plane = PoissonShift::Isometric,
+                                                                         .pixel = PoissonShift::Isometric,
+                                                                         .time = PoissonShift::Isometric})});
   samplers.push_back({"poisson, unshifted", make_poisson_sampler(1, default_tables(), {.shift = false})});
-  std::printf("RMSE over %d pixels' streams (slope of log RMSE vs log N over 16..1024); rho: mean relative\n"
-              "radius of the same streams' N-point prefixes. Table samplers beyond a table's length continue\n"
-              "in another table (no longer one prefix).\n\n",
-              trials);
-  std::map<std::tuple<std::string, int, int64_t>, double> rho;  // the same for every integrand
+  std::printf(
+      "RMSE over %d pixels' streams (slope of log RMSE vs log N over 16..1024); rho: mean relative\n"
+      "radius of the same streams' N-point prefixes. Table samplers beyond a table's length continue\n"
+      "in another table (no longer one prefix).\n\n",
+      trials);
+  std::map<std::tuple<std::string, int, int64_t>, double> rho;               // the same for every integrand
   std::map<std::tuple<std::string, std::string, int64_t>, double> measured;  // (integrand, sampler, N)
   std::vector<std::string> titles;
   // One table: a row per sampler, RMSE at every N, the slope over 16..1024, then rho.
@@ -102,8 +103,9 @@ int main() {
           [&](const Sampler& s, int64_t n) { return integration_rmse_1d(s, f, n, trials); });
   // The goals of issues 16 and 28 as ratios of the rows above (< 1: the first sampler's error
   // is lower).
-  std::printf("### Ratios (issues 16, 28)\n\n| integrand | poisson-065 / mccool tables at N=1024 | worst poisson / sobol, "
-              "N=16..1024 | worst poisson / jitter, N=16..1024 |\n|---|---|---|---|\n");
+  std::printf(
+      "### Ratios (issues 16, 28)\n\n| integrand | poisson-065 / mccool tables at N=1024 | worst poisson / sobol, "
+      "N=16..1024 | worst poisson / jitter, N=16..1024 |\n|---|---|---|---|\n");
   for (const std::string& t : titles) {
     double worst_s = 0, worst_j = 0;
     for (int64_t n : ns) {

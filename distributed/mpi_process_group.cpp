@@ -46,7 +46,8 @@ MpiProcessGroup& MpiProcessGroup::instance() {
 std::vector<std::vector<std::byte>> MpiProcessGroup::all_gather(const std::vector<std::byte>& mine) const {
   // Sizes first, then the bytes; MPI counts are int, so a block over 2 GiB is refused.
   if (mine.size() > size_t(std::numeric_limits<int>::max()))
-    throw InputError("rank " + std::to_string(rank_) + ": a block of " + std::to_string(mine.size()) + " bytes exceeds MPI's 2 GiB message limit");
+    throw InputError("rank " + std::to_string(rank_) + ": a block of " + std::to_string(mine.size()) +
+                     " bytes exceeds MPI's 2 GiB message limit");
   const int n = int(mine.size());
   std::vector<int> counts(static_cast<size_t>(size_)), displs(static_cast<size_t>(size_));
   MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);

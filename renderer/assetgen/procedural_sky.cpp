@@ -25,8 +25,8 @@ Vec3 sky_radiance(const SkyParams& p, const Vec3& d) {
   }
   const float t = std::exp(-4 * d.y);  // 1 at the horizon, e^-4 at the zenith
   const Vec3 base = p.zenith * (1 - t) + p.horizon * t;
-  const Vec3 glow = p.aureole * (0.6f * std::exp(-gamma * gamma / (2 * 0.12f * 0.12f)) +
-                                 0.15f * std::exp(-gamma / 0.6f));
+  const Vec3 glow =
+      p.aureole * (0.6f * std::exp(-gamma * gamma / (2 * 0.12f * 0.12f)) + 0.15f * std::exp(-gamma / 0.6f));
   return base + glow;
 }
 

@@ -16,7 +16,7 @@ namespace pdrt {
 struct SkyParams {
   int width = 512, height = 256;
   Vec3 to_sun = normalize(Vec3(-0.55f, 0.62f, 0.56f));  // unit, in the map's frame
-  float sun_radius_deg = 2.5f;  // wider than the real 0.27 degrees: soft shadow edges
+  float sun_radius_deg = 2.5f;                          // wider than the real 0.27 degrees: soft shadow edges
   Vec3 sun_radiance{900.0f, 830.0f, 720.0f};
   Vec3 zenith{0.06f, 0.12f, 0.34f}, horizon{0.38f, 0.47f, 0.62f}, ground{0.12f, 0.11f, 0.1f};
   Vec3 aureole{0.9f, 0.75f, 0.5f};

@@ -83,8 +83,9 @@ void write_adaptive_csv(const ReportContext& ctx, const CompareResults& results)
       for (const SweepStep& st : s.steps) {
         char row[200];
         std::snprintf(row, sizeof row, "%s,%s,%s,%.9g,%lld,%.6g,%.9g,%d,%.4g", s.sampler.c_str(),
-                      adaptive_metric_name(ad.metric), adaptive_variance_name(ad.variance), st.threshold, (long long)st.render.samples, st.render.spp_mean, st.rmse,
-                      st.render.adaptive_rounds, st.render.seconds);
+                      adaptive_metric_name(ad.metric), adaptive_variance_name(ad.variance), st.threshold,
+                      (long long)st.render.samples, st.render.spp_mean, st.rmse, st.render.adaptive_rounds,
+                      st.render.seconds);
         os << row << "\n";
       }
   });

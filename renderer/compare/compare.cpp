@@ -73,8 +73,8 @@ double compare_sample_count(const CompareOptions& o, int width, int height) {
 }
 
 // The stages in order, each adding to the results what the later ones read: the reference,
-// the uniform runs, their heat maps, FLIP maps, spectrum images and crops, the convergence view, the adaptive sweep; then
-// the files written from the results alone.
+// the uniform runs, their heat maps, FLIP maps, spectrum images and crops, the convergence view, the adaptive sweep;
+// then the files written from the results alone.
 fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, const CompareJobSource& source) {
   validate_compare_options(o);
   create_report_directories(o);

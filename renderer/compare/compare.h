@@ -19,9 +19,9 @@ struct CompareOptions {
   // > 0: the centre of the threshold sweep (else the scene's, else the metric's default). The
   // sweep's metric, variance and decision are the scene's (with the command line's overrides).
   double adaptive_threshold = 0;
-  int adaptive_target_spp = 64;     // the uniform spp whose RMSE the threshold sweep must reach
-  int seeds = 4;                    // independent renders per (sampler, spp): compare_seed(scene seed, 0..seeds-1)
-  int reference_spp = 4096;         // rendered as two independent halves, whose difference measures its noise
+  int adaptive_target_spp = 64;  // the uniform spp whose RMSE the threshold sweep must reach
+  int seeds = 4;                 // independent renders per (sampler, spp): compare_seed(scene seed, 0..seeds-1)
+  int reference_spp = 4096;      // rendered as two independent halves, whose difference measures its noise
   std::string reference_sampler = sampler_name(SamplerKind::Sobol);
   int threads = 0;
   bool quiet = false;

@@ -99,19 +99,24 @@ std::vector<CompareJob> compare_jobs(const CompareOptions& o) {
 
 double job_cost(const CompareJob& job, const CompareOptions& o) {
   switch (job.kind) {
-    case CompareJob::Kind::Reference: return job.half == 0 ? (o.reference_spp + 1) / 2 : o.reference_spp / 2;
-    case CompareJob::Kind::Uniform: return job.spp;
-    case CompareJob::Kind::Adaptive: return sweep_max_spp(o);
+    case CompareJob::Kind::Reference:
+      return job.half == 0 ? (o.reference_spp + 1) / 2 : o.reference_spp / 2;
+    case CompareJob::Kind::Uniform:
+      return job.spp;
+    case CompareJob::Kind::Adaptive:
+      return sweep_max_spp(o);
   }
   return 0;
 }
 
 std::string describe(const CompareJob& job) {
   switch (job.kind) {
-    case CompareJob::Kind::Reference: return "reference half " + std::to_string(job.half + 1) + "/2";
+    case CompareJob::Kind::Reference:
+      return "reference half " + std::to_string(job.half + 1) + "/2";
     case CompareJob::Kind::Uniform:
       return job.sampler + " " + std::to_string(job.spp) + " spp seed " + std::to_string(job.seed_index);
-    case CompareJob::Kind::Adaptive: return job.sampler + " adaptive step " + std::to_string(job.sweep_step);
+    case CompareJob::Kind::Adaptive:
+      return job.sampler + " adaptive step " + std::to_string(job.sweep_step);
   }
   return "";
 }

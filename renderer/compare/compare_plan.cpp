@@ -22,16 +22,20 @@ namespace {
 
 const char* kind_name(CompareJob::Kind k) {
   switch (k) {
-    case CompareJob::Kind::Reference: return "reference";
-    case CompareJob::Kind::Uniform: return "uniform";
-    case CompareJob::Kind::Adaptive: return "adaptive";
+    case CompareJob::Kind::Reference:
+      return "reference";
+    case CompareJob::Kind::Uniform:
+      return "uniform";
+    case CompareJob::Kind::Adaptive:
+      return "adaptive";
   }
   return "";
 }
 
 json job_json(const CompareJob& j) {
-  return {{"kind", kind_name(j.kind)}, {"sampler", j.sampler},       {"spp", j.spp},          {"seed_index", j.seed_index},
-          {"half", j.half},            {"sweep_step", j.sweep_step}, {"label", describe(j)}};
+  return {{"kind", kind_name(j.kind)},  {"sampler", j.sampler}, {"spp", j.spp},
+          {"seed_index", j.seed_index}, {"half", j.half},       {"sweep_step", j.sweep_step},
+          {"label", describe(j)}};
 }
 
 bool same_job(const CompareJob& a, const CompareJob& b) {
@@ -55,7 +59,8 @@ fs::path job_file(const ComparePlan& p, int index, const char* suffix) {
 std::vector<int> longest_first(const std::vector<CompareJob>& jobs, const CompareOptions& o) {
   std::vector<int> order(jobs.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return job_cost(jobs[a], o) > job_cost(jobs[b], o); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return job_cost(jobs[a], o) > job_cost(jobs[b], o); });
   return order;
 }
 
@@ -69,7 +74,8 @@ std::string shell_quote(const std::string& s) {
 void write_script(const fs::path& path, const std::string& text) {
   write_file_atomically(path, [&](std::ostream& os) { os << text; });
   std::error_code ec;
-  fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec, fs::perm_options::add, ec);
+  fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec, fs::perm_options::add,
+                  ec);
 }
 
 // A Slurm job array over DIR/jobs.txt (task i runs its line i + 1: long jobs start first), the
@@ -130,7 +136,8 @@ std::optional<json> finished_mark(const ComparePlan& plan, int index) {
 
 }  // namespace
 
-ComparePlan write_compare_plan(const fs::path& dir, const json& request, const CompareOptions& o, const fs::path& pdrt) {
+ComparePlan write_compare_plan(const fs::path& dir, const json& request, const CompareOptions& o,
+                               const fs::path& pdrt) {
   ComparePlan p;
   p.dir = dir;
   p.request = request;
@@ -145,8 +152,11 @@ ComparePlan write_compare_plan(const fs::path& dir, const json& request, const C
     fs::create_directories(dir / sub, ec);
     if (ec) throw InputError((dir / sub).string() + ": cannot create directory (" + ec.message() + ")");
   }
-  const json doc = {{"pdrt_plan", kComparePlanVersion}, {"id", p.id},      {"request", request},
-                    {"scene_hash", hex(p.scene_hash)}, {"jobs", jobs}};
+  const json doc = {{"pdrt_plan", kComparePlanVersion},
+                    {"id", p.id},
+                    {"request", request},
+                    {"scene_hash", hex(p.scene_hash)},
+                    {"jobs", jobs}};
   write_file_atomically(dir / "plan.json", [&](std::ostream& os) { os << doc.dump(1) << "\n"; });
   write_file_atomically(dir / "jobs.txt", [&](std::ostream& os) {
     for (int i : longest_first(p.jobs, o)) os << i << "\n";
@@ -212,7 +222,8 @@ CompareRender read_plan_job(const ComparePlan& plan, const CompareJob& job) {
   const fs::path mark_file = job_file(plan, index, ".json");
   const std::optional<json> mark = finished_mark(plan, index);
   if (!mark)
-    throw InputError(mark_file.string() + ": job " + std::to_string(index) + " (" + describe(job) + ") has not finished");
+    throw InputError(mark_file.string() + ": job " + std::to_string(index) + " (" + describe(job) +
+                     ") has not finished");
   CompareRender r;
   try {
     r = job_mark_render(*mark);

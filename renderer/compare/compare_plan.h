@@ -19,8 +19,8 @@ namespace pdrt {
 // Writes the plan into `dir` (created). Planning again with the same request and scene keeps
 // the finished jobs; a different plan makes them stale (they are redone). `pdrt` is the
 // executable the generated scripts run.
-ComparePlan write_compare_plan(const std::filesystem::path& dir, const nlohmann::json& request,
-                               const CompareOptions& o, const std::filesystem::path& pdrt);
+ComparePlan write_compare_plan(const std::filesystem::path& dir, const nlohmann::json& request, const CompareOptions& o,
+                               const std::filesystem::path& pdrt);
 
 // InputError when the scene's content no longer matches the plan's.
 void check_plan_scene(const ComparePlan& plan, const CompareOptions& o);

@@ -35,10 +35,14 @@ ComparePlan read_compare_plan(const fs::path& dir) {
 CompareJob job_from_json(const json& v) {
   CompareJob j;
   const std::string k = v.at("kind").get<std::string>();
-  if (k == "reference") j.kind = CompareJob::Kind::Reference;
-  else if (k == "uniform") j.kind = CompareJob::Kind::Uniform;
-  else if (k == "adaptive") j.kind = CompareJob::Kind::Adaptive;
-  else throw std::invalid_argument("unknown job kind \"" + k + "\"");
+  if (k == "reference")
+    j.kind = CompareJob::Kind::Reference;
+  else if (k == "uniform")
+    j.kind = CompareJob::Kind::Uniform;
+  else if (k == "adaptive")
+    j.kind = CompareJob::Kind::Adaptive;
+  else
+    throw std::invalid_argument("unknown job kind \"" + k + "\"");
   j.sampler = v.at("sampler").get<std::string>();
   j.spp = json_integer<int>(v, "spp"), j.seed_index = json_integer<int>(v, "seed_index");
   j.half = json_integer<int>(v, "half"), j.sweep_step = json_integer<int>(v, "sweep_step");

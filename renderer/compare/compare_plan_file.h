@@ -17,9 +17,9 @@ inline constexpr int kComparePlanVersion = 1;  // "pdrt_plan" in plan.json
 
 struct ComparePlan {
   std::filesystem::path dir;
-  nlohmann::json request;  // what recreates the scene and the options (the command line's)
-  uint64_t scene_hash = 0; // of CompareOptions::scene_content when planned
-  std::string id;          // of the request, the scene and the jobs: a job's result names its plan
+  nlohmann::json request;   // what recreates the scene and the options (the command line's)
+  uint64_t scene_hash = 0;  // of CompareOptions::scene_content when planned
+  std::string id;           // of the request, the scene and the jobs: a job's result names its plan
   std::vector<CompareJob> jobs;
 };
 

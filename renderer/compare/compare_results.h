@@ -22,11 +22,11 @@ namespace pdrt {
 // The reference: two independent halves whose difference measures its noise.
 struct CompareReference {
   ReferenceSetup setup;
-  Image image;                        // the halves' samples-weighted mean
-  std::array<Image, 2> halves;        // the halves themselves
-  std::array<std::string, 2> file;    // where each half's image is kept
-  bool cached = true;                 // both halves came from the cache
-  double seconds = 0;                 // rendering the halves that were not cached
+  Image image;                      // the halves' samples-weighted mean
+  std::array<Image, 2> halves;      // the halves themselves
+  std::array<std::string, 2> file;  // where each half's image is kept
+  bool cached = true;               // both halves came from the cache
+  double seconds = 0;               // rendering the halves that were not cached
   ReferenceNoise noise;
   // RMSE against the reference with its variance taken out (E[(x - r)^2] = E[(x - I)^2] + Var r).
   double corrected_rmse(const Image& im) const;
@@ -48,11 +48,11 @@ struct UniformRun {
   int64_t samples = 0;  // traced by one render (every seed traces the same count)
   SeedStatistics stats;
   std::vector<SeedRun> seeds;
-  RadialSpectrum spectrum;  // of the error image, averaged over the seeds (radial_spectrum of screen.spectrum)
-  ScreenMeasures screen;    // blurred RMSE, low-frequency share, FLIP, the 2-D error spectrum
-  SamplerProfile profile;   // summed over the seeds
+  RadialSpectrum spectrum;           // of the error image, averaged over the seeds (radial_spectrum of screen.spectrum)
+  ScreenMeasures screen;             // blurred RMSE, low-frequency share, FLIP, the 2-D error spectrum
+  SamplerProfile profile;            // summed over the seeds
   std::vector<StreamAnalysis> used;  // seed 0's samples, per family
-  Image image;              // seed 0's
+  Image image;                       // seed 0's
   std::string image_file, error_file;
   std::string flip_ldr_file, flip_hdr_file, spectrum_file;  // seed 0's FLIP maps, the mean 2-D spectrum
 };
@@ -75,9 +75,9 @@ struct ConvergenceView {
 
 // One render of the adaptive threshold sweep.
 struct SweepStep {
-  int step = 0;          // threshold = centre x 2^step
+  int step = 0;  // threshold = centre x 2^step
   double threshold = 0;
-  CompareRender render;  // its image only for step 0
+  CompareRender render;     // its image only for step 0
   double rmse = 0;          // reference-corrected
   double uniform_rmse = 0;  // uniform sampling's at equal samples (NaN outside the uniform runs' range)
 };
@@ -90,25 +90,25 @@ struct SamplerSweep {
   std::string image, sample_map;  // step 0's image and sample-count map
   std::size_t uniform_run = 0;    // results.runs' index of the uniform run at the target spp
   CostToReach cost{};
-  double ratio = 0;               // cost / the uniform run's samples
+  double ratio = 0;  // cost / the uniform run's samples
 };
 
 struct AdaptiveSweep {
-  AdaptiveDesc settings;              // every step's, but the threshold
+  AdaptiveDesc settings;               // every step's, but the threshold
   std::vector<SamplerSweep> samplers;  // in --samplers order
 };
 
 struct CompareResults {
   int width = 0, height = 0;  // the crop window's (the whole film without one)
   CompareReference reference;
-  std::vector<UniformRun> runs;      // by sampler, then spp
-  int threads = 0;            // worker threads of the last uniform render
-  std::map<int, float> heat_scale;  // per spp: the error maps' common scale
-  FlipExposures flip_exposures;     // HDR-FLIP's, from the reference
+  std::vector<UniformRun> runs;                         // by sampler, then spp
+  int threads = 0;                                      // worker threads of the last uniform render
+  std::map<int, float> heat_scale;                      // per spp: the error maps' common scale
+  FlipExposures flip_exposures;                         // HDR-FLIP's, from the reference
   std::map<int, std::array<double, 2>> spectrum_scale;  // per spp: the 2-D spectrum images' log10 power range
   DetailCrops crops;
   ConvergenceView convergence;
-  AdaptiveSweep adaptive;           // with --adaptive
+  AdaptiveSweep adaptive;  // with --adaptive
 };
 
 }  // namespace pdrt

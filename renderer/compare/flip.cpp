@@ -18,9 +18,8 @@ using Rgb = std::array<double, 3>;
 constexpr double kPi = 3.14159265358979323846;
 
 // Linear sRGB (D65) to CIE XYZ.
-constexpr Mat3 kRgbToXyz = {{{0.4124564, 0.3575761, 0.1804375},
-                             {0.2126729, 0.7151522, 0.0721750},
-                             {0.0193339, 0.1191920, 0.9503041}}};
+constexpr Mat3 kRgbToXyz = {
+    {{0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750}, {0.0193339, 0.1191920, 0.9503041}}};
 
 Rgb mul(const Mat3& m, const Rgb& v) {
   return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
@@ -179,7 +178,8 @@ constexpr double kAces[5] = {0.6 * 0.6 * 2.51, 0.6 * 0.03, 0.6 * 0.6 * 2.43, 0.6
 
 // x with T(x) = t: (k0 - k3 t) x^2 + (k1 - k4 t) x - k5 t = 0, the positive root.
 double aces_inverse(double t) {
-  const double c0 = (kAces[1] - kAces[3] * t) / (kAces[0] - kAces[2] * t), c1 = -kAces[4] * t / (kAces[0] - kAces[2] * t);
+  const double c0 = (kAces[1] - kAces[3] * t) / (kAces[0] - kAces[2] * t),
+               c1 = -kAces[4] * t / (kAces[0] - kAces[2] * t);
   return -0.5 * c0 + std::sqrt(0.25 * c0 * c0 - c1);
 }
 
@@ -277,7 +277,8 @@ HdrFlipReference hdr_flip_reference(const Image& ref, double ppd) {
 std::vector<float> hdr_flip(const HdrFlipReference& ref, const Image& test) {
   std::vector<std::vector<float>> per(ref.views.size());
   tbb::parallel_for(std::size_t(0), per.size(), [&](std::size_t i) {
-    per[i] = flip_error(ref.views[i], flip_view(flip_tone_map(test, ref.exposures.at(int(i))), test.width, test.height, ref.ppd));
+    per[i] = flip_error(ref.views[i],
+                        flip_view(flip_tone_map(test, ref.exposures.at(int(i))), test.width, test.height, ref.ppd));
   });
   std::vector<float> m = per[0];
   for (const auto& p : per)

@@ -32,8 +32,8 @@ void write_results_csv(const ReportContext& ctx, const CompareResults& results) 
         const SeedRun& sr = r.seeds[k];
         os << r.sampler << "," << r.spp << "," << k << "," << sr.seed << "," << sr.samples << "," << sr.seconds << ","
            << sr.render_seconds << "," << sr.cpu_seconds << "," << r.stats.mse[k] << "," << r.stats.rmse[k] << ","
-           << sr.relmse << "," << r.rmse << "," << r.stats.rmse_ci95 << "," << r.stats.bias2 << ","
-           << r.stats.variance << "," << ref_var << "," << sr.profile.ticks << "," << sr.profile.sampler_ticks;
+           << sr.relmse << "," << r.rmse << "," << r.stats.rmse_ci95 << "," << r.stats.bias2 << "," << r.stats.variance
+           << "," << ref_var << "," << sr.profile.ticks << "," << sr.profile.sampler_ticks;
         write_screen_columns(os, r.screen, k);
         os << "\n";
       }

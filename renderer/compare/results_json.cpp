@@ -19,7 +19,8 @@ json statistics_rules() {
   return {
       {"rmse", "mean over seeds of sqrt(max(0, MSE_k - reference variance))"},
       {"rmse_ci95",
-       "half width of the 95% confidence interval of that mean: t(0.975, K-1) sqrt(s^2 / K + (reference.correction_se / "
+       "half width of the 95% confidence interval of that mean: t(0.975, K-1) sqrt(s^2 / K + (reference.correction_se "
+       "/ "
        "(2 rmse))^2), s the spread over seeds"},
       {"variance", "per-pixel variance across seeds (K-1 denominator), averaged over pixels and channels"},
       {"bias2", "mean((seed-average - reference)^2) - variance / K - reference variance"},
@@ -66,10 +67,11 @@ json screen_json(const UniformRun& r) {
   }
   return {{"blurred_rmse", blurred},
           {"low_frequency_share", seed_mean_json(m.low_share_mean)},
-          {"flip", {{"ldr", seed_mean_json(m.flip_ldr_mean)},
-                    {"hdr", seed_mean_json(m.flip_hdr_mean)},
-                    {"ldr_map", r.flip_ldr_file},
-                    {"hdr_map", r.flip_hdr_file}}},
+          {"flip",
+           {{"ldr", seed_mean_json(m.flip_ldr_mean)},
+            {"hdr", seed_mean_json(m.flip_hdr_mean)},
+            {"ldr_map", r.flip_ldr_file},
+            {"hdr_map", r.flip_hdr_file}}},
           {"spectrum_2d", r.spectrum_file}};
 }
 
@@ -89,8 +91,9 @@ json reference_json(const CompareReference& ref) {
   return {{"sampler", rs.scene.sampler.type},
           {"spp", rs.scene.sampler.spp},
           {"seed", rs.scene.sampler.seed},
-          {"halves", {{{"spp", rs.half_spp[0]}, {"seed", rs.half_seed[0]}, {"file", ref.file[0]}},
-                      {{"spp", rs.half_spp[1]}, {"seed", rs.half_seed[1]}, {"file", ref.file[1]}}}},
+          {"halves",
+           {{{"spp", rs.half_spp[0]}, {"seed", rs.half_seed[0]}, {"file", ref.file[0]}},
+            {{"spp", rs.half_spp[1]}, {"seed", rs.half_seed[1]}, {"file", ref.file[1]}}}},
           {"variance", ref_var},
           {"variance_rule", "mean over pixels and channels of (a - b)^2 na nb / (na + nb)^2, halves a, b"},
           {"rmse", std::sqrt(ref_var)},
@@ -133,26 +136,26 @@ json run_json(const UniformRun& r) {
     add_screen_seed(r.screen, k, per_seed.back());
   }
   json j = {{"sampler", r.sampler},
-          {"spp", r.spp},
-          {"seconds", r.seconds},
-          {"render_seconds", r.render_seconds},
-          {"cpu_seconds", r.cpu_seconds},
-          {"samples", r.samples},
-          {"rmse", r.rmse},
-          {"rmse_ci95", r.stats.rmse_ci95},
-          {"rmse_low", r.rmse - r.stats.rmse_ci95},
-          {"rmse_high", r.rmse + r.stats.rmse_ci95},
-          {"mse", r.stats.mse_mean},
-          {"bias2", r.stats.bias2},
-          {"variance", r.stats.variance},
-          {"relmse", r.relmse},
-          {"sampler_share", profile_json(r.profile)},
-          {"sampler_cpu_seconds", finite_or_null(r.profile.share() * r.cpu_seconds)},
-          {"used_samples", used},
-          {"per_seed", per_seed},
-          {"image", r.image_file},
-          {"error_map", r.error_file},
-          {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}};
+            {"spp", r.spp},
+            {"seconds", r.seconds},
+            {"render_seconds", r.render_seconds},
+            {"cpu_seconds", r.cpu_seconds},
+            {"samples", r.samples},
+            {"rmse", r.rmse},
+            {"rmse_ci95", r.stats.rmse_ci95},
+            {"rmse_low", r.rmse - r.stats.rmse_ci95},
+            {"rmse_high", r.rmse + r.stats.rmse_ci95},
+            {"mse", r.stats.mse_mean},
+            {"bias2", r.stats.bias2},
+            {"variance", r.stats.variance},
+            {"relmse", r.relmse},
+            {"sampler_share", profile_json(r.profile)},
+            {"sampler_cpu_seconds", finite_or_null(r.profile.share() * r.cpu_seconds)},
+            {"used_samples", used},
+            {"per_seed", per_seed},
+            {"image", r.image_file},
+            {"error_map", r.error_file},
+            {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}};
   j.update(screen_json(r));
   return j;
 }
@@ -170,8 +173,9 @@ void add_screen_settings(const CompareResults& results, json& j) {
   j["error_spectra_2d"] = {
       {"quantity", "|FFT(luminance error)|^2 / pixels, mean over seeds, DC at the centre, fx right, fy down"},
       {"scale", scale},
-      {"scale_rule", "log10 power on heat_colormap from scale[0] (at most 6 decades below the largest; the 1st "
-                     "percentile over the samplers at that spp) to scale[1] (the largest)"}};
+      {"scale_rule",
+       "log10 power on heat_colormap from scale[0] (at most 6 decades below the largest; the 1st "
+       "percentile over the samplers at that spp) to scale[1] (the largest)"}};
 }
 
 // The slopes, the samplers' profiled cost and the equal-time view, into `j`.

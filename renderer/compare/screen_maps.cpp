@@ -36,8 +36,7 @@ std::array<double, 2> spectrum_range(const std::vector<std::vector<float>>& maps
 std::vector<double> centred_spectrum(const std::vector<double>& power, int W, int H) {
   std::vector<double> out(power.size());
   for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      out[std::size_t((y + H / 2) % H) * W + (x + W / 2) % W] = power[std::size_t(y) * W + x];
+    for (int x = 0; x < W; ++x) out[std::size_t((y + H / 2) % H) * W + (x + W / 2) % W] = power[std::size_t(y) * W + x];
   return out;
 }
 
@@ -52,7 +51,8 @@ void write_screen_maps(const ReportContext& ctx, CompareResults& results) {
     std::vector<UniformRun*> at;
     std::vector<std::vector<float>> maps;
     for (UniformRun& r : results.runs)
-      if (r.spp == n) at.push_back(&r), maps.push_back(log10_power(centred_spectrum(r.screen.spectrum, ctx.width, ctx.height)));
+      if (r.spp == n)
+        at.push_back(&r), maps.push_back(log10_power(centred_spectrum(r.screen.spectrum, ctx.width, ctx.height)));
     const std::array<double, 2> range = spectrum_range(maps);
     results.spectrum_scale[n] = range;
     for (std::size_t i = 0; i < at.size(); ++i) {

@@ -17,8 +17,8 @@ namespace pdrt {
 
 // What every run's measures compare with, prepared once from the reference and its halves.
 struct ScreenReference {
-  const Image* image = nullptr;                              // the reference
-  std::array<Image, kBlurSigmas.size()> blurred;             // it blurred by each sigma
+  const Image* image = nullptr;                                  // the reference
+  std::array<Image, kBlurSigmas.size()> blurred;                 // it blurred by each sigma
   std::array<ReferenceNoise, kBlurSigmas.size()> blurred_noise;  // the noise of its blurred halves
   PowerSplit noise_power;  // its noise's luminance power, below the cutoff and in all
   FlipView ldr;            // LDR-FLIP's view of it
@@ -34,8 +34,8 @@ struct ScreenMeasures {
   std::array<SeedStatistics, kBlurSigmas.size()> blurred;
   std::vector<double> low_share, flip_ldr, flip_hdr;  // per seed (mean FLIP over the image)
   SeedMean low_share_mean, flip_ldr_mean, flip_hdr_mean;
-  std::vector<double> spectrum;                       // power_spectrum of the luminance error, mean over seeds
-  std::vector<float> flip_ldr_map, flip_hdr_map;      // seed 0's per-pixel FLIP
+  std::vector<double> spectrum;                   // power_spectrum of the luminance error, mean over seeds
+  std::vector<float> flip_ldr_map, flip_hdr_map;  // seed 0's per-pixel FLIP
 };
 ScreenMeasures screen_measures(const ScreenReference& reference, const std::vector<Image>& seeds);
 

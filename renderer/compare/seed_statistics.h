@@ -39,9 +39,9 @@ struct SeedStatistics {
   // the seeds' spread s and the reference's common error carried to the RMSE (delta method);
   // for K = 1 only the latter.
   double rmse_ci95 = 0;
-  double mse_mean = 0;       // mean of mse = bias2 + variance
-  double variance = 0;       // across seeds, per pixel (K - 1 denominator), averaged over the image; 0 for K = 1
-  double bias2 = 0;          // mean((x_bar - r)^2) - variance / K - noise.variance (unbiased; may be < 0 by noise)
+  double mse_mean = 0;  // mean of mse = bias2 + variance
+  double variance = 0;  // across seeds, per pixel (K - 1 denominator), averaged over the image; 0 for K = 1
+  double bias2 = 0;     // mean((x_bar - r)^2) - variance / K - noise.variance (unbiased; may be < 0 by noise)
 };
 
 // A per-seed scalar's mean over the K seeds and the half width of its 95 % interval,

@@ -46,8 +46,10 @@ std::string run_line(const ReportContext& ctx, const UniformRun& run) {
     std::snprintf(spread, sizeof spread, "(1 seed: intervals, bias and variance need >= 2)");
   char share[48];  // a render too short for a profiler tick has no measured share
   const double sh = run.profile.share();
-  if (std::isnan(sh)) std::snprintf(share, sizeof share, "sampler share not measured: no profiler tick");
-  else std::snprintf(share, sizeof share, "sampler %.1f%%", 100 * sh);
+  if (std::isnan(sh))
+    std::snprintf(share, sizeof share, "sampler share not measured: no profiler tick");
+  else
+    std::snprintf(share, sizeof share, "sampler %.1f%%", 100 * sh);
   char buf[340];
   std::snprintf(buf, sizeof buf, "%-8s %5d spp  rmse %.5f %s  %lld samples  %.3f s CPU (%s)", run.sampler.c_str(),
                 run.spp, run.rmse, spread, (long long)run.samples, run.cpu_seconds, share);
@@ -61,14 +63,16 @@ std::string screen_line(const UniformRun& run, int seeds) {
   const ScreenMeasures& m = run.screen;
   auto value = [&](int digits, double mean, double ci) {
     char buf[64];
-    if (seeds > 1) std::snprintf(buf, sizeof buf, "%.*f +- %.*f", digits, mean, digits, ci);
-    else std::snprintf(buf, sizeof buf, "%.*f", digits, mean);
+    if (seeds > 1)
+      std::snprintf(buf, sizeof buf, "%.*f +- %.*f", digits, mean, digits, ci);
+    else
+      std::snprintf(buf, sizeof buf, "%.*f", digits, mean);
     return std::string(buf);
   };
   char head[40];
   std::snprintf(head, sizeof head, "%-8s %5d spp", run.sampler.c_str(), run.spp);
-  return std::string(head) + "  blurred rmse s1 " + value(5, m.blurred[0].rmse_mean, m.blurred[0].rmse_ci95) +
-         "  s2 " + value(5, m.blurred[1].rmse_mean, m.blurred[1].rmse_ci95) + "  low-freq share " +
+  return std::string(head) + "  blurred rmse s1 " + value(5, m.blurred[0].rmse_mean, m.blurred[0].rmse_ci95) + "  s2 " +
+         value(5, m.blurred[1].rmse_mean, m.blurred[1].rmse_ci95) + "  low-freq share " +
          value(3, m.low_share_mean.mean, m.low_share_mean.ci95) + "  FLIP ldr " +
          value(4, m.flip_ldr_mean.mean, m.flip_ldr_mean.ci95) + "  hdr " +
          value(4, m.flip_hdr_mean.mean, m.flip_hdr_mean.ci95);

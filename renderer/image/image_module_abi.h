@@ -38,7 +38,12 @@ struct PdrtImageRead {
 
 // Image textures through OpenImageIO's TextureSystem (MIP-mapped, filtered, thread-safe).
 enum PdrtTextureEncoding { PDRT_ENCODING_AUTO = 0, PDRT_ENCODING_SRGB = 1, PDRT_ENCODING_LINEAR = 2 };
-enum PdrtTextureFilter { PDRT_FILTER_NONE = 0, PDRT_FILTER_BILINEAR = 1, PDRT_FILTER_TRILINEAR = 2, PDRT_FILTER_EWA = 3 };
+enum PdrtTextureFilter {
+  PDRT_FILTER_NONE = 0,
+  PDRT_FILTER_BILINEAR = 1,
+  PDRT_FILTER_TRILINEAR = 2,
+  PDRT_FILTER_EWA = 3
+};
 enum PdrtTextureWrap { PDRT_WRAP_REPEAT = 0, PDRT_WRAP_CLAMP = 1, PDRT_WRAP_BLACK = 2, PDRT_WRAP_MIRROR = 3 };
 
 struct PdrtTextureOpen {

@@ -53,8 +53,11 @@ int read_image(const char* path, PdrtImageRead* r, char* error, size_t error_siz
     if (!in) return fail(error, error_size, "cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     float* px = r->alloc(r->context, spec.width, spec.height, spec.nchannels);
-    if (!px) return fail(error, error_size, "out of memory for a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image");
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px)) return fail(error, error_size, in->geterror());
+    if (!px)
+      return fail(error, error_size,
+                  "out of memory for a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image");
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px))
+      return fail(error, error_size, in->geterror());
     r->integer_format = spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16;
     return 0;
   } catch (const std::exception& e) {
@@ -107,8 +110,7 @@ int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, s
     if (!in) return fail(error, error_size, "cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec spec = in->spec();
     in->close();
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
-      return fail(error, error_size, "has no pixels");
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) return fail(error, error_size, "has no pixels");
     const bool integer = spec.format == OIIO::TypeDesc::UINT8 || spec.format == OIIO::TypeDesc::UINT16 ||
                          spec.format == OIIO::TypeDesc::INT8 || spec.format == OIIO::TypeDesc::INT16;
     const bool srgb = o->encoding == PDRT_ENCODING_SRGB || (o->encoding == PDRT_ENCODING_AUTO && integer);
@@ -138,7 +140,8 @@ int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, s
       config.attribute("maketx:filtername", "box");  // each level the mean of the one above
       // A unique temporary name, then an atomic rename: parallel renders share the cache.
       static std::atomic<unsigned> counter{0};
-      const fs::path tmp = dir / (std::string(name) + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp.exr");
+      const fs::path tmp =
+          dir / (std::string(name) + "." + std::to_string(::getpid()) + "." + std::to_string(counter++) + ".tmp.exr");
       if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, lin, tmp.string(), config)) {
         fs::remove(tmp, ec);
         return fail(error, error_size, "cannot write its MIP-mapped copy in " + dir.string() + ": " + OIIO::geterror());
@@ -150,7 +153,8 @@ int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, s
       }
     }
     OIIO::TextureSystem::TextureHandle* th = ts->get_texture_handle(OIIO::ustring(out.string()));
-    if (!th || !ts->good(th)) return fail(error, error_size, "cannot open its MIP-mapped copy " + out.string() + ": " + ts->geterror());
+    if (!th || !ts->good(th))
+      return fail(error, error_size, "cannot open its MIP-mapped copy " + out.string() + ": " + ts->geterror());
     *handle = th;
     return 0;
   } catch (const std::exception& e) {
@@ -162,10 +166,14 @@ int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, s
 
 OIIO::TextureOpt::Wrap wrap_mode(int w) {
   switch (w) {
-    case PDRT_WRAP_CLAMP: return OIIO::TextureOpt::WrapClamp;
-    case PDRT_WRAP_BLACK: return OIIO::TextureOpt::WrapBlack;
-    case PDRT_WRAP_MIRROR: return OIIO::TextureOpt::WrapMirror;
-    default: return OIIO::TextureOpt::WrapPeriodic;
+    case PDRT_WRAP_CLAMP:
+      return OIIO::TextureOpt::WrapClamp;
+    case PDRT_WRAP_BLACK:
+      return OIIO::TextureOpt::WrapBlack;
+    case PDRT_WRAP_MIRROR:
+      return OIIO::TextureOpt::WrapMirror;
+    default:
+      return OIIO::TextureOpt::WrapPeriodic;
   }
 }
 
@@ -190,13 +198,13 @@ int texture_lookup(void* system, void* handle, const PdrtTextureLookup* l, float
   // The calling thread's own Perthread (OIIO keeps one per thread and frees it at thread exit).
   OIIO::TextureSystem::Perthread* pt = ts->get_perthread_info();
   float out[3] = {0, 0, 0};
-  bool ok = ts->texture(static_cast<OIIO::TextureSystem::TextureHandle*>(handle), pt, opt, l->s, l->t, l->dsdx,
-                        l->dtdx, l->dsdy, l->dtdy, 3, out);
+  bool ok = ts->texture(static_cast<OIIO::TextureSystem::TextureHandle*>(handle), pt, opt, l->s, l->t, l->dsdx, l->dtdx,
+                        l->dsdy, l->dtdy, 3, out);
   for (int c = 0; c < 3; ++c) rgb[c] = ok ? out[c] : 0.0f;
   return ok ? 0 : 1;
 }
 
-const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI, write_image, read_image, texture_system_create,
+const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI,  write_image,  read_image,    texture_system_create,
                                  texture_system_destroy, texture_open, texture_lookup};
 
 }  // namespace

@@ -18,9 +18,12 @@ constexpr double kImageMeanFloor = 1e-4;
 
 double default_threshold(AdaptiveMetricKind metric) {
   switch (metric) {
-    case AdaptiveMetricKind::ErrorPerSample: return 1.0 / 16;
-    case AdaptiveMetricKind::RelativeError: return 0.01;
-    case AdaptiveMetricKind::Contrast: return 0.4;
+    case AdaptiveMetricKind::ErrorPerSample:
+      return 1.0 / 16;
+    case AdaptiveMetricKind::RelativeError:
+      return 0.01;
+    case AdaptiveMetricKind::Contrast:
+      return 0.4;
   }
   return 0;
 }

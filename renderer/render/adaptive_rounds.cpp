@@ -54,8 +54,7 @@ int64_t mark_active(const AdaptiveMetric& metric, const AdaptiveDesc& ad, const 
 
 }  // namespace
 
-int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films,
-                           TilePasses& passes) {
+int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes) {
   int rounds = 0;
   if (!passes.run("render (adaptive, round 0)", [&](int, int) { return int64_t(ad.min_spp); })) return rounds;
   AdaptiveMetric metric(ad);

@@ -12,7 +12,6 @@
 namespace pdrt {
 
 // Renders `ad`'s first pass and its refinement rounds; returns the rounds after the first.
-int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films,
-                           TilePasses& passes);
+int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes);
 
 }  // namespace pdrt

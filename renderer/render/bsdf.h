@@ -36,9 +36,9 @@
 
 namespace pdrt {
 
-using BxdfVariant = std::variant<BlackBxdf, LambertBxdf, GgxReflectionBxdf, PhongBxdf, SchlickMirrorBxdf,
-                                 SmoothConductorBxdf, SmoothDielectricBxdf, RoughDielectricBxdf, CoatedDiffuse,
-                                 ThinDielectricBxdf>;
+using BxdfVariant =
+    std::variant<BlackBxdf, LambertBxdf, GgxReflectionBxdf, PhongBxdf, SchlickMirrorBxdf, SmoothConductorBxdf,
+                 SmoothDielectricBxdf, RoughDielectricBxdf, CoatedDiffuse, ThinDielectricBxdf>;
 
 class Bsdf {
  public:
@@ -62,7 +62,7 @@ class Bsdf {
     return std::visit([](const auto& b) { return std::decay_t<decltype(b)>::kDelta; }, bxdf_);
   }
   bool scatters() const { return !std::holds_alternative<BlackBxdf>(bxdf_); }  // false for emitters
-  Vec3 albedo() const { return albedo_; }  // for the albedo AOV
+  Vec3 albedo() const { return albedo_; }                                      // for the albedo AOV
 
  private:
   BxdfVariant bxdf_;

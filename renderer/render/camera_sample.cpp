@@ -13,8 +13,8 @@ namespace {
 
 // The rank's random part, independent of every sampler family: a hash of (seed, pixel, index).
 double rank_jitter(uint64_t seed, int x, int y, int64_t index) {
-  uint64_t h = hash_combine(hash_combine(rank_jitter_seed(seed), uint64_t(uint32_t(x)) << 32 | uint32_t(y)),
-                            uint64_t(index));
+  uint64_t h =
+      hash_combine(hash_combine(rank_jitter_seed(seed), uint64_t(uint32_t(x)) << 32 | uint32_t(y)), uint64_t(index));
   return unit_from_u64(h);
 }
 

@@ -111,19 +111,22 @@ RTCGeometry EmbreeScene::make_moving_instance(RTCScene child, const std::vector<
   const CameraDesc& c = desc_.camera;
   const float span = c.shutter_close - c.shutter_open;
   const bool fine = !embree_follows_keys(motion, static_part);
-  std::vector<MotionKey> steps = span > 0 ? time_steps(motion, c.shutter_open, c.shutter_close, fine)
-                                          : std::vector<MotionKey>{interpolate(motion.data(), int(motion.size()), c.shutter_open)};
+  std::vector<MotionKey> steps =
+      span > 0 ? time_steps(motion, c.shutter_open, c.shutter_close, fine)
+               : std::vector<MotionKey>{interpolate(motion.data(), int(motion.size()), c.shutter_open)};
   RTCGeometry inst = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
   rtcSetGeometryInstancedScene(inst, child);
   rtcSetGeometryTimeStepCount(inst, unsigned(steps.size()));
   if (steps.size() > 1)
-    rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span, (steps.back().time - c.shutter_open) / span);
+    rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span,
+                            (steps.back().time - c.shutter_open) / span);
   Quat previous;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     InstanceKey key = instance_key(steps[k], static_part);
     Quat& q = key.rotate;
     // Neighbouring steps on one hemisphere: the slerp between them takes the short arc.
-    if (k > 0 && q.w * previous.w + q.x * previous.x + q.y * previous.y + q.z * previous.z < 0) q = {-q.w, -q.x, -q.y, -q.z};
+    if (k > 0 && q.w * previous.w + q.x * previous.x + q.y * previous.y + q.z * previous.z < 0)
+      q = {-q.w, -q.x, -q.y, -q.z};
     previous = q;
     RTCQuaternionDecomposition d;
     rtcInitQuaternionDecomposition(&d);
@@ -163,13 +166,15 @@ EmbreeScene::EmbreeScene(const SceneDesc& desc, const EmbreeDevice& device) : de
     // instantaneous shutter sees the motion at its one time, as a single step.
     const CameraDesc& c = desc.camera;
     const float span = c.shutter_close - c.shutter_open;
-    std::vector<MotionKey> steps = span > 0 ? time_steps(d.motion, c.shutter_open, c.shutter_close)
-                                            : std::vector<MotionKey>{interpolate(d.motion.data(), int(d.motion.size()), c.shutter_open)};
+    std::vector<MotionKey> steps =
+        span > 0 ? time_steps(d.motion, c.shutter_open, c.shutter_close)
+                 : std::vector<MotionKey>{interpolate(d.motion.data(), int(d.motion.size()), c.shutter_open)};
     RTCGeometry inst = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(inst, s.child);
     rtcSetGeometryTimeStepCount(inst, unsigned(steps.size()));
     if (steps.size() > 1)
-      rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span, (steps.back().time - c.shutter_open) / span);
+      rtcSetGeometryTimeRange(inst, (steps.front().time - c.shutter_open) / span,
+                              (steps.back().time - c.shutter_open) / span);
     for (std::size_t k = 0; k < steps.size(); ++k) {
       RTCQuaternionDecomposition q;
       rtcInitQuaternionDecomposition(&q);
@@ -317,8 +322,9 @@ void EmbreeScene::finish_hit(const Ray& ray, unsigned inst_id, unsigned geom_id,
   // Top-level IDs past the scene's shapes are prototype instances: geom_id is the shape's
   // index within the prototype.
   const int instance = inst && inst_id >= n_shapes ? int(inst_id - n_shapes) : -1;
-  const int shape = instance >= 0 ? prototype_first_[std::size_t(desc_.instances[std::size_t(instance)].prototype)] + int(geom_id)
-                                  : int(inst ? inst_id : geom_id);
+  const int shape = instance >= 0
+                        ? prototype_first_[std::size_t(desc_.instances[std::size_t(instance)].prototype)] + int(geom_id)
+                        : int(inst ? inst_id : geom_id);
   const Shape& s = shapes_[shape];
   hit->t = t;
   hit->shape = shape;

@@ -23,14 +23,14 @@ namespace pdrt {
 
 struct SurfaceHit {
   float t = 0;
-  Vec3 p;        // world position, reprojected onto the surface (not org + t dir)
-  Vec3 p_error;  // per-component bound on p's floating-point error (ray_spawn.h)
-  Vec3 ng;       // unit geometric normal, on the front side (CCW winding / sphere outside)
-  Vec3 ns;       // unit shading normal (interpolated vertex normals), same side as ng
+  Vec3 p;             // world position, reprojected onto the surface (not org + t dir)
+  Vec3 p_error;       // per-component bound on p's floating-point error (ray_spawn.h)
+  Vec3 ng;            // unit geometric normal, on the front side (CCW winding / sphere outside)
+  Vec3 ns;            // unit shading normal (interpolated vertex normals), same side as ng
   int shape = -1;     // EmbreeScene's shape index: desc.shapes, then the prototypes' shapes
   int instance = -1;  // the InstanceDesc hit (its transform places the shape), -1 outside instances
   int prim = -1;
-  bool front = true;  // the ray arrived from the side ng points to
+  bool front = true;             // the ray arrived from the side ng points to
   float bary_u = 0, bary_v = 0;  // Embree's barycentrics (triangles)
   Vec3 p_local;                  // p before a moving shape's or an instance's transform
   // Texture coordinates (docs/scene-format.md, "Texture coordinates") and the world-space
@@ -108,12 +108,13 @@ class EmbreeScene {
     const ShapeDesc* desc = nullptr;
   };
   struct Instance {
-    Affine to_world, to_prototype;  // static instances
+    Affine to_world, to_prototype;   // static instances
     RTCGeometry geometry = nullptr;  // moving instances: kept for transform queries
   };
   RTCGeometry make_geometry(const Shape& s) const;
   void add_shape(Shape& s, const ShapeDesc& d);
-  RTCGeometry make_moving_instance(RTCScene child, const std::vector<MotionKey>& motion, const Affine& static_part) const;
+  RTCGeometry make_moving_instance(RTCScene child, const std::vector<MotionKey>& motion,
+                                   const Affine& static_part) const;
 
   const SceneDesc& desc_;
   const EmbreeDevice& device_;

@@ -46,7 +46,7 @@ class EnvironmentMap {
   Vec3 lookup(double u, double v) const;
 
  private:
-  Vec3 texel(int x, int y) const;  // scaled; x wraps, y clamps
+  Vec3 texel(int x, int y) const;                            // scaled; x wraps, y clamps
   static float solid_angle_pdf(double p_uv, const Vec3& w);  // p(u, v) / (2 pi^2 sin theta)
 
   int width_ = 0, height_ = 0;

@@ -11,25 +11,25 @@
 namespace pdrt {
 
 struct PixelAccum {
-  double w = 0, w2 = 0;          // sum of weights and of squared weights
-  double rgb[3] = {0, 0, 0};     // sum w L
-  double lum = 0, lum2 = 0;      // sum w Y, sum w Y^2 (for the variance of the mean)
+  double w = 0, w2 = 0;                             // sum of weights and of squared weights
+  double rgb[3] = {0, 0, 0};                        // sum w L
+  double lum = 0, lum2 = 0;                         // sum w Y, sum w Y^2 (for the variance of the mean)
   double half_w[2] = {0, 0}, half_lum[2] = {0, 0};  // sum w, sum w Y over even / odd sample indices
   double albedo[3] = {0, 0, 0}, normal[3] = {0, 0, 0}, depth = 0;
-  double abs_w = 0;              // sum |w|: AOV weights (filter weights may be negative: Mitchell)
-  double depth_w = 0;            // sum |w| over samples that hit something
-  int64_t samples = 0;           // samples accumulated into this pixel (splatting: from its neighbours too)
-  int64_t traced = 0;            // samples traced from this pixel, dropped ones included
-  int64_t dropped = 0;           // samples dropped for a NaN or infinite value (no weight)
-  int64_t prefix = 0;            // the pixel's sample budget taken so far (rank selection: of spp, not candidates)
-  double norm = 0;               // > 0: value() divides by it instead of sum w (rank selection's unbiased form)
+  double abs_w = 0;     // sum |w|: AOV weights (filter weights may be negative: Mitchell)
+  double depth_w = 0;   // sum |w| over samples that hit something
+  int64_t samples = 0;  // samples accumulated into this pixel (splatting: from its neighbours too)
+  int64_t traced = 0;   // samples traced from this pixel, dropped ones included
+  int64_t dropped = 0;  // samples dropped for a NaN or infinite value (no weight)
+  int64_t prefix = 0;   // the pixel's sample budget taken so far (rank selection: of spp, not candidates)
+  double norm = 0;      // > 0: value() divides by it instead of sum w (rank selection's unbiased form)
   float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
 
   // `half` is the sample index's parity: the two half buffers of the `halves` variance.
   // A sample whose value is NaN or infinite is dropped with no weight, and counted: a black
   // sample at full filter weight would bias the pixel toward 0 without a word.
   void add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n, float z, int half);
-  Vec3 value() const;            // normalised weighted mean (Cook §4.2), or sum w L / norm
+  Vec3 value() const;  // normalised weighted mean (Cook §4.2), or sum w L / norm
   double mean_luminance() const;
   double variance_of_mean() const;  // of the luminance
   // The same from the two half buffers (Cycles): (mean_even - mean_odd)^2 / 4; falls back to

@@ -26,7 +26,8 @@ float gaussian_1d(float x, float sigma) {
 
 }  // namespace
 
-Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius), sigma_(d.type == FilterType::Gaussian ? d.sigma : 0) {
+Filter::Filter(const FilterDesc& d)
+    : type_(d.type), radius_(d.radius), sigma_(d.type == FilterType::Gaussian ? d.sigma : 0) {
   // Cook's Gaussian: e^(-d^2) - e^(-w^2), d in pixels, w the radius (1.5 by default);
   // pbrt-v4's: g(x) - g(w) per axis.
   gauss_tail_ = sigma_ > 0 ? gaussian_1d(radius_, sigma_) : std::exp(-radius_ * radius_);
@@ -37,7 +38,8 @@ Filter::Filter(const FilterDesc& d) : type_(d.type), radius_(d.radius), sigma_(d
   double sum = 0;
   const int m = 512;
   for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) sum += eval(radius_ * float((i + 0.5) / (m / 2) - 1), radius_ * float((j + 0.5) / (m / 2) - 1));
+    for (int j = 0; j < m; ++j)
+      sum += eval(radius_ * float((i + 0.5) / (m / 2) - 1), radius_ * float((j + 0.5) / (m / 2) - 1));
   mean_ = sum / (double(m) * m);
   // pbrt-v4 tabulates 32 cells per pixel of radius; a cell's value is the mean |f| on a 5 x 5
   // lattice spanning the cell (corners pulled in by 1/1000 of a cell, as eval is 0 on the

@@ -75,9 +75,7 @@ Vec3 fresnel_conductor_average(const Vec3& eta, const Vec3& k) {
   return {float(s[0] / n), float(s[1] / n), float(s[2] / n)};
 }
 
-double conductor_r0(double eta, double k) {
-  return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);
-}
+double conductor_r0(double eta, double k) { return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k); }
 
 Vec3 fresnel_schlick(const Vec3& f0, float cos_i) {
   float m = std::clamp(1.0f - cos_i, 0.0f, 1.0f);

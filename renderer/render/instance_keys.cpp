@@ -17,7 +17,8 @@ D3 cross3(const D3& a, const D3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x -
 // The unit quaternion of rotation matrix columns (c0, c1, c2) (Shoemake 1985: the largest
 // of w, x, y, z first, for accuracy).
 Quat quat_of(const D3& c0, const D3& c1, const D3& c2) {
-  const double m00 = c0.x, m10 = c0.y, m20 = c0.z, m01 = c1.x, m11 = c1.y, m21 = c1.z, m02 = c2.x, m12 = c2.y, m22 = c2.z;
+  const double m00 = c0.x, m10 = c0.y, m20 = c0.z, m01 = c1.x, m11 = c1.y, m21 = c1.z, m02 = c2.x, m12 = c2.y,
+               m22 = c2.z;
   const double tr = m00 + m11 + m22;
   double w, x, y, z;
   if (tr > 0) {

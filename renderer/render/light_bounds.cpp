@@ -78,7 +78,11 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
 float LightBounds::importance(const Vec3& p, const Vec3& n) const { return PackedLightBounds(*this).importance(p, n); }
 
 PackedLightBounds::PackedLightBounds(const LightBounds& b)
-    : center(b.box.center()), w(b.normals.w), cos_o(b.normals.cos_theta), cos_e(b.cos_e), phi(b.phi),
+    : center(b.box.center()),
+      w(b.normals.w),
+      cos_o(b.normals.cos_theta),
+      cos_e(b.cos_e),
+      phi(b.phi),
       two_sided(b.two_sided) {
   r2 = 0.25f * dot(b.box.diagonal(), b.box.diagonal());  // bounding sphere of the box
   r = std::sqrt(r2);

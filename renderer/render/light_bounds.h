@@ -31,14 +31,14 @@ struct DirectionCone {
 };
 
 struct LightBounds {
-  Box3 box;            // world box (for moving emitters: the union over the shutter)
+  Box3 box;  // world box (for moving emitters: the union over the shutter)
   // Irradiance units: phi / d^2 estimates what the group delivers at distance d, so phi is
   // luminance x area for a flat emitter (L A cos / d^2 is the radiance times the solid angle
   // it subtends) and luminance x pi r^2 for a sphere (its projected area from any side).
   float phi = 0;
-  DirectionCone normals;  // the emitters' front normals lie in this cone (cos theta_o)
-  float cos_e = 0;        // emission reaches cos theta_e past the normal cone (diffuse: pi/2)
-  bool two_sided = false; // emits on both sides of each normal
+  DirectionCone normals;   // the emitters' front normals lie in this cone (cos theta_o)
+  float cos_e = 0;         // emission reaches cos theta_e past the normal cone (diffuse: pi/2)
+  bool two_sided = false;  // emits on both sides of each normal
 
   // Estimated irradiance at p on a surface of unit normal n (either side of it), from the
   // distance to the box, the angle between the normal cone and p, the angle the box

@@ -10,7 +10,7 @@ namespace {
 
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 constexpr int kBuckets = 12;
-constexpr int kMaxDepth = 64;       // the bit trail's width
+constexpr int kMaxDepth = 64;         // the bit trail's width
 constexpr int kMedianFromDepth = 40;  // below this depth split by count, so the tree stays within kMaxDepth
 
 // Orientation measure M_Omega of a normal cone widened by the emission angle (Conty Estevez
@@ -79,7 +79,9 @@ LightBounds LightBvh::build(std::vector<int>& ids, std::vector<Vec3>& centroids,
       const float lo = cbox.lo[axis], ext = cbox.hi[axis] - lo;
       if (!(ext > 0)) continue;
       LightBounds bucket[kBuckets];
-      auto bucket_of = [&](int id) { return std::min(kBuckets - 1, int(kBuckets * ((centroids[id][axis] - lo) / ext))); };
+      auto bucket_of = [&](int id) {
+        return std::min(kBuckets - 1, int(kBuckets * ((centroids[id][axis] - lo) / ext)));
+      };
       for (int i = begin; i < end; ++i) bucket[bucket_of(ids[i])] = merge(bucket[bucket_of(ids[i])], lights[ids[i]]);
       for (int split = 0; split < kBuckets - 1; ++split) {
         LightBounds below, above;

@@ -28,10 +28,10 @@ class LightBvh {
  private:
   struct Node {
     PackedLightBounds bounds;
-    int second = -1;     // interior: index of the second child (the first follows the node)
-    int light = -1;      // leaf: the light id
-    bool halves = false; // interior: the children's bounds agree (the two triangles of a quad), so
-                         // each gets 1/2 without evaluating them; any fixed split is unbiased
+    int second = -1;      // interior: index of the second child (the first follows the node)
+    int light = -1;       // leaf: the light id
+    bool halves = false;  // interior: the children's bounds agree (the two triangles of a quad), so
+                          // each gets 1/2 without evaluating them; any fixed split is unbiased
   };
   // Builds the subtree of ids[begin, end) and returns its bounds.
   LightBounds build(std::vector<int>& ids, std::vector<Vec3>& centroids, const std::vector<LightBounds>& lights,

@@ -32,11 +32,11 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
   PathResult res;
   res.depth = std::numeric_limits<float>::infinity();
   Vec3 beta(1.0f);
-  float eta_scale = 1;   // product of eta^2 over transmissions: beta * eta_scale is free of the 1/eta^2 radiance scaling
-  float prev_pdf = 0;    // solid-angle pdf of the BSDF sample that produced `ray`
-  bool prev_delta = true;  // camera rays and delta lobes: emitters hit are counted fully
+  float eta_scale = 1;  // product of eta^2 over transmissions: beta * eta_scale is free of the 1/eta^2 radiance scaling
+  float prev_pdf = 0;   // solid-angle pdf of the BSDF sample that produced `ray`
+  bool prev_delta = true;      // camera rays and delta lobes: emitters hit are counted fully
   bool any_non_delta = false;  // the path scattered off a non-delta lobe (regularisation starts after it)
-  Vec3 prev_p, prev_n;   // the previous vertex and its shading normal: light selection depends on them
+  Vec3 prev_p, prev_n;         // the previous vertex and its shading normal: light selection depends on them
   const float time = ray.time;
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
@@ -88,7 +88,8 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (!bsdf.is_delta() && !lights_.empty()) {
       LightSample ls;
       float u_pick = float(ps.get_1d(Family::Time, salt_light_pick(depth)));
-      if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, salt_light_point(depth)), &ls) && !is_black(ls.radiance)) {
+      if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, salt_light_point(depth)), &ls) &&
+          !is_black(ls.radiance)) {
         Vec3 wi = frame.to_local(ls.wi);
         Vec3 f = bsdf.eval(wo, wi);
         // Light leaking through the geometric surface is rejected (shading normals).
@@ -96,7 +97,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
         if (!is_black(f) && same_side) {
           // Between two offset points: the ray neither re-hits this surface nor the light.
           const Ray shadow = ls.at_infinity ? spawn_ray(hit.point(), hit.ng, ls.wi, time)
-                                                 : spawn_ray_to(hit.point(), hit.ng, ls.x, ls.n, time);
+                                            : spawn_ray_to(hit.point(), hit.ng, ls.x, ls.n, time);
           ++res.rays;
           if (!scene_.occluded(shadow)) {
             // A delta light (point, spot, distant) cannot be hit by BSDF sampling: weight 1.

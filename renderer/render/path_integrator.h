@@ -18,10 +18,10 @@ namespace pdrt {
 
 struct PathResult {
   Vec3 radiance;
-  Vec3 albedo;      // first visible surface (AOV)
-  Vec3 normal;      // first visible surface shading normal (AOV)
-  float depth = 0;  // distance to the first visible surface (AOV; infinity on a miss)
-  int64_t rays = 0; // rays traced: extension + shadow
+  Vec3 albedo;       // first visible surface (AOV)
+  Vec3 normal;       // first visible surface shading normal (AOV)
+  float depth = 0;   // distance to the first visible surface (AOV; infinity on a miss)
+  int64_t rays = 0;  // rays traced: extension + shadow
 };
 
 class PathIntegrator {

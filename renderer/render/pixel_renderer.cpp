@@ -7,7 +7,7 @@
 namespace pdrt {
 
 int64_t PixelRenderer::run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps,
-                             PixelSampleState* pd) const {
+                           PixelSampleState* pd) const {
   CameraSampleRule rule{filter, mode};
   int64_t first = begin & ~int64_t(3), last = end;
   if (mode == Reconstruction::Rank) {
@@ -63,8 +63,10 @@ int64_t PixelRenderer::run(int x, int y, int64_t begin, int64_t end, Film& film,
 
 void PixelRenderer::splat(Film& film, float fx, float fy, const PathResult& pr, int half) const {
   const float r = filter.radius();
-  const int x0 = std::max(ox, int(std::ceil(fx - 0.5f - r))), x1 = std::min(ox + film.width() - 1, int(std::floor(fx - 0.5f + r)));
-  const int y0 = std::max(oy, int(std::ceil(fy - 0.5f - r))), y1 = std::min(oy + film.height() - 1, int(std::floor(fy - 0.5f + r)));
+  const int x0 = std::max(ox, int(std::ceil(fx - 0.5f - r))),
+            x1 = std::min(ox + film.width() - 1, int(std::floor(fx - 0.5f + r)));
+  const int y0 = std::max(oy, int(std::ceil(fy - 0.5f - r))),
+            y1 = std::min(oy + film.height() - 1, int(std::floor(fy - 0.5f + r)));
   for (int qy = y0; qy <= y1; ++qy)
     for (int qx = x0; qx <= x1; ++qx) {
       const float w = filter.eval(fx - (float(qx) + 0.5f), fy - (float(qy) + 0.5f));

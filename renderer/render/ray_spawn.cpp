@@ -59,8 +59,10 @@ Vec3 offset_ray_origin(const ErrorPoint& x, const Vec3& n, const Vec3& w) {
   Vec3 po = x.p + offset;
   // The sum may round back toward the surface: step one float further away.
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0) po[i] = std::nextafter(po[i], INFINITY);
-    else if (offset[i] < 0) po[i] = std::nextafter(po[i], -INFINITY);
+    if (offset[i] > 0)
+      po[i] = std::nextafter(po[i], INFINITY);
+    else if (offset[i] < 0)
+      po[i] = std::nextafter(po[i], -INFINITY);
   }
   return po;
 }

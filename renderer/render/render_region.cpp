@@ -32,9 +32,9 @@ void warn_adaptive_crop(const SceneDesc& desc, const RenderRegion& region, int r
   const bool cropped = region.crop.width() < desc.film.width || region.crop.height() < desc.film.height;
   if (desc.sampler.adaptive.enabled && cropped && !quiet && (rounds > region.margin_rounds || region.metric_needs_mean))
     warn(std::string("pdrt: warning: the crop window of an adaptive render may differ from the full render's crop (") +
-         (region.metric_needs_mean ? adaptive_metric_name(AdaptiveMetricKind::ErrorPerSample) +
-                                        std::string(" compares with the crop's mean")
-                                   : "refinement ran past the rounds the crop's margin covers") +
+         (region.metric_needs_mean
+              ? adaptive_metric_name(AdaptiveMetricKind::ErrorPerSample) + std::string(" compares with the crop's mean")
+              : "refinement ran past the rounds the crop's margin covers") +
          ")");
 }
 

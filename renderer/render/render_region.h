@@ -9,9 +9,9 @@
 namespace pdrt {
 
 struct RenderRegion {
-  PixelRect crop;        // the output, in image pixels
-  PixelRect rect;        // the rendered rectangle, in image pixels: crop plus margin, within the image
-  int margin_rounds = 0; // adaptive rounds (round 0 included) the margin covers
+  PixelRect crop;                  // the output, in image pixels
+  PixelRect rect;                  // the rendered rectangle, in image pixels: crop plus margin, within the image
+  int margin_rounds = 0;           // adaptive rounds (round 0 included) the margin covers
   bool metric_needs_mean = false;  // the adaptive metric compares with the image's mean (the crop's)
 
   // The crop in film coordinates (the rendered rectangle's pixel (0, 0) at image pixel rect.x0, rect.y0).

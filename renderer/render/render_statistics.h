@@ -13,8 +13,8 @@ namespace pdrt {
 // Wall and process CPU time of a render, and of its scene build (Embree BVH, lights, camera).
 class RenderClock {
  public:
-  RenderClock();              // starts both clocks
-  void build_done();          // the scene is built: the rest is rendering
+  RenderClock();      // starts both clocks
+  void build_done();  // the scene is built: the rest is rendering
   double build_seconds() const { return build_seconds_; }
   // Fills seconds, build_seconds, cpu_seconds and build_cpu_seconds: the times until now.
   void finish(RenderStats& stats) const;

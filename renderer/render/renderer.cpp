@@ -64,8 +64,8 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   Filter filter(desc.film.filter);
   RenderFilms films(region.rect.width(), region.rect.height(), split);
   const std::unique_ptr<Sampler> decider = split ? make_decision_sampler(desc.sampler, desc.film, sampler) : nullptr;
-  const PixelRenderer pixels{camera, scene, integrator, filter, desc.film.filter.reconstruction, region.rect.x0,
-                             region.rect.y0};
+  const PixelRenderer pixels{camera,         scene,         integrator, filter, desc.film.filter.reconstruction,
+                             region.rect.x0, region.rect.y0};
   clock.build_done();
 
   const LocalProcessGroup alone;
@@ -75,8 +75,10 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt);
   int rounds = 0;
   SamplerProfiler profiler;  // the passes only: the build and the image are not sampling work
-  if (ad.enabled) rounds = render_adaptive_rounds(ad, region, films, passes);
-  else passes.run("render", [&](int, int) { return int64_t(desc.sampler.spp); });
+  if (ad.enabled)
+    rounds = render_adaptive_rounds(ad, region, films, passes);
+  else
+    passes.run("render", [&](int, int) { return int64_t(desc.sampler.spp); });
 
   RenderResult res;
   res.stats.sampler_profile = profiler.result();

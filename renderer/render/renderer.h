@@ -16,8 +16,8 @@
 namespace pdrt {
 
 struct RenderOptions {
-  int threads = 0;                        // 0 = all hardware threads
-  bool quiet = false;                     // no progress on stderr
+  int threads = 0;                            // 0 = all hardware threads
+  bool quiet = false;                         // no progress on stderr
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
   // The processes sharing the render (docs/distributed.md); nullptr = this one alone. Every
   // process returns the same image, bit for bit the single process's.
@@ -27,27 +27,27 @@ struct RenderOptions {
 // One process's share of a distributed render.
 struct RankStats {
   int rank = 0;
-  double seconds = 0;      // rendering, after the scene build (exchanges included)
+  double seconds = 0;           // rendering, after the scene build (exchanges included)
   double exchange_seconds = 0;  // of that, waiting for and copying the other ranks' blocks
-  int64_t samples = 0;     // camera samples this rank traced
+  int64_t samples = 0;          // camera samples this rank traced
   int64_t rays = 0;
   int64_t tiles = 0;       // tile passes it rendered
   int64_t bytes_sent = 0;  // its blocks' pixel state, sent to every other rank
 };
 
 struct RenderStats {
-  double seconds = 0;          // total: scene build + rendering
-  double build_seconds = 0;    // Embree BVH build, lights, camera
-  double cpu_seconds = 0;      // process CPU time (user + sys, all threads) over the whole render
-  double build_cpu_seconds = 0;  // of that, the build's
-  int64_t rays = 0;        // extension + shadow rays
-  int64_t samples = 0;     // camera samples traced
+  double seconds = 0;             // total: scene build + rendering
+  double build_seconds = 0;       // Embree BVH build, lights, camera
+  double cpu_seconds = 0;         // process CPU time (user + sys, all threads) over the whole render
+  double build_cpu_seconds = 0;   // of that, the build's
+  int64_t rays = 0;               // extension + shadow rays
+  int64_t samples = 0;            // camera samples traced
   int64_t nonfinite_samples = 0;  // of those, dropped for a NaN or infinite value
   double spp_mean = 0;
-  bool partial = false;    // stopped before every pixel was done
-  int adaptive_rounds = 0; // refinement rounds after the first pass
+  bool partial = false;     // stopped before every pixel was done
+  int adaptive_rounds = 0;  // refinement rounds after the first pass
   std::size_t triangles = 0;
-  int threads = 0;         // worker threads the render ran on (options' 0 resolved)
+  int threads = 0;                 // worker threads the render ran on (options' 0 resolved)
   SamplerProfile sampler_profile;  // CPU ticks of the passes, and those spent computing sample values
   std::vector<RankStats> ranks;    // per process, by rank (one entry when not distributed)
 };

@@ -31,8 +31,9 @@ std::string format_sample_cost(double total) {
 
 void check_sample_budget(double total, const std::string& what, bool allow) {
   if (allow || total <= kMaxTotalSamples) return;
-  throw UsageError(what + " = " + format_sample_cost(total) +
-                   ", more than the limit of 1e10 samples; lower the spp or the resolution, or pass --allow-long-render");
+  throw UsageError(
+      what + " = " + format_sample_cost(total) +
+      ", more than the limit of 1e10 samples; lower the spp or the resolution, or pass --allow-long-render");
 }
 
 }  // namespace pdrt

@@ -15,11 +15,11 @@
 
 namespace pdrt {
 
-inline constexpr int kSaltFilmPoint = 0;    // Family::Pixel
-inline constexpr int kSaltLensPoint = 0;    // Family::Lens
-inline constexpr int kSaltShutterTime = 0;  // Family::Time
-inline constexpr int salt_light_point(int depth) { return depth; }  // Family::Light
-inline constexpr int salt_bsdf_direction(int depth) { return depth; }  // Family::Gloss
+inline constexpr int kSaltFilmPoint = 0;                                   // Family::Pixel
+inline constexpr int kSaltLensPoint = 0;                                   // Family::Lens
+inline constexpr int kSaltShutterTime = 0;                                 // Family::Time
+inline constexpr int salt_light_point(int depth) { return depth; }         // Family::Light
+inline constexpr int salt_bsdf_direction(int depth) { return depth; }      // Family::Gloss
 inline constexpr int salt_light_pick(int depth) { return 1 + 3 * depth; }  // Family::Time
 inline constexpr int salt_lobe(int depth) { return 2 + 3 * depth; }        // Family::Time
 inline constexpr int salt_roulette(int depth) { return 3 + 3 * depth; }    // Family::Time

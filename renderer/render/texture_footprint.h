@@ -24,8 +24,8 @@ class TextureFootprint {
 
  private:
   Vec3 eye_, forward_, right_, up_;
-  float pixel_ = 0;  // image-plane height of a pixel at unit distance along forward_, times the spp scale
-  float pixel_x_ = 0;  // its width (screen windows may stretch pixels)
+  float pixel_ = 0;     // image-plane height of a pixel at unit distance along forward_, times the spp scale
+  float pixel_x_ = 0;   // its width (screen windows may stretch pixels)
   bool ortho_ = false;  // pixel_ and pixel_x_ are in scene units, rays parallel
 };
 

@@ -13,23 +13,31 @@ namespace {
 
 int to_abi(TextureFilter f) {
   switch (f) {
-    case TextureFilter::None: return PDRT_FILTER_NONE;
-    case TextureFilter::Bilinear: return PDRT_FILTER_BILINEAR;
-    case TextureFilter::Trilinear: return PDRT_FILTER_TRILINEAR;
-    default: return PDRT_FILTER_EWA;
+    case TextureFilter::None:
+      return PDRT_FILTER_NONE;
+    case TextureFilter::Bilinear:
+      return PDRT_FILTER_BILINEAR;
+    case TextureFilter::Trilinear:
+      return PDRT_FILTER_TRILINEAR;
+    default:
+      return PDRT_FILTER_EWA;
   }
 }
 
 int to_abi(TextureWrap w) {
   switch (w) {
-    case TextureWrap::Clamp: return PDRT_WRAP_CLAMP;
-    case TextureWrap::Black: return PDRT_WRAP_BLACK;
-    case TextureWrap::Mirror: return PDRT_WRAP_MIRROR;
-    default: return PDRT_WRAP_REPEAT;
+    case TextureWrap::Clamp:
+      return PDRT_WRAP_CLAMP;
+    case TextureWrap::Black:
+      return PDRT_WRAP_BLACK;
+    case TextureWrap::Mirror:
+      return PDRT_WRAP_MIRROR;
+    default:
+      return PDRT_WRAP_REPEAT;
   }
 }
 
-float unit(float x) { return x >= 0 ? (x <= 1 ? x : 1.0f) : 0.0f; }  // NaN -> 0
+float unit(float x) { return x >= 0 ? (x <= 1 ? x : 1.0f) : 0.0f; }       // NaN -> 0
 float non_negative(float x) { return x >= 0 && x < 3.0e38f ? x : 0.0f; }  // NaN, inf -> 0
 
 // Brings a texture coordinate into one period of its wrap mode before OIIO converts it to an
@@ -37,9 +45,12 @@ float non_negative(float x) { return x >= 0 && x < 3.0e38f ? x : 0.0f; }  // NaN
 float reduce(float x, TextureWrap w) {
   if (!std::isfinite(x)) return 0;
   switch (w) {
-    case TextureWrap::Repeat: return std::abs(x) < 1e6f ? x : x - std::floor(x);
-    case TextureWrap::Mirror: return std::abs(x) < 1e6f ? x : x - 2 * std::floor(x / 2);
-    default: return std::clamp(x, -1.0f, 2.0f);
+    case TextureWrap::Repeat:
+      return std::abs(x) < 1e6f ? x : x - std::floor(x);
+    case TextureWrap::Mirror:
+      return std::abs(x) < 1e6f ? x : x - 2 * std::floor(x / 2);
+    default:
+      return std::clamp(x, -1.0f, 2.0f);
   }
 }
 
@@ -59,7 +70,7 @@ TextureSet::TextureSet(const SceneDesc& desc) : textures_(desc.textures), handle
     PdrtTextureOpen open{};
     open.path = path.c_str();
     open.cache_dir = cache.c_str();
-    open.encoding = t.encoding == TextureEncoding::Srgb ? PDRT_ENCODING_SRGB
+    open.encoding = t.encoding == TextureEncoding::Srgb     ? PDRT_ENCODING_SRGB
                     : t.encoding == TextureEncoding::Linear ? PDRT_ENCODING_LINEAR
                                                             : PDRT_ENCODING_AUTO;
     if (m.texture_open(system_, &open, &handles_[i], error, sizeof error)) {

@@ -41,8 +41,8 @@ class TextureSet {
   Vec3 lookup_image(const TextureDesc& t, int texture, const TextureCoords& tc) const;
 
   std::vector<TextureDesc> textures_;
-  void* system_ = nullptr;        // the module's TextureSystem, when there are images
-  std::vector<void*> handles_;    // per texture: its image handle, or null
+  void* system_ = nullptr;      // the module's TextureSystem, when there are images
+  std::vector<void*> handles_;  // per texture: its image handle, or null
 };
 
 }  // namespace pdrt

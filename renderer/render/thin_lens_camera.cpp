@@ -26,8 +26,7 @@ Vec3 eye_at(const CameraDesc& d, float shutter_time, Vec3* look_at) {
 
 }  // namespace
 
-ThinLensCamera::ThinLensCamera(const CameraDesc& desc, int width, int height)
-    : desc_(desc) {
+ThinLensCamera::ThinLensCamera(const CameraDesc& desc, int width, int height) : desc_(desc) {
   ortho_ = desc.projection == CameraDesc::Projection::Orthographic;
   const std::array<float, 4> w = screen_window(desc, width, height);
   x0_ = w[0], y1_ = w[3];
@@ -87,7 +86,8 @@ Ray ThinLensCamera::generate(float film_x, float film_y, std::array<double, 2> l
 
 // pbrt-v4 OrthographicCamera::GenerateRay: the pixel's point on the screen window, moved by
 // the lens offset, aimed at where the unmoved ray meets the plane of focus.
-Ray ThinLensCamera::generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u, float time) const {
+Ray ThinLensCamera::generate_parallel(const Pose& p, float sx, float sy, std::array<double, 2> lens_u,
+                                      float time) const {
   const Vec3 o = p.eye + p.right * sx + p.up * sy;
   Ray ray;
   ray.time = time;

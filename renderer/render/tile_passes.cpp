@@ -10,7 +10,13 @@ namespace pdrt {
 
 TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRenderer& pixels, const Sampler& sampler,
                        const Sampler* decider, const ProcessGroup& group, const RenderOptions& opt)
-    : tiles_(tiles), films_(films), pixels_(pixels), sampler_(sampler), decider_(decider), group_(group), opt_(opt),
+    : tiles_(tiles),
+      films_(films),
+      pixels_(pixels),
+      sampler_(sampler),
+      decider_(decider),
+      group_(group),
+      opt_(opt),
       exchange_(group, tiles, {&films.image, films.decision_or_null()}),
       stop_in_tile_(group.size() > 1 && opt.cancel) {
   mine_.rank = group.rank();

@@ -23,8 +23,9 @@ PixelRect TileWaves::pixels(int t) const {
 }
 
 PixelRect TileWaves::footprint(int t) const {
-  return PixelRect{std::max((t % tx_) * kTile - spread_, region_.x0), std::min((t % tx_) * kTile + kTile + spread_, region_.x1),
-                   std::max((t / tx_) * kTile - spread_, region_.y0), std::min((t / tx_) * kTile + kTile + spread_, region_.y1)};
+  return PixelRect{
+      std::max((t % tx_) * kTile - spread_, region_.x0), std::min((t % tx_) * kTile + kTile + spread_, region_.x1),
+      std::max((t / tx_) * kTile - spread_, region_.y0), std::min((t / tx_) * kTile + kTile + spread_, region_.y1)};
 }
 
 }  // namespace pdrt

@@ -34,8 +34,10 @@ void WaveExchange::blocks(const std::vector<int>& wave, int rank, std::vector<st
       for (int y = f.y0; y < f.y1; ++y) {
         const std::size_t n = sizeof(PixelAccum) * std::size_t(f.width());
         PixelAccum* row = &fm->at(f.x0 - region.x0, y - region.y0);
-        if (pack) bytes.resize(at + n), std::memcpy(bytes.data() + at, row, n);
-        else std::memcpy(row, bytes.data() + at, n);
+        if (pack)
+          bytes.resize(at + n), std::memcpy(bytes.data() + at, row, n);
+        else
+          std::memcpy(row, bytes.data() + at, n);
         at += n;
       }
     }

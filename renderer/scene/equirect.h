@@ -29,8 +29,6 @@ inline std::array<double, 2> equirect_uv(const Vec3& d) {
 }
 
 // sin(theta) of the unit direction d: the Jacobian (u, v) -> direction is 2 pi^2 sin(theta).
-inline double equirect_sin_theta(const Vec3& d) {
-  return std::sqrt(std::max(0.0, 1.0 - double(d.y) * double(d.y)));
-}
+inline double equirect_sin_theta(const Vec3& d) { return std::sqrt(std::max(0.0, 1.0 - double(d.y) * double(d.y))); }
 
 }  // namespace pdrt

@@ -23,8 +23,8 @@ class InputFileRecord {
 
  private:
   friend void note_input_file(const std::filesystem::path& file);
-// Called by read_text_file with the bytes of the file it noted.
-void note_input_text(const std::string& text);
+  // Called by read_text_file with the bytes of the file it noted.
+  void note_input_text(const std::string& text);
   friend void note_input_text(const std::string& text);
   std::vector<std::filesystem::path> files_;
   std::string first_text_;

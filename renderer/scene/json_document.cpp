@@ -81,8 +81,7 @@ JsonDocument::JsonDocument(std::string name, std::string text)
       json prefix = json::parse(std::string_view(text_).substr(0, deep->begin));
     } catch (const json::parse_error& e) {
       if (e.byte && e.byte - 1 < deep->begin) fail(locations_.at_byte(e.byte - 1), short_reason(e.what()));
-    } catch (const json::out_of_range&) {
-    }
+    } catch (const json::out_of_range&) {}
     fail(deep, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit for a scene)");
   }
   try {
@@ -110,9 +109,7 @@ void JsonDocument::fail(const std::optional<JsonLocation>& at, const std::string
   throw InputError(printable(line));
 }
 
-std::string JsonNode::where() const {
-  return printable(doc_->position(doc_->locations().value(path_)) + ": " + path_);
-}
+std::string JsonNode::where() const { return printable(doc_->position(doc_->locations().value(path_)) + ": " + path_); }
 
 void JsonNode::fail(const std::string& what) const {
   doc_->fail(doc_->locations().value(path_), (path_.empty() ? "" : path_ + " ") + what);

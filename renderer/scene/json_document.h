@@ -55,8 +55,8 @@ class JsonNode {
   const std::string& path() const { return path_; }
   const JsonDocument& document() const { return *doc_; }
 
-  std::string where() const;  // "<file>:<line>:<col>: <path>", for messages raised later
-  [[noreturn]] void fail(const std::string& what) const;      // "<path> <what>"
+  std::string where() const;                              // "<file>:<line>:<col>: <path>", for messages raised later
+  [[noreturn]] void fail(const std::string& what) const;  // "<path> <what>"
   [[noreturn]] void fail_got(const std::string& what) const;  // "<path> <what>, got <value>"
   [[noreturn]] void fail_key(const std::string& what) const;  // at the key naming this value
   // Scalars as written (1e999 stays 1e999); containers abbreviated to a few levels and at
@@ -82,8 +82,8 @@ class JsonNode {
   }
   Vec3 vec3() const;
   Vec3 nonzero_vec3() const;
-  Vec3 color() const;     // reflectance: components in [0, 1]
-  Vec3 radiance() const;  // components >= 0
+  Vec3 color() const;                        // reflectance: components in [0, 1]
+  Vec3 radiance() const;                     // components >= 0
   size_t array_size(size_t min_size) const;  // must be an array of at least min_size
   JsonNode at(size_t i) const { return JsonNode(*doc_, (*v_)[i], json_index_path(path_, i)); }
   JsonObject object() const;

@@ -77,8 +77,8 @@ void walk(std::string_view t, Visit&& visit) {
       if (c == '"') {
         skip_string();
       } else {
-        while (i < n && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != ' ' && t[i] != '\t' &&
-               t[i] != '\n' && t[i] != '\r')
+        while (i < n && t[i] != ',' && t[i] != ']' && t[i] != '}' && t[i] != ' ' && t[i] != '\t' && t[i] != '\n' &&
+               t[i] != '\r')
           ++i;
       }
       if (visit(Event::Value, frames, begin, i)) return;

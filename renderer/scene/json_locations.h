@@ -11,8 +11,8 @@
 namespace pdrt {
 
 struct JsonLocation {
-  int line = 1, col = 1;          // 1-based; columns count UTF-8 characters
-  size_t begin = 0, end = 0;      // byte range of a scalar's source text (end == begin for containers)
+  int line = 1, col = 1;      // 1-based; columns count UTF-8 characters
+  size_t begin = 0, end = 0;  // byte range of a scalar's source text (end == begin for containers)
 };
 
 // Paths as messages print them: camera.position, objects[2].radius, materials["my mat"].

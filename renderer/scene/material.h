@@ -26,18 +26,20 @@ struct TextureBinding {
 struct Material {
   std::string name;
   MaterialType type = MaterialType::Diffuse;
-  Vec3 albedo{0.8f};       // diffuse (and coated_diffuse base) reflectance; glossy/mirror F0 (Schlick); dielectric transmission tint
+  Vec3 albedo{
+      0.8f};  // diffuse (and coated_diffuse base) reflectance; glossy/mirror F0 (Schlick); dielectric transmission tint
   GlossLobe lobe = GlossLobe::GGX;
-  float roughness = 0.0f;  // perceptual: GGX alpha = roughness^2; 0 = smooth (delta); coated_diffuse: the coat's
-  float exponent = 0.0f;   // normalised Phong exponent (lobe == Phong)
-  float ior = 1.5f;        // dielectric and coated_diffuse's coat, relative to the outside medium
-  Vec3 eta{1.0f};          // conductor: real part of the complex index per RGB channel (> 0)
-  Vec3 k{0.0f};            // conductor: imaginary part (extinction) per RGB channel (>= 0)
-  Vec3 coat_color{1.0f};   // coated_diffuse: coat transmittance of one pass at normal incidence (thickness 1)
+  float roughness = 0.0f;       // perceptual: GGX alpha = roughness^2; 0 = smooth (delta); coated_diffuse: the coat's
+  float exponent = 0.0f;        // normalised Phong exponent (lobe == Phong)
+  float ior = 1.5f;             // dielectric and coated_diffuse's coat, relative to the outside medium
+  Vec3 eta{1.0f};               // conductor: real part of the complex index per RGB channel (> 0)
+  Vec3 k{0.0f};                 // conductor: imaginary part (extinction) per RGB channel (>= 0)
+  Vec3 coat_color{1.0f};        // coated_diffuse: coat transmittance of one pass at normal incidence (thickness 1)
   float coat_thickness = 1.0f;  // coated_diffuse: scales the coat's optical depth, >= 0
-  Vec3 radiance{0.0f};     // emitted radiance (Emitter)
-  bool two_sided = false;  // emitters: emit from both faces (default: front face only)
-  bool energy_compensation = true;  // GGX glossy, rough conductor and rough dielectric: add the multiple-scattering lobe
+  Vec3 radiance{0.0f};          // emitted radiance (Emitter)
+  bool two_sided = false;       // emitters: emit from both faces (default: front face only)
+  bool energy_compensation =
+      true;  // GGX glossy, rough conductor and rough dielectric: add the multiple-scattering lobe
   std::vector<TextureBinding> textures;  // parameters given by a texture (empty: constant material)
   // Mix: its two materials (indices into SceneDesc::materials, never emitters) and the
   // probability of choosing mix[1] at a hit (render/mix_material.h).
@@ -55,6 +57,6 @@ struct NamedMetal {
   Vec3 eta, k;
 };
 const NamedMetal* find_named_metal(const std::string& name);  // nullptr if unknown
-std::string named_metal_list();                                // "\"Ag\", \"Al\", \"Au\", \"Cu\""
+std::string named_metal_list();                               // "\"Ag\", \"Al\", \"Au\", \"Cu\""
 
 }  // namespace pdrt

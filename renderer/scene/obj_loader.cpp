@@ -134,8 +134,8 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
           if (e == std::string_view::npos) break;
           b = e + 1;
         }
-        bool shape_ok = parts.size() <= 3 && (parts.size() != 2 || !parts[1].empty()) &&
-                        (parts.size() != 3 || !parts[2].empty());
+        bool shape_ok =
+            parts.size() <= 3 && (parts.size() != 2 || !parts[1].empty()) && (parts.size() != 3 || !parts[2].empty());
         if (!shape_ok) fail(at, "bad face vertex " + in_quotes(t));
         auto check = [&](std::string_view part, long total, long seen, const char* what, const char* plural) {
           long idx = 0;
@@ -148,7 +148,8 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         };
         check(parts[0], total_v, seen_v, "", "vertices");
         if (parts.size() == 3) check(parts[2], total_vn, seen_vn, "normal ", "normals");
-        if (parts.size() >= 2 && !parts[1].empty()) check(parts[1], total_vt, seen_vt, "texture coordinate ", "texture coordinates");
+        if (parts.size() >= 2 && !parts[1].empty())
+          check(parts[1], total_vt, seen_vt, "texture coordinate ", "texture coordinates");
       }
     } else if (kw == "mtllib") {
       // tinyobjloader skips one separator after the keyword, then splits on spaces.
@@ -242,15 +243,16 @@ struct Corner {
 // otherwise surface as "no triangles" or a confusing parse error.
 void check_is_text(std::string_view text, const std::string& name) {
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos)
-    fail(name, text.empty() ? "empty file, expected OBJ text (v and f lines)" : "holds only white space, expected OBJ text");
+    fail(name,
+         text.empty() ? "empty file, expected OBJ text (v and f lines)" : "holds only white space, expected OBJ text");
   int line = 1;
   for (unsigned char c : text) {
     if (c == '\n') ++line;
     if ((c < 0x20 && c != '\t' && c != '\r' && c != '\n' && c != '\f' && c != '\v') || c == 0x7F) {
       char byte[8];
       std::snprintf(byte, sizeof byte, "0x%02X", c);
-      fail(name + ":" + std::to_string(line), std::string("not a text file (control byte ") + byte +
-                                                  "); an OBJ must be Wavefront text");
+      fail(name + ":" + std::to_string(line),
+           std::string("not a text file (control byte ") + byte + "); an OBJ must be Wavefront text");
     }
   }
 }
@@ -282,7 +284,8 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
     for (size_t i = 0; i < materials.size(); ++i) known[materials[i].name] = int(i);
     for (const UseMtl& u : usemtl)
       if (!known.count(u.name))
-        fail(name + ":" + std::to_string(u.line), "usemtl " + in_quotes(u.name) + " names no material in the mtllib files");
+        fail(name + ":" + std::to_string(u.line),
+             "usemtl " + in_quotes(u.name) + " names no material in the mtllib files");
   }
 
   // Group triangles by material (-1 = none), keeping tinyobjloader's material order.
@@ -306,7 +309,9 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
     }
   }
 
-  auto position = [&](int v) { return Vec3(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]); };
+  auto position = [&](int v) {
+    return Vec3(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
+  };
   const std::string stem = file.stem().string();
   for (auto& [mat, corners] : groups) {
     bool has_normals = true, has_uvs = true;
@@ -330,7 +335,8 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
       if (added) {
         part.mesh.positions.push_back(position(c.v));
         if (has_normals)
-          part.mesh.normals.push_back({attrib.normals[3 * c.n], attrib.normals[3 * c.n + 1], attrib.normals[3 * c.n + 2]});
+          part.mesh.normals.push_back(
+              {attrib.normals[3 * c.n], attrib.normals[3 * c.n + 1], attrib.normals[3 * c.n + 2]});
         if (has_uvs) part.mesh.uvs.push_back({attrib.texcoords[2 * c.t], attrib.texcoords[2 * c.t + 1]});
       }
       return index;

@@ -31,7 +31,8 @@ std::string crop_window_problem(const FilmDesc& f) {
 std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
   using Setting = SettingsProblem::Setting;
   const AdaptiveDesc& ad = s.sampler.adaptive;
-  if (std::string p = adaptive_spp_problem(ad); !p.empty()) return SettingsProblem{Setting::AdaptiveSpp, "adaptive: " + p};
+  if (std::string p = adaptive_spp_problem(ad); !p.empty())
+    return SettingsProblem{Setting::AdaptiveSpp, "adaptive: " + p};
   if (std::string p = decision_problem(ad, s.film.filter.reconstruction); !p.empty())
     return SettingsProblem{Setting::AdaptiveDecision, "adaptive decision " + p};
   if (std::string p = crop_window_problem(s.film); !p.empty())

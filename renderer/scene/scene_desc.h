@@ -24,9 +24,9 @@ struct CameraKey {
 struct CameraDesc {
   Vec3 position{0, 0, 5}, look_at{0, 0, 0}, up{0, 1, 0};
   float vfov_deg = 40;
-  float aperture_radius = 0;   // 0 = pinhole
-  float focus_distance = 0;    // <= 0 in the file means |look_at - position|; resolved by the loader
-  int aperture_blades = 0;     // 0 = circular aperture, >= 3 = regular polygon
+  float aperture_radius = 0;  // 0 = pinhole
+  float focus_distance = 0;   // <= 0 in the file means |look_at - position|; resolved by the loader
+  int aperture_blades = 0;    // 0 = circular aperture, >= 3 = regular polygon
   float aperture_rotation_deg = 0;
   float shutter_open = 0, shutter_close = 1;
   // The film's x axis runs along up x forward instead of forward x up: the image mirrored left
@@ -48,7 +48,7 @@ enum class FilterType { Box, Tent, Gaussian, Mitchell };
 
 struct FilterDesc {
   FilterType type = FilterType::Gaussian;
-  float radius = 1.5f;             // pixels (Cook's w = 1.5 for the Gaussian)
+  float radius = 1.5f;  // pixels (Cook's w = 1.5 for the Gaussian)
   // Gaussian only: 0 is Cook's radial e^(-d^2) - e^(-w^2); > 0 is pbrt-v4's separable
   // Gaussian of this standard deviation in pixels, (g(x) - g(w)) (g(y) - g(w)).
   float sigma = 0;
@@ -58,7 +58,7 @@ struct FilterDesc {
 struct FilmDesc {
   int width = 512, height = 512;
   FilterDesc filter;
-  float exposure = 0;  // stops: pixel values are scaled by 2^exposure
+  float exposure = 0;               // stops: pixel values are scaled by 2^exposure
   std::string size_where = "film";  // "scene.json:3:21: film.width" for messages about the size
   // pbrt-v4's crop window [x0, x1, y0, y1] in [0, 1] of the film (y down): pixels
   // ceil(width x0) .. ceil(width x1) - 1 etc. are rendered, with the full film's camera and
@@ -83,8 +83,8 @@ struct SamplerDesc {
 };
 
 struct IntegratorDesc {
-  int max_depth = 8;        // path vertices after the camera
-  int rr_depth = 3;         // Russian roulette from this depth on
+  int max_depth = 8;  // path vertices after the camera
+  int rr_depth = 3;   // Russian roulette from this depth on
   // Path regularisation (biased, off by default): after the first non-delta scattering, vertices
   // shade with regularized(material) (render/bsdf.h), which roughens near-specular lobes.
   bool regularize = false;
@@ -92,8 +92,8 @@ struct IntegratorDesc {
 
 struct MeshData {
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;        // per vertex, optional (empty = flat shading)
-  std::vector<uint32_t> indices;    // triangles, 3 per face
+  std::vector<Vec3> normals;      // per vertex, optional (empty = flat shading)
+  std::vector<uint32_t> indices;  // triangles, 3 per face
   // Per vertex, optional (empty: each triangle's barycentric (b1, b2), so vertex 0 is (0, 0),
   // 1 is (1, 0), 2 is (0, 1)). Quads get (0,0) (1,0) (1,1) (0,1) from corner, edge1, edge2.
   std::vector<std::array<float, 2>> uvs;
@@ -101,13 +101,13 @@ struct MeshData {
 
 struct ShapeDesc {
   enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
-  MeshData mesh;                    // Kind::Mesh, in object space
-  Vec3 center{0.0f};                // Kind::Sphere, object space
+  MeshData mesh;      // Kind::Mesh, in object space
+  Vec3 center{0.0f};  // Kind::Sphere, object space
   float radius = 1;
-  int material = 0;                 // index into SceneDesc::materials
-  Affine transform;                 // object to world (static part)
-  std::vector<MotionKey> motion;    // optional: world(t) = interpolate(motion, t) * transform
-  std::string where;                // "scene.json: objects[2]" for messages
+  int material = 0;               // index into SceneDesc::materials
+  Affine transform;               // object to world (static part)
+  std::vector<MotionKey> motion;  // optional: world(t) = interpolate(motion, t) * transform
+  std::string where;              // "scene.json: objects[2]" for messages
 };
 
 // A named group of shapes placed any number of times by instances (docs/scene-format.md,
@@ -118,29 +118,29 @@ struct ShapeDesc {
 struct PrototypeDesc {
   std::string name;
   std::vector<ShapeDesc> shapes;
-  std::string where;                // "scene.json: prototypes.tree" for messages
+  std::string where;  // "scene.json: prototypes.tree" for messages
 };
 
 // One placement of a prototype: world(t) = interpolate(motion, t) * transform * prototype
 // shape's transform, traced as an Embree instance of the prototype's one BVH.
 struct InstanceDesc {
-  int prototype = 0;                // index into SceneDesc::prototypes
-  Affine transform;                 // prototype to world (static part)
-  std::vector<MotionKey> motion;    // optional, as ShapeDesc::motion
-  std::string where;                // "scene.json: objects[4]" for messages
+  int prototype = 0;              // index into SceneDesc::prototypes
+  Affine transform;               // prototype to world (static part)
+  std::vector<MotionKey> motion;  // optional, as ShapeDesc::motion
+  std::string where;              // "scene.json: objects[4]" for messages
 };
 
 // The environment light (docs/scene-format.md, "environment"): a constant radiance, or an
 // equirectangular image (renderer/scene/equirect.h: row 0 is +y, the image centre -z)
 // times `scale`, turned by rotation_deg about +y.
 struct EnvironmentDesc {
-  Vec3 radiance{0.0f};              // constant radiance from every direction (no image)
-  std::string file;                 // the image as found (for messages); empty = constant
-  int width = 0, height = 0;        // texels of the image; 0 = constant
-  std::vector<float> rgb;           // width * height linear RGB, top row first; finite, >= 0
-  Vec3 scale{1.0f};                 // multiplies the image, per channel, >= 0
-  float rotation_deg = 0;           // about +y, counter-clockwise seen from above
-  bool resampled = false;           // rgb is not `file` itself (a pbrt-v4 octahedral map made equirectangular)
+  Vec3 radiance{0.0f};        // constant radiance from every direction (no image)
+  std::string file;           // the image as found (for messages); empty = constant
+  int width = 0, height = 0;  // texels of the image; 0 = constant
+  std::vector<float> rgb;     // width * height linear RGB, top row first; finite, >= 0
+  Vec3 scale{1.0f};           // multiplies the image, per channel, >= 0
+  float rotation_deg = 0;     // about +y, counter-clockwise seen from above
+  bool resampled = false;     // rgb is not `file` itself (a pbrt-v4 octahedral map made equirectangular)
   bool has_map() const { return width > 0 && height > 0; }
 };
 
@@ -153,29 +153,29 @@ struct EnvironmentDesc {
 //            (pbrt-v4's DistantLight `L`)
 struct DeltaLightDesc {
   enum class Kind { Point, Spot, Distant } kind = Kind::Point;
-  Vec3 position{0.0f};             // point, spot: object space
-  Vec3 direction{0, 0, -1};        // unit; spot: the cone's axis (object space); distant: the way light travels (world)
-  Vec3 intensity{0.0f};            // point, spot: W/sr per channel (spot: on its axis)
-  Vec3 irradiance{0.0f};           // distant: W/m^2 per channel on a surface facing the light
-  float cos_cone = -1;             // spot: cosine of the cone's half-angle (nothing past it)
-  float cos_falloff_start = -1;    // spot: cosine of the half-angle where the falloff begins (>= cos_cone)
-  Affine transform;                // point, spot: object to world (static part)
-  std::vector<MotionKey> motion;   // point, spot: world(t) = interpolate(motion, t) * transform
+  Vec3 position{0.0f};            // point, spot: object space
+  Vec3 direction{0, 0, -1};       // unit; spot: the cone's axis (object space); distant: the way light travels (world)
+  Vec3 intensity{0.0f};           // point, spot: W/sr per channel (spot: on its axis)
+  Vec3 irradiance{0.0f};          // distant: W/m^2 per channel on a surface facing the light
+  float cos_cone = -1;            // spot: cosine of the cone's half-angle (nothing past it)
+  float cos_falloff_start = -1;   // spot: cosine of the half-angle where the falloff begins (>= cos_cone)
+  Affine transform;               // point, spot: object to world (static part)
+  std::vector<MotionKey> motion;  // point, spot: world(t) = interpolate(motion, t) * transform
 };
 
 struct SceneDesc {
-  std::filesystem::path file;       // the scene file; relative paths resolve against its directory
+  std::filesystem::path file;  // the scene file; relative paths resolve against its directory
   CameraDesc camera;
   FilmDesc film;
   SamplerDesc sampler;
   IntegratorDesc integrator;
   std::vector<Material> materials;
   std::vector<TextureDesc> textures;  // referred to by Material::textures and by each other
-  std::vector<ShapeDesc> shapes;    // objects and area lights (lights carry emitter materials)
+  std::vector<ShapeDesc> shapes;      // objects and area lights (lights carry emitter materials)
   EnvironmentDesc environment;
   std::vector<DeltaLightDesc> delta_lights;  // point, spot and distant lights
-  int64_t degenerate_triangles = 0; // skipped while loading (the loader warns once)
-  std::vector<PrototypeDesc> prototypes;  // shape groups placed by `instances`
+  int64_t degenerate_triangles = 0;          // skipped while loading (the loader warns once)
+  std::vector<PrototypeDesc> prototypes;     // shape groups placed by `instances`
   std::vector<InstanceDesc> instances;
 };
 

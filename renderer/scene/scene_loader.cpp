@@ -82,7 +82,7 @@ class SceneParser {
   std::map<std::string, int> texture_index_;
   std::vector<std::vector<std::pair<int, JsonNode>>> texture_refs_;  // per texture: (texture it uses, where)
 
-  struct PendingObj {  // OBJ files load after the whole JSON is validated
+  struct PendingObj {   // OBJ files load after the whole JSON is validated
     size_t shape_slot;  // where in scene_.shapes its parts go
     fs::path path;
     JsonNode file;
@@ -237,8 +237,9 @@ void SceneParser::film(const JsonObject& o) {
   if (auto n = o.get("filter")) {
     JsonObject fo = n->object();
     if (auto old = fo.get("selection"))
-      old->fail_key(std::string("was replaced by \"reconstruction\": \"") + reconstruction_name(Reconstruction::Importance) +
-                    "\" (default), \"" + reconstruction_name(Reconstruction::Splat) + "\" or \"" +
+      old->fail_key(std::string("was replaced by \"reconstruction\": \"") +
+                    reconstruction_name(Reconstruction::Importance) + "\" (default), \"" +
+                    reconstruction_name(Reconstruction::Splat) + "\" or \"" +
                     reconstruction_name(Reconstruction::Rank) + "\"");
     fo.allow({"type", "radius", "sigma", "reconstruction"});
     std::string type = "gaussian";
@@ -251,7 +252,8 @@ void SceneParser::film(const JsonObject& o) {
     std::tie(f.filter.type, f.filter.radius) = kinds.at(type);
     if (auto r = fo.get("radius")) f.filter.radius = r->positive();
     if (auto s = fo.get("sigma")) {
-      if (f.filter.type != FilterType::Gaussian) s->fail_key("is a parameter of the \"gaussian\" filter only, not of \"" + type + "\"");
+      if (f.filter.type != FilterType::Gaussian)
+        s->fail_key("is a parameter of the \"gaussian\" filter only, not of \"" + type + "\"");
       f.filter.sigma = s->positive();
     }
     if (auto m = fo.get("reconstruction")) f.filter.reconstruction = m->choice(kReconstructionNames);
@@ -299,7 +301,8 @@ int SceneParser::texture_named(const JsonNode& n) const {
   if (it == texture_index_.end()) {
     std::string known;
     for (const auto& [k, v] : texture_index_) known += std::string(known.empty() ? "" : ", ") + json_quoted(k);
-    n.fail("unknown texture " + json_quoted(name) + (known.empty() ? " (the scene has no \"textures\")" : " (textures: " + known + ")"));
+    n.fail("unknown texture " + json_quoted(name) +
+           (known.empty() ? " (the scene has no \"textures\")" : " (textures: " + known + ")"));
   }
   return it->second;
 }
@@ -348,7 +351,8 @@ void SceneParser::textures(const JsonNode& n) {
         t.scale_u = sn.at(0).positive(), t.scale_v = sn.at(1).positive();
       }
     };
-    std::string type = o.require("type").choice({"constant", "checkerboard", "image", "scale", "mix", "invert", "power"});
+    std::string type =
+        o.require("type").choice({"constant", "checkerboard", "image", "scale", "mix", "invert", "power"});
     if (type == "scale") {
       o.allow({"type", "tex", "scale"});
       t.kind = TextureDesc::Kind::Scale;
@@ -393,20 +397,24 @@ void SceneParser::textures(const JsonNode& n) {
       if (!can_open_file(t.file, reason)) file.fail("cannot open " + json_quoted(file.string()) + ": " + reason);
       if (auto x = o.get("filter")) {
         static const std::map<std::string, TextureFilter> k = {{"none", TextureFilter::None},
-                                                              {"bilinear", TextureFilter::Bilinear},
-                                                              {"trilinear", TextureFilter::Trilinear},
-                                                              {"ewa", TextureFilter::Ewa},
-                                                              {"anisotropic", TextureFilter::Ewa}};
+                                                               {"bilinear", TextureFilter::Bilinear},
+                                                               {"trilinear", TextureFilter::Trilinear},
+                                                               {"ewa", TextureFilter::Ewa},
+                                                               {"anisotropic", TextureFilter::Ewa}};
         t.filter = k.at(x->choice({"none", "bilinear", "trilinear", "ewa", "anisotropic"}));
       }
       if (auto x = o.get("wrap")) {
-        static const std::map<std::string, TextureWrap> k = {
-            {"repeat", TextureWrap::Repeat}, {"clamp", TextureWrap::Clamp}, {"black", TextureWrap::Black}, {"mirror", TextureWrap::Mirror}};
+        static const std::map<std::string, TextureWrap> k = {{"repeat", TextureWrap::Repeat},
+                                                             {"clamp", TextureWrap::Clamp},
+                                                             {"black", TextureWrap::Black},
+                                                             {"mirror", TextureWrap::Mirror}};
         t.wrap = k.at(x->choice({"repeat", "clamp", "black", "mirror"}));
       }
       if (auto x = o.get("encoding")) {
         std::string e = x->choice({"auto", "srgb", "linear"});
-        t.encoding = e == "srgb" ? TextureEncoding::Srgb : e == "linear" ? TextureEncoding::Linear : TextureEncoding::Auto;
+        t.encoding = e == "srgb"     ? TextureEncoding::Srgb
+                     : e == "linear" ? TextureEncoding::Linear
+                                     : TextureEncoding::Auto;
       }
       if (auto x = o.get("scale")) uv_scale(*x);
     }
@@ -415,7 +423,7 @@ void SceneParser::textures(const JsonNode& n) {
   // No cycles (a checkerboard of itself would recurse forever while rendering). Iterative
   // depth-first search: a chain of many textures must not overflow the stack here either.
   std::vector<int> state(scene_.textures.size(), 0);  // 0 new, 1 on the path, 2 done
-  std::vector<int> order;                              // finished: every input before its users
+  std::vector<int> order;                             // finished: every input before its users
   for (size_t root = 0; root < state.size(); ++root) {
     if (state[root]) continue;
     std::vector<std::pair<int, size_t>> stack{{int(root), 0}};  // (texture, next edge)
@@ -443,9 +451,9 @@ void SceneParser::textures(const JsonNode& n) {
   const std::vector<long long> cost = texture_evaluation_cost(scene_.textures, order);
   for (size_t i = 0; i < cost.size(); ++i)
     if (cost[i] > kMaxTextureEvaluation)
-      all.child(scene_.textures[i].name).fail("evaluates " + (cost[i] >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost[i])) +
-                                             " scale/mix/invert/power nodes per lookup (at most " +
-                                             std::to_string(kMaxTextureEvaluation) + ")");
+      all.child(scene_.textures[i].name)
+          .fail("evaluates " + (cost[i] >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost[i])) +
+                " scale/mix/invert/power nodes per lookup (at most " + std::to_string(kMaxTextureEvaluation) + ")");
 }
 
 void SceneParser::textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const {
@@ -473,8 +481,8 @@ void SceneParser::materials(const JsonNode& n) {
     JsonObject o = mn.object();
     Material m;
     m.name = it.key();
-    std::string type = o.require("type").choice(
-        {"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor", "coated_diffuse", "thin_dielectric", "mix"});
+    std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor",
+                                                 "coated_diffuse", "thin_dielectric", "mix"});
     if (type == "diffuse") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Diffuse;
@@ -502,7 +510,8 @@ void SceneParser::materials(const JsonNode& n) {
       }
       if (auto x = o.get("energy_compensation")) {
         m.energy_compensation = x->boolean();
-        if (m.lobe == GlossLobe::Phong) x->fail_key("applies to the GGX lobe (roughness) only, not to exponent (Phong)");
+        if (m.lobe == GlossLobe::Phong)
+          x->fail_key("applies to the GGX lobe (roughness) only, not to exponent (Phong)");
       }
     } else if (type == "mirror") {
       o.allow({"type", "albedo"});
@@ -524,7 +533,8 @@ void SceneParser::materials(const JsonNode& n) {
       o.allow({"type", "materials", "amount"});
       m.type = MaterialType::Mix;
       JsonNode names = o.require("materials");
-      if (!names.value().is_array() || names.value().size() != 2) names.fail_got("must be [\"first\", \"second\"] (two material names)");
+      if (!names.value().is_array() || names.value().size() != 2)
+        names.fail_got("must be [\"first\", \"second\"] (two material names)");
       names.at(0).string(), names.at(1).string();
       mixes.push_back({int(scene_.materials.size()), names});
       if (auto x = o.get("amount")) textured_unit(*x, m, MaterialParam::Amount, m.amount);
@@ -799,11 +809,15 @@ void SceneParser::objects(const JsonNode& n, int prototype) {
         s.mesh.indices.push_back(uint32_t(x.get<uint64_t>()));
       }
       if (auto nn = o.get("normals")) {
-        if (nn->array_size(0) != nv) nn->fail("must have one normal per vertex (" + std::to_string(nv) + "), got " + std::to_string(nn->value().size()));
+        if (nn->array_size(0) != nv)
+          nn->fail("must have one normal per vertex (" + std::to_string(nv) + "), got " +
+                   std::to_string(nn->value().size()));
         for (size_t v = 0; v < nv; ++v) s.mesh.normals.push_back(nn->at(v).nonzero_vec3());
       }
       if (auto un = o.get("uvs")) {
-        if (un->array_size(0) != nv) un->fail("must have one [u, v] per vertex (" + std::to_string(nv) + "), got " + std::to_string(un->value().size()));
+        if (un->array_size(0) != nv)
+          un->fail("must have one [u, v] per vertex (" + std::to_string(nv) + "), got " +
+                   std::to_string(un->value().size()));
         s.mesh.uvs.reserve(nv);
         for (size_t v = 0; v < nv; ++v) {
           JsonNode e = un->at(v);
@@ -866,7 +880,8 @@ void SceneParser::instance(const JsonNode& on, const JsonObject& o) {
   if (it == prototype_index_.end()) {
     std::string known;
     for (const auto& [k, v] : prototype_index_) known += (known.empty() ? "" : ", ") + json_quoted(k);
-    pn.fail_got("is not a prototype (" + (known.empty() ? std::string("the scene has no \"prototypes\"") : "prototypes: " + known) + ")");
+    pn.fail_got("is not a prototype (" +
+                (known.empty() ? std::string("the scene has no \"prototypes\"") : "prototypes: " + known) + ")");
   }
   InstanceDesc d;
   d.prototype = it->second;
@@ -937,8 +952,9 @@ void SceneParser::environment_light(const JsonNode& ln, const JsonObject& o) {
   if (!path) {
     const fs::path assets = generated_asset_dir();
     file->fail("cannot open " + json_quoted(name) + ": no such file in the scene's directory" +
-               (assets.empty() || fs::path(name).is_absolute() ? std::string()
-                                                              : " or the generated assets " + json_quoted(assets.string())));
+               (assets.empty() || fs::path(name).is_absolute()
+                    ? std::string()
+                    : " or the generated assets " + json_quoted(assets.string())));
   }
   EnvironmentImage image;
   std::string reason;
@@ -950,8 +966,8 @@ void SceneParser::environment_light(const JsonNode& ln, const JsonObject& o) {
     const std::size_t t = i / 3;
     std::ostringstream m;
     m << json_quoted(name) << " has " << (std::isfinite(v) ? "a negative value " : "a non-finite value ") << v
-      << " at texel (" << t % std::size_t(image.width) << ", " << t / std::size_t(image.width) << ") channel "
-      << i % 3 << ": an environment image must be finite and >= 0";
+      << " at texel (" << t % std::size_t(image.width) << ", " << t / std::size_t(image.width) << ") channel " << i % 3
+      << ": an environment image must be finite and >= 0";
     file->fail(m.str());
   }
   e.file = path->string();
@@ -1039,9 +1055,8 @@ void SceneParser::delta_light(const JsonNode& ln, const JsonObject& o, const std
 
 bool same_material(const Material& a, const Material& b) {
   return a.name == b.name && a.type == b.type && is_black(a.albedo - b.albedo) && a.lobe == b.lobe &&
-         a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior &&
-         is_black(a.eta - b.eta) && is_black(a.k - b.k) && is_black(a.coat_color - b.coat_color) &&
-         a.coat_thickness == b.coat_thickness &&
+         a.roughness == b.roughness && a.exponent == b.exponent && a.ior == b.ior && is_black(a.eta - b.eta) &&
+         is_black(a.k - b.k) && is_black(a.coat_color - b.coat_color) && a.coat_thickness == b.coat_thickness &&
          is_black(a.radiance - b.radiance) && a.two_sided == b.two_sided &&
          a.energy_compensation == b.energy_compensation && a.textures == b.textures;
 }
@@ -1053,9 +1068,9 @@ void SceneParser::load_objs() {
     scene_.degenerate_triangles += model.degenerate_triangles;
     if (model.parts.empty())
       p->file.fail(json_quoted(p->file.string()) + " has no triangles" +
-                   (model.degenerate_triangles ? " (all " + std::to_string(model.degenerate_triangles) +
-                                                     " are degenerate)"
-                                               : " (no f lines)"));
+                   (model.degenerate_triangles
+                        ? " (all " + std::to_string(model.degenerate_triangles) + " are degenerate)"
+                        : " (no f lines)"));
     std::vector<ShapeDesc> shapes;
     std::vector<ShapeDesc>& out = p->prototype >= 0 ? scene_.prototypes[size_t(p->prototype)].shapes : scene_.shapes;
     for (ObjPart& part : model.parts) {
@@ -1105,8 +1120,8 @@ SceneDesc load_scene(const fs::path& file, bool strict) {
   scene.file = file;
   check_render_settings(scene);
   if (scene.degenerate_triangles > 0)
-    warn(printable(doc.name()) + ": warning: skipped " + std::to_string(scene.degenerate_triangles) + " degenerate triangle" +
-         (scene.degenerate_triangles == 1 ? "" : "s"));
+    warn(printable(doc.name()) + ": warning: skipped " + std::to_string(scene.degenerate_triangles) +
+         " degenerate triangle" + (scene.degenerate_triangles == 1 ? "" : "s"));
   return scene;
 }
 

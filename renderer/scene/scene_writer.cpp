@@ -69,27 +69,38 @@ ojson texture_input(const TextureInput& in) {
 
 const char* filter_name(TextureFilter f) {
   switch (f) {
-    case TextureFilter::None: return "none";
-    case TextureFilter::Bilinear: return "bilinear";
-    case TextureFilter::Trilinear: return "trilinear";
-    default: return "ewa";
+    case TextureFilter::None:
+      return "none";
+    case TextureFilter::Bilinear:
+      return "bilinear";
+    case TextureFilter::Trilinear:
+      return "trilinear";
+    default:
+      return "ewa";
   }
 }
 
 const char* wrap_name(TextureWrap w) {
   switch (w) {
-    case TextureWrap::Repeat: return "repeat";
-    case TextureWrap::Clamp: return "clamp";
-    case TextureWrap::Black: return "black";
-    default: return "mirror";
+    case TextureWrap::Repeat:
+      return "repeat";
+    case TextureWrap::Clamp:
+      return "clamp";
+    case TextureWrap::Black:
+      return "black";
+    default:
+      return "mirror";
   }
 }
 
 const char* encoding_name(TextureEncoding e) {
   switch (e) {
-    case TextureEncoding::Srgb: return "srgb";
-    case TextureEncoding::Linear: return "linear";
-    default: return "auto";
+    case TextureEncoding::Srgb:
+      return "srgb";
+    case TextureEncoding::Linear:
+      return "linear";
+    default:
+      return "auto";
   }
 }
 
@@ -117,16 +128,26 @@ ojson material(const Material& m) {
       j = {{"type", "mirror"}, {"albedo", vec(unit(m.albedo))}};
       break;
     case MaterialType::Dielectric:
-      j = {{"type", "dielectric"}, {"albedo", vec(unit(m.albedo))}, {"ior", m.ior}, {"roughness", m.roughness},
+      j = {{"type", "dielectric"},
+           {"albedo", vec(unit(m.albedo))},
+           {"ior", m.ior},
+           {"roughness", m.roughness},
            {"energy_compensation", m.energy_compensation}};
       break;
     case MaterialType::Conductor:
-      j = {{"type", "conductor"}, {"eta", vec(m.eta)}, {"k", vec(m.k)}, {"roughness", m.roughness},
+      j = {{"type", "conductor"},
+           {"eta", vec(m.eta)},
+           {"k", vec(m.k)},
+           {"roughness", m.roughness},
            {"energy_compensation", m.energy_compensation}};
       break;
     case MaterialType::CoatedDiffuse:
-      j = {{"type", "coated_diffuse"}, {"albedo", vec(unit(m.albedo))}, {"roughness", m.roughness}, {"ior", m.ior},
-           {"coat_color", vec(unit(m.coat_color))}, {"coat_thickness", m.coat_thickness}};
+      j = {{"type", "coated_diffuse"},
+           {"albedo", vec(unit(m.albedo))},
+           {"roughness", m.roughness},
+           {"ior", m.ior},
+           {"coat_color", vec(unit(m.coat_color))},
+           {"coat_thickness", m.coat_thickness}};
       break;
     case MaterialType::Emitter:
       j = {{"type", "emitter"}, {"radiance", vec(m.radiance)}, {"two_sided", m.two_sided}};
@@ -135,20 +156,29 @@ ojson material(const Material& m) {
       j = {{"type", "thin_dielectric"}, {"albedo", vec(unit(m.albedo))}, {"ior", m.ior}};
       break;
     case MaterialType::Mix:
-      j = {{"type", "mix"}, {"materials", ojson::array({numbered('m', size_t(m.mix[0])), numbered('m', size_t(m.mix[1]))})},
+      j = {{"type", "mix"},
+           {"materials", ojson::array({numbered('m', size_t(m.mix[0])), numbered('m', size_t(m.mix[1]))})},
            {"amount", std::clamp(m.amount, 0.0f, 1.0f)}};
       break;
   }
   for (const TextureBinding& b : m.textures) {
     switch (b.param) {
-      case MaterialParam::Albedo: j["albedo"] = texture_name(b.texture); break;
-      case MaterialParam::Roughness: j["roughness"] = texture_name(b.texture); break;
-      case MaterialParam::CoatColor: j["coat_color"] = texture_name(b.texture); break;
+      case MaterialParam::Albedo:
+        j["albedo"] = texture_name(b.texture);
+        break;
+      case MaterialParam::Roughness:
+        j["roughness"] = texture_name(b.texture);
+        break;
+      case MaterialParam::CoatColor:
+        j["coat_color"] = texture_name(b.texture);
+        break;
       case MaterialParam::Radiance:
         j["radiance"] = texture_name(b.texture);
         j["scale"] = vec(m.radiance);
         break;
-      case MaterialParam::Amount: j["amount"] = texture_name(b.texture); break;
+      case MaterialParam::Amount:
+        j["amount"] = texture_name(b.texture);
+        break;
       case MaterialParam::Reflectance:
         j.erase("eta"), j.erase("k");  // the loader takes reflectance instead of them
         j["reflectance"] = texture_name(b.texture);
@@ -204,16 +234,22 @@ ojson inline_mesh(const MeshData& mesh) {
   return o;
 }
 
-
 ojson camera_json(const CameraDesc& c) {
-  ojson cam = {{"position", vec(c.position)}, {"look_at", vec(c.look_at)}, {"up", vec(c.up)},
-               {"vfov_deg", c.vfov_deg}, {"aperture_radius", c.aperture_radius}};
+  ojson cam = {{"position", vec(c.position)},
+               {"look_at", vec(c.look_at)},
+               {"up", vec(c.up)},
+               {"vfov_deg", c.vfov_deg},
+               {"aperture_radius", c.aperture_radius}};
   if (c.focus_distance > 0) cam["focus_distance"] = c.focus_distance;
-  if (c.aperture_blades) cam["aperture_blades"] = c.aperture_blades, cam["aperture_rotation_deg"] = c.aperture_rotation_deg;
+  if (c.aperture_blades)
+    cam["aperture_blades"] = c.aperture_blades, cam["aperture_rotation_deg"] = c.aperture_rotation_deg;
   cam["shutter"] = ojson::array({c.shutter_open, c.shutter_close});
   if (c.flip_x) cam["flip_x"] = true;
-  if (c.projection == CameraDesc::Projection::Orthographic) cam["type"] = "orthographic", cam["ortho_height"] = c.ortho_height;
-  if (c.has_screen_window) cam["screen_window"] = ojson::array({c.screen_window[0], c.screen_window[1], c.screen_window[2], c.screen_window[3]});
+  if (c.projection == CameraDesc::Projection::Orthographic)
+    cam["type"] = "orthographic", cam["ortho_height"] = c.ortho_height;
+  if (c.has_screen_window)
+    cam["screen_window"] =
+        ojson::array({c.screen_window[0], c.screen_window[1], c.screen_window[2], c.screen_window[3]});
   if (!c.motion.empty()) {
     cam["motion"] = ojson::array();
     for (const CameraKey& k : c.motion)
@@ -225,18 +261,25 @@ ojson camera_json(const CameraDesc& c) {
 // Film, sampler and integrator.
 void write_render_options(const SceneDesc& s, ojson& j) {
   static const char* kFilters[] = {"box", "tent", "gaussian", "mitchell"};
-  j["film"] = {{"width", s.film.width}, {"height", s.film.height},
-               {"filter", {{"type", kFilters[int(s.film.filter.type)]}, {"radius", s.film.filter.radius},
-                           {"reconstruction", reconstruction_name(s.film.filter.reconstruction)}}},
+  j["film"] = {{"width", s.film.width},
+               {"height", s.film.height},
+               {"filter",
+                {{"type", kFilters[int(s.film.filter.type)]},
+                 {"radius", s.film.filter.radius},
+                 {"reconstruction", reconstruction_name(s.film.filter.reconstruction)}}},
                {"exposure", s.film.exposure}};
   if (s.film.filter.sigma > 0) j["film"]["filter"]["sigma"] = s.film.filter.sigma;
   if (s.film.crop_window != std::array<float, 4>{0, 1, 0, 1})
-    j["film"]["crop_window"] = ojson::array({s.film.crop_window[0], s.film.crop_window[1], s.film.crop_window[2], s.film.crop_window[3]});
+    j["film"]["crop_window"] =
+        ojson::array({s.film.crop_window[0], s.film.crop_window[1], s.film.crop_window[2], s.film.crop_window[3]});
   ojson sampler = {{"type", s.sampler.type}, {"spp", s.sampler.spp}, {"seed", s.sampler.seed}};
   if (s.sampler.adaptive.enabled) {
     const AdaptiveDesc& a = s.sampler.adaptive;
-    sampler["adaptive"] = {{"min_spp", a.min_spp}, {"max_spp", a.max_spp}, {"metric", adaptive_metric_name(a.metric)},
-                           {"variance", adaptive_variance_name(a.variance)}, {"decision", adaptive_decision_name(a.decision)}};
+    sampler["adaptive"] = {{"min_spp", a.min_spp},
+                           {"max_spp", a.max_spp},
+                           {"metric", adaptive_metric_name(a.metric)},
+                           {"variance", adaptive_variance_name(a.variance)},
+                           {"decision", adaptive_decision_name(a.decision)}};
     if (a.threshold > 0) sampler["adaptive"]["threshold"] = a.threshold;
   }
   j["sampler"] = sampler;
@@ -252,17 +295,23 @@ ojson textures_json(const SceneDesc& s) {
     if (t.kind == TextureDesc::Kind::Constant) {
       o = {{"type", "constant"}, {"value", vec(unit(t.value))}};
     } else if (t.kind == TextureDesc::Kind::Checkerboard) {
-      o = {{"type", "checkerboard"}, {"scale", ojson::array({t.scale_u, t.scale_v})},
-           {"color0", texture_input(t.color0)}, {"color1", texture_input(t.color1)}};
+      o = {{"type", "checkerboard"},
+           {"scale", ojson::array({t.scale_u, t.scale_v})},
+           {"color0", texture_input(t.color0)},
+           {"color1", texture_input(t.color1)}};
     } else if (t.kind == TextureDesc::Kind::Image) {
-      o = {{"type", "image"}, {"file", fs::absolute(t.file).string()}, {"filter", filter_name(t.filter)},
-           {"wrap", wrap_name(t.wrap)}, {"encoding", encoding_name(t.encoding)},
+      o = {{"type", "image"},
+           {"file", fs::absolute(t.file).string()},
+           {"filter", filter_name(t.filter)},
+           {"wrap", wrap_name(t.wrap)},
+           {"encoding", encoding_name(t.encoding)},
            {"scale", ojson::array({t.scale_u, t.scale_v})}};
     } else if (t.kind == TextureDesc::Kind::Scale) {
       o = {{"type", "scale"}, {"tex", texture_input(t.tex)}, {"scale", texture_input(t.scale)}};
     } else if (t.kind == TextureDesc::Kind::Mix) {
       o = {{"type", "mix"}, {"tex1", texture_input(t.tex1)}, {"tex2", texture_input(t.tex2)}};
-      o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture)) : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
+      o["amount"] = t.amount.texture >= 0 ? ojson(texture_name(t.amount.texture))
+                                          : ojson(std::clamp(t.amount.value.x, 0.0f, 1.0f));
     } else if (t.kind == TextureDesc::Kind::Invert) {
       o = {{"type", "invert"}, {"tex", texture_input(t.tex)}};
     } else {
@@ -306,7 +355,8 @@ ojson objects_json(const SceneDesc& s, const fs::path& json_file, const SceneWri
     for (size_t p = 0; p < s.prototypes.size(); ++p) {
       ojson shapes = ojson::array();
       for (size_t k = 0; k < s.prototypes[p].shapes.size(); ++k)
-        shapes.push_back(shape_object(s.prototypes[p].shapes[k], numbered('p', p) + "_shape" + std::to_string(k) + ".obj"));
+        shapes.push_back(
+            shape_object(s.prototypes[p].shapes[k], numbered('p', p) + "_shape" + std::to_string(k) + ".obj"));
       protos[numbered('p', p)] = shapes;
     }
     j["prototypes"] = protos;
@@ -333,7 +383,8 @@ ojson lights_json(const SceneDesc& s, const fs::path& json_file) {
     if (l.kind == DeltaLightDesc::Kind::Distant) {
       o = {{"type", "distant"}, {"direction", vec(l.direction)}, {"irradiance", vec(l.irradiance)}};
     } else {
-      o = {{"type", l.kind == DeltaLightDesc::Kind::Point ? "point" : "spot"}, {"position", vec(l.position)},
+      o = {{"type", l.kind == DeltaLightDesc::Kind::Point ? "point" : "spot"},
+           {"position", vec(l.position)},
            {"intensity", vec(l.intensity)}};
       if (l.kind == DeltaLightDesc::Kind::Spot) {
         o["direction"] = vec(l.direction);
@@ -353,8 +404,8 @@ ojson lights_json(const SceneDesc& s, const fs::path& json_file) {
       write_linear_rgb(exr, e.width, e.height, e.rgb, {{"pdrt:source", e.file}});
       file = exr.filename().string();
     }
-    lights.push_back({{"type", "environment"}, {"file", file}, {"scale", vec(e.scale)},
-                      {"rotation_deg", e.rotation_deg}});
+    lights.push_back(
+        {{"type", "environment"}, {"file", file}, {"scale", vec(e.scale)}, {"rotation_deg", e.rotation_deg}});
   } else if (!is_black(e.radiance)) {
     lights.push_back({{"type", "environment"}, {"radiance", vec(e.radiance)}});
   }

@@ -18,6 +18,7 @@ struct SceneWriteOptions {
 };
 
 // Throws InputError (what cannot be written, or what the format cannot say) naming the file.
-void write_scene_json(const SceneDesc& scene, const std::filesystem::path& json_file, const SceneWriteOptions& options = {});
+void write_scene_json(const SceneDesc& scene, const std::filesystem::path& json_file,
+                      const SceneWriteOptions& options = {});
 
 }  // namespace pdrt

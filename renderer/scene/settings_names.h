@@ -30,12 +30,12 @@ inline constexpr NamedValue<AdaptiveMetricKind> kAdaptiveMetricNames[] = {
 // variance: how the variance of a pixel's mean is estimated.
 enum class AdaptiveVariance { Samples, Halves };
 inline constexpr NamedValue<AdaptiveVariance> kAdaptiveVarianceNames[] = {{AdaptiveVariance::Samples, "samples"},
-                                                                         {AdaptiveVariance::Halves, "halves"}};
+                                                                          {AdaptiveVariance::Halves, "halves"}};
 // decision: shared, every sample both decides and estimates (Kirk-Arvo biased); split, odd
 // samples decide, even samples estimate (unbiased, half the samples in the image).
 enum class AdaptiveDecision { Shared, Split };
 inline constexpr NamedValue<AdaptiveDecision> kAdaptiveDecisionNames[] = {{AdaptiveDecision::Shared, "shared"},
-                                                                         {AdaptiveDecision::Split, "split"}};
+                                                                          {AdaptiveDecision::Split, "split"}};
 
 static_assert(covers_in_order(kReconstructionNames) && std::size(kReconstructionNames) == 3);
 static_assert(covers_in_order(kAdaptiveMetricNames) && std::size(kAdaptiveMetricNames) == 3);

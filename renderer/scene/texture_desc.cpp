@@ -10,12 +10,21 @@ std::vector<int> texture_inputs(const TextureDesc& t) {
     if (in.texture >= 0) out.push_back(in.texture);
   };
   switch (t.kind) {
-    case TextureDesc::Kind::Checkerboard: add(t.color0), add(t.color1); break;
-    case TextureDesc::Kind::Scale: add(t.tex), add(t.scale); break;
-    case TextureDesc::Kind::Mix: add(t.tex1), add(t.tex2), add(t.amount); break;
+    case TextureDesc::Kind::Checkerboard:
+      add(t.color0), add(t.color1);
+      break;
+    case TextureDesc::Kind::Scale:
+      add(t.tex), add(t.scale);
+      break;
+    case TextureDesc::Kind::Mix:
+      add(t.tex1), add(t.tex2), add(t.amount);
+      break;
     case TextureDesc::Kind::Invert:
-    case TextureDesc::Kind::Power: add(t.tex); break;
-    default: break;
+    case TextureDesc::Kind::Power:
+      add(t.tex);
+      break;
+    default:
+      break;
   }
   return out;
 }
@@ -33,7 +42,8 @@ long long texture_node_cost(const TextureDesc& t, const std::vector<long long>& 
   return std::min(c, 1LL << 40);  // saturates: a deep diamond graph doubles per level
 }
 
-std::vector<long long> texture_evaluation_cost(const std::vector<TextureDesc>& textures, const std::vector<int>& order) {
+std::vector<long long> texture_evaluation_cost(const std::vector<TextureDesc>& textures,
+                                               const std::vector<int>& order) {
   std::vector<long long> cost(textures.size(), 0);
   if (order.empty()) {
     for (size_t i = 0; i < textures.size(); ++i) cost[i] = texture_node_cost(textures[i], cost);

@@ -29,17 +29,17 @@ enum class TextureEncoding { Auto, Srgb, Linear };  // Auto: sRGB for 8/16-bit i
 struct TextureDesc {
   enum class Kind { Constant, Checkerboard, Image, Scale, Mix, Invert, Power } kind = Kind::Constant;
   std::string name;
-  std::string where;        // "scene.json:12:5: textures.checks" for messages raised later
-  Vec3 value{0.0f};         // Constant
+  std::string where;               // "scene.json:12:5: textures.checks" for messages raised later
+  Vec3 value{0.0f};                // Constant
   float scale_u = 1, scale_v = 1;  // Checkerboard: checks per unit uv; Image: repeats per unit uv
   TextureInput color0, color1;     // Checkerboard: even and odd checks
   std::filesystem::path file;      // Image, resolved against the scene's directory
   TextureFilter filter = TextureFilter::Bilinear;
   TextureWrap wrap = TextureWrap::Repeat;
   TextureEncoding encoding = TextureEncoding::Auto;
-  TextureInput tex{Vec3(1.0f)}, scale{Vec3(1.0f)};  // Scale; Invert and Power use tex
+  TextureInput tex{Vec3(1.0f)}, scale{Vec3(1.0f)};                      // Scale; Invert and Power use tex
   TextureInput tex1{Vec3(0.0f)}, tex2{Vec3(1.0f)}, amount{Vec3(0.5f)};  // Mix
-  float exponent = 1;  // Power
+  float exponent = 1;                                                   // Power
 };
 
 // The texture's inputs that are textures (for graph checks and writers).

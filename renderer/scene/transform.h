@@ -16,7 +16,7 @@ struct Affine {
   static Affine rotate(const Vec3& axis, float degrees);  // axis need not be unit, must be non-zero
   Vec3 point(const Vec3& p) const;
   Vec3 vector(const Vec3& v) const;
-  Vec3 normal(const Vec3& n) const;  // by the inverse transpose; not normalised
+  Vec3 normal(const Vec3& n) const;            // by the inverse transpose; not normalised
   Vec3 transpose_vector(const Vec3& v) const;  // M^T v (of the 3x3 part): inverse().transpose_vector is normal()
   Affine inverse() const;
   float determinant() const;

@@ -13,10 +13,22 @@ struct Vec3 {
   constexpr float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
   float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
-  Vec3& operator+=(const Vec3& o) { x += o.x, y += o.y, z += o.z; return *this; }
-  Vec3& operator-=(const Vec3& o) { x -= o.x, y -= o.y, z -= o.z; return *this; }
-  Vec3& operator*=(const Vec3& o) { x *= o.x, y *= o.y, z *= o.z; return *this; }
-  Vec3& operator*=(float s) { x *= s, y *= s, z *= s; return *this; }
+  Vec3& operator+=(const Vec3& o) {
+    x += o.x, y += o.y, z += o.z;
+    return *this;
+  }
+  Vec3& operator-=(const Vec3& o) {
+    x -= o.x, y -= o.y, z -= o.z;
+    return *this;
+  }
+  Vec3& operator*=(const Vec3& o) {
+    x *= o.x, y *= o.y, z *= o.z;
+    return *this;
+  }
+  Vec3& operator*=(float s) {
+    x *= s, y *= s, z *= s;
+    return *this;
+  }
   Vec3& operator/=(float s) { return *this *= 1.0f / s; }
 };
 

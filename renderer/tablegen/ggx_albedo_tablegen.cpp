@@ -106,7 +106,8 @@ int main(int argc, char** argv) {
       for (int j = 0; j < kDielRough; ++j) {
         for (int i = 0; i < kDielMu; ++i) {
           double r = 0;
-          de[side][k][j][i] = float(dielectric_albedo(mu_node(i, kDielMu), alpha_at(rough_node(j, kDielRough)), eta, 40, &r));
+          de[side][k][j][i] =
+              float(dielectric_albedo(mu_node(i, kDielMu), alpha_at(rough_node(j, kDielRough)), eta, 40, &r));
           if (side == 0) re[k][j][i] = float(r);
         }
         da[side][k][j] = float(cosine_average(de[side][k][j], kDielMu));

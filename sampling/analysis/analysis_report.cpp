@@ -129,7 +129,8 @@ FileStats analyze_point_set(const PointSet& points, const std::string& name, boo
   s.relative_radius = relative_radius(s.min_distance, s.count, s.dim);
   s.empty = max_empty_ball(points, periodic);
   s.disk_radius_from_csv = points.has_radius();
-  s.disk_radius = s.disk_radius_from_csv ? *std::min_element(points.radius.begin(), points.radius.end()) : s.min_distance;
+  s.disk_radius =
+      s.disk_radius_from_csv ? *std::min_element(points.radius.begin(), points.radius.end()) : s.min_distance;
   // Maximal: no point of the domain is farther than disk_radius from every sample. The
   // tolerance covers CSVs rounded to 9 significant digits (pdrt's own are exact since issue 13).
   const double tolerance = 1e-6 * s.disk_radius + 2e-9 * std::sqrt(double(s.dim));
@@ -141,7 +142,8 @@ FileStats analyze_point_set(const PointSet& points, const std::string& name, boo
 Analysis analyze_point_sets(std::span<const PointSet> sets, std::span<const std::string> names,
                             const AnalysisOptions& options) {
   Analysis a;
-  const int resolution = resolve_resolution(sets, options.resolution ? std::optional<int>(options.resolution) : std::nullopt);
+  const int resolution =
+      resolve_resolution(sets, options.resolution ? std::optional<int>(options.resolution) : std::nullopt);
   std::vector<FileStats> stats;
   for (std::size_t i = 0; i < sets.size(); ++i) stats.push_back(analyze_point_set(sets[i], names[i], options.periodic));
 
@@ -159,9 +161,11 @@ Analysis analyze_point_sets(std::span<const PointSet> sets, std::span<const std:
       {"frequency_unit",
        "frequency: cycles per unit length; frequency_normalized: frequency / mean_count^(1/spectral_dim), "
        "i.e. in units of the mean sample spacing"},
-      {"db", "10*log10 of power (and of anisotropy s^2/P^2): white noise power 1 = 0 dB; McCool & Fiume 1992 "
-             "section 2 write -20*log10(x)"},
-      {"anisotropy_white_noise_db", pg.spectral_dim == 2 ? json(round_sig9(-10.0 * std::log10(double(K)))) : json(nullptr)},
+      {"db",
+       "10*log10 of power (and of anisotropy s^2/P^2): white noise power 1 = 0 dB; McCool & Fiume 1992 "
+       "section 2 write -20*log10(x)"},
+      {"anisotropy_white_noise_db",
+       pg.spectral_dim == 2 ? json(round_sig9(-10.0 * std::log10(double(K)))) : json(nullptr)},
       {"annuli", radial_json(equal_annuli(pg, 20), pg)},
       {"fine_annuli", radial_json(fine_annuli(pg), pg)},
   };

@@ -33,10 +33,10 @@ struct FileStats {
   int dim = 0;
   double min_distance = 0.0;
   double relative_radius = 0.0;
-  double disk_radius = 0.0;         // smallest CSV radius if present, else min_distance
+  double disk_radius = 0.0;  // smallest CSV radius if present, else min_distance
   bool disk_radius_from_csv = false;
   EmptyBall empty;
-  bool maximal = false;             // empty.radius <= disk_radius (up to CSV rounding)
+  bool maximal = false;  // empty.radius <= disk_radius (up to CSV rounding)
   ChiSquare chi2;
 };
 

@@ -8,13 +8,13 @@
 namespace pdrt {
 
 struct ChiSquare {
-  bool valid = false;        // false when N < 10 (fewer than two cells with 5 expected)
+  bool valid = false;  // false when N < 10 (fewer than two cells with 5 expected)
   int bins_per_axis = 0;
   int64_t bins = 0;
-  double expected = 0.0;     // per cell
+  double expected = 0.0;  // per cell
   double statistic = 0.0;
-  int64_t dof = 0;           // bins - 1
-  double p = 0.0;            // upper tail: small = clumped; near 1 = more even than random
+  int64_t dof = 0;  // bins - 1
+  double p = 0.0;   // upper tail: small = clumped; near 1 = more even than random
 };
 
 ChiSquare chi_square_uniformity(const PointSet& points);

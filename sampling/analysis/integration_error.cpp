@@ -36,7 +36,8 @@ double rmse_over_trials(int64_t n, int trials, double exact, Value&& value) {
 }  // namespace
 
 double integration_rmse(const Sampler& s, const Integrand& f, int64_t n, int trials, Family family) {
-  return rmse_over_trials(n, trials, f.exact, [&](int t, int64_t i) { return f.f(s.get_2d(t % 64, t / 64, i, family, 0)); });
+  return rmse_over_trials(n, trials, f.exact,
+                          [&](int t, int64_t i) { return f.f(s.get_2d(t % 64, t / 64, i, family, 0)); });
 }
 
 const std::vector<Integrand1D>& time_integrands() {
@@ -48,7 +49,8 @@ const std::vector<Integrand1D>& time_integrands() {
 }
 
 double integration_rmse_1d(const Sampler& s, const Integrand1D& f, int64_t n, int trials) {
-  return rmse_over_trials(n, trials, f.exact, [&](int t, int64_t i) { return f.f(s.get_1d(t % 64, t / 64, i, Family::Time, 0)); });
+  return rmse_over_trials(n, trials, f.exact,
+                          [&](int t, int64_t i) { return f.f(s.get_1d(t % 64, t / 64, i, Family::Time, 0)); });
 }
 
 }  // namespace pdrt

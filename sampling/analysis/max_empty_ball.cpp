@@ -214,7 +214,8 @@ struct Climber {
       for (const auto& h : hits) {
         double norm = std::sqrt(h.dist_sq);
         if (norm <= 0.0) continue;
-        for (int k = 0; k < dim; ++k) g.push_back(axis_delta(x[k], points.coords[std::size_t(h.id) * dim + k], periodic) / norm);
+        for (int k = 0; k < dim; ++k)
+          g.push_back(axis_delta(x[k], points.coords[std::size_t(h.id) * dim + k], periodic) / norm);
       }
       if (g.empty()) break;
       // Not periodic: on a face of the cube, drop the components that would leave it.

@@ -11,11 +11,11 @@
 namespace pdrt {
 
 struct EmptyBall {
-  double radius = 0.0;          // distance from `center` to the nearest sample
-  std::vector<double> center;   // in [0,1]^dim (wrapped into [0,1) when periodic)
-  std::string method;           // "exact-1d", "voronoi-2d" or "probe-ascent"
-  bool exact = false;           // false: a lower bound from probing plus local ascent
-  std::size_t probes = 0;       // probe-ascent only
+  double radius = 0.0;         // distance from `center` to the nearest sample
+  std::vector<double> center;  // in [0,1]^dim (wrapped into [0,1) when periodic)
+  std::string method;          // "exact-1d", "voronoi-2d" or "probe-ascent"
+  bool exact = false;          // false: a lower bound from probing plus local ascent
+  std::size_t probes = 0;      // probe-ascent only
 };
 
 // 1-D: largest gap (exact). 2-D: exact, from the Voronoi vertices (cells clipped cell by cell,

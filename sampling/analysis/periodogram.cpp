@@ -49,7 +49,8 @@ Periodogram compute_periodogram(std::span<const PointSet> sets, int resolution) 
   pg.power.assign(rows * std::size_t(R), 0.0);
 
   std::unique_ptr<double, FftwFree> in(static_cast<double*>(fftw_malloc(sizeof(double) * rows * R)));
-  std::unique_ptr<fftw_complex, FftwFree> out(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * rows * half)));
+  std::unique_ptr<fftw_complex, FftwFree> out(
+      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * rows * half)));
   if (!in || !out) throw std::bad_alloc();
   fftw_plan plan;
   {

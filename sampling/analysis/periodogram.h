@@ -13,10 +13,10 @@
 namespace pdrt {
 
 struct Periodogram {
-  int spectral_dim = 2;      // 1 or 2
-  int resolution = 0;        // R: the grid is R (1-D) or R×R (2-D)
+  int spectral_dim = 2;  // 1 or 2
+  int resolution = 0;    // R: the grid is R (1-D) or R×R (2-D)
   int realizations = 0;
-  double mean_count = 0.0;   // mean N over the realizations
+  double mean_count = 0.0;  // mean N over the realizations
   // Centred layout: frequency (kx, ky) in [-R/2, R/2) is at (ky + R/2) * R + (kx + R/2)
   // (2-D) or kx + R/2 (1-D), in cycles per unit length.
   std::vector<double> power;

@@ -15,9 +15,9 @@
 namespace pdrt {
 
 struct RadialSpectrum {
-  std::vector<double> frequency;             // annulus centre radius, cycles per unit length
-  std::vector<double> inner, outer;          // annulus bounds (inner inclusive)
-  std::vector<int64_t> pixels;               // periodogram samples in the annulus (DC excluded)
+  std::vector<double> frequency;     // annulus centre radius, cycles per unit length
+  std::vector<double> inner, outer;  // annulus bounds (inner inclusive)
+  std::vector<int64_t> pixels;       // periodogram samples in the annulus (DC excluded)
   std::vector<double> power, variance, anisotropy;
 };
 

@@ -71,7 +71,8 @@ nlohmann::json table_quality(const SampleTable& t, const std::vector<PointSet>& 
     // and of the whole table.
     nlohmann::json d;
     std::vector<std::size_t> sizes = {64, 256, 1024};
-    sizes.erase(std::remove_if(sizes.begin(), sizes.end(), [&](std::size_t n) { return n >= t.params.points; }), sizes.end());
+    sizes.erase(std::remove_if(sizes.begin(), sizes.end(), [&](std::size_t n) { return n >= t.params.points; }),
+                sizes.end());
     sizes.push_back(t.params.points);
     for (std::size_t n : sizes) {
       double worst = 0.0;

@@ -43,7 +43,8 @@ void check_writable(const fs::path& path) {
     throw InputError(path.string() + ": cannot create directory '" + dir.string() + "': '" + base.string() +
                      "' is not a directory");
   if (::access(base.c_str(), W_OK) != 0)
-    throw InputError(path.string() + ": directory '" + base.string() + "' is not writable (" + std::strerror(errno) + ")");
+    throw InputError(path.string() + ": directory '" + base.string() + "' is not writable (" + std::strerror(errno) +
+                     ")");
 }
 
 void write_path_atomically(const fs::path& path, const std::function<void(const fs::path&)>& writer) {

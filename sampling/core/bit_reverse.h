@@ -11,6 +11,8 @@ inline uint32_t reverse_bits32(uint32_t x) {
   return ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
 }
 
-inline uint64_t reverse_bits64(uint64_t x) { return uint64_t(reverse_bits32(uint32_t(x))) << 32 | reverse_bits32(uint32_t(x >> 32)); }
+inline uint64_t reverse_bits64(uint64_t x) {
+  return uint64_t(reverse_bits32(uint32_t(x))) << 32 | reverse_bits32(uint32_t(x >> 32));
+}
 
 }  // namespace pdrt

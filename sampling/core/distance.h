@@ -10,8 +10,10 @@ namespace pdrt {
 inline double axis_delta(double a, double b, bool periodic) {
   double d = a - b;
   if (periodic) {
-    if (d > 0.5) d -= 1.0;
-    else if (d < -0.5) d += 1.0;
+    if (d > 0.5)
+      d -= 1.0;
+    else if (d < -0.5)
+      d += 1.0;
   }
   return d;
 }

@@ -35,8 +35,10 @@ struct HugePageAllocator {
   }
 
   void deallocate(T* p, std::size_t n) {
-    if (n * sizeof(T) < kFrom) ::operator delete(p);
-    else std::free(p);
+    if (n * sizeof(T) < kFrom)
+      ::operator delete(p);
+    else
+      std::free(p);
   }
 
   template <class U>

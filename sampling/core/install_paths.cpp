@@ -32,7 +32,8 @@ std::string command_name() {
     std::error_code ec;
     const fs::path candidate = fs::path(dir) / exe.filename();
     // The first pdrt on PATH is what "pdrt" runs: it must be this one.
-    if (fs::exists(candidate, ec)) return fs::equivalent(candidate, exe, ec) && !ec ? exe.filename().string() : exe.string();
+    if (fs::exists(candidate, ec))
+      return fs::equivalent(candidate, exe, ec) && !ec ? exe.filename().string() : exe.string();
   }
   return exe.string();
 }

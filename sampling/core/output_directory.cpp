@@ -12,7 +12,8 @@ void create_output_directory(const fs::path& dir) {
   if (fs::is_directory(dir, ec)) return;
   // The topmost missing directory: the one whose creation the user should hear about.
   fs::path top = dir;
-  for (fs::path up = dir.parent_path(); !up.empty() && up != top && !fs::exists(up, ec); up = up.parent_path()) top = up;
+  for (fs::path up = dir.parent_path(); !up.empty() && up != top && !fs::exists(up, ec); up = up.parent_path())
+    top = up;
   fs::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create directory (" + ec.message() + ")");
   warn("pdrt: created directory '" + top.string() + "'" + (top == dir ? "" : " for '" + dir.string() + "'"));

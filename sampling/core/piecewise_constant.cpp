@@ -58,8 +58,8 @@ PiecewiseConstant2D::PiecewiseConstant2D(const std::vector<double>& f, std::size
   std::vector<double> row_mass(ny);
   rows_.reserve(ny);
   for (std::size_t iy = 0; iy < ny; ++iy) {
-    rows_.emplace_back(std::vector<double>(f.begin() + std::ptrdiff_t(iy * nx), f.begin() + std::ptrdiff_t((iy + 1) * nx)),
-                       x0, x1);
+    rows_.emplace_back(
+        std::vector<double>(f.begin() + std::ptrdiff_t(iy * nx), f.begin() + std::ptrdiff_t((iy + 1) * nx)), x0, x1);
     row_mass[iy] = rows_.back().integral();
   }
   marginal_ = PiecewiseConstant1D(row_mass, y0, y1);

@@ -34,8 +34,8 @@ class PiecewiseConstant1D {
 class PiecewiseConstant2D {
  public:
   PiecewiseConstant2D() = default;
-  PiecewiseConstant2D(const std::vector<double>& f, std::size_t nx, std::size_t ny, double x0, double x1,
-                      double y0, double y1);
+  PiecewiseConstant2D(const std::vector<double>& f, std::size_t nx, std::size_t ny, double x0, double x1, double y0,
+                      double y1);
   std::array<double, 2> sample(std::array<double, 2> u, double* pdf) const;
   double pdf(double x, double y) const;  // per unit area
   double integral() const { return marginal_.integral(); }

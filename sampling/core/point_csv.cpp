@@ -71,7 +71,8 @@ PointSet read_point_csv(const std::filesystem::path& path) {
       throw InputError(name + ":1: bad header column " + std::to_string(k + 1) + " '" + header[k] + "', expected 'x" +
                        std::to_string(k) + "'");
   if (dim < 1 || dim > kMaxDim)
-    throw InputError(name + ":1: " + std::to_string(dim) + " coordinate columns, expected 1 to " + std::to_string(kMaxDim));
+    throw InputError(name + ":1: " + std::to_string(dim) + " coordinate columns, expected 1 to " +
+                     std::to_string(kMaxDim));
   ps.dim = dim;
   std::size_t columns = header.size();
   long lineno = 1;
@@ -99,8 +100,7 @@ PointSet read_point_csv(const std::filesystem::path& path) {
                            " is outside [0,1)");
         ps.coords.push_back(v);
       } else {
-        if (v < 0.0)
-          throw InputError(name + ":" + std::to_string(lineno) + ": radius " + f[k] + " is negative");
+        if (v < 0.0) throw InputError(name + ":" + std::to_string(lineno) + ": radius " + f[k] + " is negative");
         ps.radius.push_back(v);
       }
     }

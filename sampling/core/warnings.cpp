@@ -32,7 +32,8 @@ void warn(const std::string& line, const std::string& kind) {
   Warnings& w = state();
   std::lock_guard<std::mutex> lock(w.mutex);
   const std::string& k = kind.empty() ? line : kind;
-  if (w.hold) w.held.push_back(k + '\n' + line);
+  if (w.hold)
+    w.held.push_back(k + '\n' + line);
   else {
     std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);

@@ -76,8 +76,8 @@ PointSet balanced_relaxation_1d(const BalancedRelaxation1D& p) {
     } else {
       for (double& d : darts) {
         const double u = rng.uniform() * total;
-        const std::size_t w = std::min(std::size_t(std::upper_bound(win_cum.begin(), win_cum.end(), u) - win_cum.begin()),
-                                       win_lo.size() - 1);
+        const std::size_t w = std::min(
+            std::size_t(std::upper_bound(win_cum.begin(), win_cum.end(), u) - win_cum.begin()), win_lo.size() - 1);
         d = win_lo[w] + (u - (w ? win_cum[w - 1] : 0.0));
       }
       // Score: relative deficit of points in arcs of width 1/2, 1/4, ... centred on the dart.
@@ -98,10 +98,14 @@ PointSet balanced_relaxation_1d(const BalancedRelaxation1D& p) {
     if (x >= 1.0) x = 0.0;
     auto it = std::lower_bound(sorted.begin(), sorted.end(), x);
     double near = ps.radius.back();
-    if (it != sorted.begin()) near = std::min(near, x - *(it - 1));
-    else if (p.periodic) near = std::min(near, x - (sorted.back() - 1.0));
-    if (it != sorted.end()) near = std::min(near, *it - x);
-    else if (p.periodic) near = std::min(near, sorted.front() + 1.0 - x);
+    if (it != sorted.begin())
+      near = std::min(near, x - *(it - 1));
+    else if (p.periodic)
+      near = std::min(near, x - (sorted.back() - 1.0));
+    if (it != sorted.end())
+      near = std::min(near, *it - x);
+    else if (p.periodic)
+      near = std::min(near, sorted.front() + 1.0 - x);
     sorted.insert(it, x);
     ps.coords.push_back(x);
     ps.radius.push_back(near);

@@ -29,7 +29,8 @@ PointSet generate_best_candidate(const GeneratorParams& p) {
     double d2 = grid.nearest_sq(q, r2);
     if (d2 < r2) return d2;
     d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < ps.size(); ++i) d2 = std::min(d2, distance_sq(q, ps.coords.data() + i * dim, dim, p.periodic));
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      d2 = std::min(d2, distance_sq(q, ps.coords.data() + i * dim, dim, p.periodic));
     return d2;
   };
 

@@ -397,8 +397,8 @@ PointSet generate_bridson(const GeneratorParams& p) {
   const double r = p.radius ? *p.radius : radius_for_count(*p.count, p.dim, p.periodic);
   const std::size_t limit = p.count ? std::size_t(*p.count) : std::size_t(-1);
   PointSet ps = p.dim != 2 || !Grid2D::applies(r) ? bridson_nd(p, r, limit)
-                 : p.periodic                       ? bridson_2d<true>(p, r, limit)
-                                                    : bridson_2d<false>(p, r, limit);
+                : p.periodic                      ? bridson_2d<true>(p, r, limit)
+                                                  : bridson_2d<false>(p, r, limit);
   ps.radius.assign(ps.size(), r);
   return ps;
 }

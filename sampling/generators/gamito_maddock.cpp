@@ -48,8 +48,13 @@ class GamitoSampler {
 
  public:
   GamitoSampler(double dist, bool periodic, uint64_t seed, std::size_t expected)
-      : d_(dist), d2_(dist * dist), in2_(d2_ * (1 - 1e-9)), periodic_(periodic), rng_(seed),
-        grid_(make_grid(dist, expected, periodic)), res_(level0_res(dist, expected)) {
+      : d_(dist),
+        d2_(dist * dist),
+        in2_(d2_ * (1 - 1e-9)),
+        periodic_(periodic),
+        rng_(seed),
+        grid_(make_grid(dist, expected, periodic)),
+        res_(level0_res(dist, expected)) {
     last_ = 0;
     while ((uint64_t(res_) << last_) < (uint64_t(1) << kMaxLevel)) ++last_;
   }
@@ -142,8 +147,10 @@ class GamitoSampler {
 
   static Grid make_grid(double dist, std::size_t expected, bool periodic) {
     // The widest query is subdivide()'s: d beyond the centre of a level-0 cell.
-    if constexpr (N <= 2) return Grid(dist, periodic, dist + 0.5 / double(level0_res(dist, expected)));
-    else return Grid(dist, expected, periodic);
+    if constexpr (N <= 2)
+      return Grid(dist, periodic, dist + 0.5 / double(level0_res(dist, expected)));
+    else
+      return Grid(dist, expected, periodic);
   }
 
   double width() const { return 1.0 / double(uint64_t(res_) << level_); }
@@ -170,7 +177,8 @@ class GamitoSampler {
     const Cell& cell = cells_[b.idx[j]];
     b.live[j] = cell.c[0] != Cell::kDead;
     if (!b.live[j]) return;
-    for (int k = 0; k < N; ++k) b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - fx.frac)) * fx.unit) / fx.res;
+    for (int k = 0; k < N; ++k)
+      b.p[j][k] = (double(cell.c[k]) + double(rng_.next_u64() >> (64 - fx.frac)) * fx.unit) / fx.res;
     std::copy(cell.near, cell.near + Cell::kWitnesses, b.near[j]);
     for (uint32_t id : cell.near)
       if (id != Cell::kNone) grid_.prefetch_cell(id);
@@ -266,7 +274,8 @@ class GamitoSampler {
     for (const Pending& u : updates_[1]) prune(u);
     updates_[1].clear();
     for (const Pending& u : updates_[0]) {
-      if (flush) prune(u);
+      if (flush)
+        prune(u);
       else
         for (int i = 0; i < u.count; ++i) __builtin_prefetch(cells_.data() + group_first(u.base[i]));
     }
@@ -515,7 +524,8 @@ class GamitoSampler {
   uint32_t res_ = 1;  // cells per axis at level 0
   int level_ = 0, last_ = 0;
   std::vector<Pending> updates_[2];  // accepted samples whose Update waits (advance_updates())
-  std::vector<uint32_t, HugePageAllocator<uint32_t>> group_;  // per level-0 cell, the first slot of its cells (index_groups())
+  std::vector<uint32_t, HugePageAllocator<uint32_t>>
+      group_;                     // per level-0 cell, the first slot of its cells (index_groups())
   bool groups_identity_ = false;  // group_[b] would be b (index_groups())
   // The samples reaching the level-0 cell; the entries from kMaxNear on name no sample.
   std::vector<Near> base_near_ = std::vector<Near>(2 * kMaxNear, Near{{}, Cell::kNone});
@@ -536,11 +546,21 @@ PointSet generate_gamito(const GeneratorParams& p) {
   ps.dim = p.dim;
   ps.periodic = p.periodic;
   switch (p.dim) {
-    case 1: ps.coords = sample<1>(dist, p.periodic, p.seed); break;
-    case 2: ps.coords = sample<2>(dist, p.periodic, p.seed); break;
-    case 3: ps.coords = sample<3>(dist, p.periodic, p.seed); break;
-    case 4: ps.coords = sample<4>(dist, p.periodic, p.seed); break;
-    default: ps.coords = sample<5>(dist, p.periodic, p.seed); break;
+    case 1:
+      ps.coords = sample<1>(dist, p.periodic, p.seed);
+      break;
+    case 2:
+      ps.coords = sample<2>(dist, p.periodic, p.seed);
+      break;
+    case 3:
+      ps.coords = sample<3>(dist, p.periodic, p.seed);
+      break;
+    case 4:
+      ps.coords = sample<4>(dist, p.periodic, p.seed);
+      break;
+    default:
+      ps.coords = sample<5>(dist, p.periodic, p.seed);
+      break;
   }
   ps.radius.assign(ps.size(), dist);
   return ps;

@@ -14,7 +14,8 @@ namespace pdrt {
 const std::vector<MethodInfo>& methods() {
   static const std::vector<MethodInfo> list = {
       {"random", "uniform random points (the Poisson process baseline)", kMaxDim, true, false, false},
-      {"jitter", "jittered grid, one point per cell of the finest k^dim grid <= count (Cook §4)", kMaxDim, true, false, false},
+      {"jitter", "jittered grid, one point per cell of the finest k^dim grid <= count (Cook §4)", kMaxDim, true, false,
+       false},
       {"dart", "naive dart throwing at a fixed radius with an attempt budget (Cook §3)", kMaxDim, true, true, true},
       {"mccool", "McCool–Fiume relaxation dart throwing, hierarchical, exact count (§4)", kMaxDim, true, false, true},
       {"bridson", "Bridson 2007 fast Poisson-disk sampling, annulus sampled directly", kMaxDim, true, true, true},
@@ -22,10 +23,17 @@ const std::vector<MethodInfo>& methods() {
       {"lloyd", "Lloyd relaxation on the torus from a Poisson-disk start (McCool §6)", kMaxDim, true, false, false},
       {"best-candidate", "Mitchell 1991 best-candidate, hierarchical", kMaxDim, true, false, true},
       {"balanced", "1-D balanced relaxation, hierarchical with even density (the time tables)", 1, true, false, true},
-      {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false, true},
-      {"stratified-pd", "2-D (0,2)-first hierarchical Poisson-disk on the torus: strata kept while rho >= 0.65 allows", 2, true, false, true},
-      {"owen-pd", "2-D Owen-scrambled Sobol, scramble annealed for Poisson-disk prefixes ((0,m,2)-nets; periodic, count <= 65536)", 2, true, false, true},
-      {"pmj02bn", "2-D progressive multi-jittered (0,2), the best of m candidates per point (Christensen et al. 2018; periodic, count <= 65536)", 2, true, false, true},
+      {"stratified-bc", "1-D progressive jitter, each point the best of m candidates in its stratum", 1, true, false,
+       true},
+      {"stratified-pd", "2-D (0,2)-first hierarchical Poisson-disk on the torus: strata kept while rho >= 0.65 allows",
+       2, true, false, true},
+      {"owen-pd",
+       "2-D Owen-scrambled Sobol, scramble annealed for Poisson-disk prefixes ((0,m,2)-nets; periodic, count <= 65536)",
+       2, true, false, true},
+      {"pmj02bn",
+       "2-D progressive multi-jittered (0,2), the best of m candidates per point (Christensen et al. 2018; periodic, "
+       "count <= 65536)",
+       2, true, false, true},
   };
   return list;
 }
@@ -94,8 +102,10 @@ void validate(const GeneratorParams& p) {
   }
   if (p.count && p.radius) throw UsageError("--count and --radius are mutually exclusive; give one");
   if (!p.count && !p.radius) throw UsageError("one of --count or --radius is required");
-  if (p.count && !m->accepts_count) throw UsageError("--count is not accepted by method '" + p.method + "'; use --radius");
-  if (p.radius && !m->accepts_radius) throw UsageError("--radius is not accepted by method '" + p.method + "'; use --count");
+  if (p.count && !m->accepts_count)
+    throw UsageError("--count is not accepted by method '" + p.method + "'; use --radius");
+  if (p.radius && !m->accepts_radius)
+    throw UsageError("--radius is not accepted by method '" + p.method + "'; use --count");
 
   double expected = 0.0;
   if (p.count) {
@@ -118,7 +128,8 @@ void validate(const GeneratorParams& p) {
                      " points, more than the " + fmt(std::round(budget / double(1ull << 30))) + " GiB limit");
 
   if (p.attempts && *p.attempts <= 0) throw UsageError("--attempts must be > 0, got " + std::to_string(*p.attempts));
-  if (p.decay && !(*p.decay > 0.0 && *p.decay < 1.0)) throw UsageError("--decay must be in (0, 1), got " + fmt(*p.decay));
+  if (p.decay && !(*p.decay > 0.0 && *p.decay < 1.0))
+    throw UsageError("--decay must be in (0, 1), got " + fmt(*p.decay));
   if (p.magnification && !(std::isfinite(*p.magnification) && *p.magnification >= 0.0))
     throw UsageError("--magnification must be a finite number >= 0, got " + fmt(*p.magnification));
   if (p.start_radius && !(std::isfinite(*p.start_radius) && *p.start_radius > 0.0))
@@ -132,19 +143,32 @@ PointSet generate(const GeneratorParams& p) {
   validate(p);
   const std::string& m = p.method;
   PointSet out;
-  if (m == "random") out = generate_random(p);
-  else if (m == "jitter") out = generate_jitter(p);
-  else if (m == "dart") out = generate_dart(p);
-  else if (m == "mccool") out = generate_mccool(p);
-  else if (m == "bridson") out = generate_bridson(p);
-  else if (m == "gamito") out = generate_gamito(p);
-  else if (m == "lloyd") out = generate_lloyd(p);
-  else if (m == "balanced") out = generate_balanced(p);
-  else if (m == "stratified-bc") out = generate_stratified_bc(p);
-  else if (m == "stratified-pd") out = generate_stratified_pd(p);
-  else if (m == "owen-pd") out = generate_owen_pd(p);
-  else if (m == "pmj02bn") out = generate_pmj02bn(p);
-  else out = generate_best_candidate(p);
+  if (m == "random")
+    out = generate_random(p);
+  else if (m == "jitter")
+    out = generate_jitter(p);
+  else if (m == "dart")
+    out = generate_dart(p);
+  else if (m == "mccool")
+    out = generate_mccool(p);
+  else if (m == "bridson")
+    out = generate_bridson(p);
+  else if (m == "gamito")
+    out = generate_gamito(p);
+  else if (m == "lloyd")
+    out = generate_lloyd(p);
+  else if (m == "balanced")
+    out = generate_balanced(p);
+  else if (m == "stratified-bc")
+    out = generate_stratified_bc(p);
+  else if (m == "stratified-pd")
+    out = generate_stratified_pd(p);
+  else if (m == "owen-pd")
+    out = generate_owen_pd(p);
+  else if (m == "pmj02bn")
+    out = generate_pmj02bn(p);
+  else
+    out = generate_best_candidate(p);
   out.dim = p.dim;
   out.periodic = p.periodic;
   return out;

@@ -32,8 +32,13 @@ struct Cell {
 class Relaxation {
  public:
   Relaxation(const GeneratorParams& p)
-      : p_(p), dim_(p.dim), n_(*p.count), grid_(p.dim, p.periodic, 1.0, std::size_t(*p.count)),
-        grid2_(p.periodic), rng_(p.seed, 0x6d63636f), attempts_(double(p.attempts.value_or(30))),
+      : p_(p),
+        dim_(p.dim),
+        n_(*p.count),
+        grid_(p.dim, p.periodic, 1.0, std::size_t(*p.count)),
+        grid2_(p.periodic),
+        rng_(p.seed, 0x6d63636f),
+        attempts_(double(p.attempts.value_or(30))),
         magnification_(p.magnification.value_or(128.0)) {
     ps_.dim = dim_;
     ps_.coords.reserve(std::size_t(n_) * dim_);
@@ -68,8 +73,10 @@ class Relaxation {
   }
 
   void place(const double* x, double r) {
-    if (dim_ == 2) grid2_.insert(x[0], x[1]);
-    else grid_.insert(uint32_t(ps_.size()), x);
+    if (dim_ == 2)
+      grid2_.insert(x[0], x[1]);
+    else
+      grid_.insert(uint32_t(ps_.size()), x);
     ps_.coords.insert(ps_.coords.end(), x, x + dim_);
     ps_.radius.push_back(r);
     misses_ = 0;
@@ -113,8 +120,10 @@ class Relaxation {
       double x[kMaxDim];
       while (!done() && misses_ < budget()) {
         for (int k = 0; k < dim_; ++k) x[k] = rng_.uniform();
-        if (any_closer(x, r2)) ++misses_;
-        else place(x, r);
+        if (any_closer(x, r2))
+          ++misses_;
+        else
+          place(x, r);
       }
       return;
     }
@@ -263,7 +272,8 @@ class Relaxation {
     grid2_.any_in_box(px - r_, px + r_, py - r_, py + r_, [&](const double* q, double sx, double sy) {
       const double gx = (px - q[0]) + sx, gy = (py - q[1]) + sy;
       if (gx * gx + gy * gy > near2) return false;
-      const double ex[2] = {(xs[0] - q[0]) + sx, (xs[1] - q[0]) + sx}, ey[2] = {(ys[0] - q[1]) + sy, (ys[1] - q[1]) + sy};
+      const double ex[2] = {(xs[0] - q[0]) + sx, (xs[1] - q[0]) + sx},
+                   ey[2] = {(ys[0] - q[1]) + sy, (ys[1] - q[1]) + sy};
       for (unsigned b = 0; b < 4; ++b) {
         if (!((want & ~got) >> b & 1)) continue;
         if (covers_2d(ex[b & 1], ey[b >> 1], h, r2)) got |= 1u << b;
@@ -298,18 +308,18 @@ class Relaxation {
   const GeneratorParams& p_;
   int dim_;
   int64_t n_;
-  NeighborGrid grid_;    // neighbour search in 1-D and 3-D and up
-  PointGrid2D grid2_;    // and in 2-D
+  NeighborGrid grid_;  // neighbour search in 1-D and 3-D and up
+  PointGrid2D grid2_;  // and in 2-D
   Rng rng_;
   PointSet ps_;
   double attempts_, magnification_;
-  double misses_ = 0;      // consecutive missed darts at the current radius
+  double misses_ = 0;  // consecutive missed darts at the current radius
   std::size_t log_cells_ = 0;
   double log_volume_ = 0.0, log_miss_ = 0.0;  // darts_to_hit's cache of log(1 - v)
-  double r_ = 0.0;        // the radius of the current step
-  std::vector<Cell> active_, next_;  // fill()'s free cells at this and the next level
-  std::vector<char> occupied_;       // fill()'s level-0 cells: 1 holds a point, 2 covered
-  std::size_t hint_ = 0;  // index of the point that covered the last cell
+  double r_ = 0.0;                            // the radius of the current step
+  std::vector<Cell> active_, next_;           // fill()'s free cells at this and the next level
+  std::vector<char> occupied_;                // fill()'s level-0 cells: 1 holds a point, 2 covered
+  std::size_t hint_ = 0;                      // index of the point that covered the last cell
 };
 
 }  // namespace

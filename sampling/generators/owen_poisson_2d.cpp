@@ -148,8 +148,10 @@ class Optimiser {
       const double after = energy + propose(int(c), int(kp >> 16), kp & 0xffff);
       // Change of the soft-min -ln(E)/beta; Metropolis on it.
       const double gain = -(std::log(std::max(after, 1e-300)) - std::log(energy)) / beta;
-      if (gain >= 0 || (t > 0 && rng.uniform() < std::exp(gain / t))) energy = after;
-      else toggle(int(c), int(kp >> 16), kp & 0xffff);
+      if (gain >= 0 || (t > 0 && rng.uniform() < std::exp(gain / t)))
+        energy = after;
+      else
+        toggle(int(c), int(kp >> 16), kp & 0xffff);
     }
   }
 
@@ -212,7 +214,8 @@ class Optimiser {
   void toggle(int c, int k, uint32_t p) {
     // Below the node the scrambled prefixes of its two halves trade places.
     uint32_t q = 0;  // scrambled image of p
-    for (int i = 0; i < k && k < m_ / 2; ++i) q = (q << 1) | (((p >> (k - 1 - i)) & 1) ^ flip_[c][(1u << i) - 1 + (p >> (k - i))]);
+    for (int i = 0; i < k && k < m_ / 2; ++i)
+      q = (q << 1) | (((p >> (k - 1 - i)) & 1) ^ flip_[c][(1u << i) - 1 + (p >> (k - i))]);
     for (int g = k + 1; g <= m_ / 2; ++g) {
       uint32_t* row = &inv_[c][(1u << g) - 1 + (q << (g - k))];
       const uint32_t half = 1u << (g - k - 1);
@@ -331,7 +334,9 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
     }
     // Lazy max-heap: larger value first, then the smaller index (deterministic ties).
     using Entry = std::pair<uint64_t, uint32_t>;
-    auto less = [](const Entry& a, const Entry& b) { return a.first < b.first || (a.first == b.first && a.second > b.second); };
+    auto less = [](const Entry& a, const Entry& b) {
+      return a.first < b.first || (a.first == b.first && a.second > b.second);
+    };
     std::priority_queue<Entry, std::vector<Entry>, decltype(less)> heap(less);
     for (uint32_t j = lo; j < hi; ++j) heap.push({value[j], j});
     while (!heap.empty()) {
@@ -343,7 +348,8 @@ void farthest_first(const std::vector<uint32_t>& px, const std::vector<uint32_t>
       nearest2.push_back(v);
       // Only candidates closer than v to j can get nearer to the placed set.
       const int r = std::min(int(std::sqrt(double(v)) / std::ldexp(1.0, 32 - g)) + 1, 256);
-      const int nx = axis_block(top(px[j], g), r, 1u << g, xs.data()), ny = axis_block(top(py[j], g), r, 1u << g, ys.data());
+      const int nx = axis_block(top(px[j], g), r, 1u << g, xs.data()),
+                ny = axis_block(top(py[j], g), r, 1u << g, ys.data());
       for (int a = 0; a < nx; ++a)
         for (int b = 0; b < ny; ++b)
           for (int s = 0; s < per; ++s) {

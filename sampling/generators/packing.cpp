@@ -21,31 +21,49 @@ double distance_for_density(double n, int dim, double density) {
 double densest_packing_density(int dim) {
   constexpr double pi = std::numbers::pi;
   switch (dim) {
-    case 1: return 1.0;
-    case 2: return pi / std::sqrt(12.0);
-    case 3: return pi / std::sqrt(18.0);
-    case 4: return pi * pi / 16.0;
-    case 5: return pi * pi / (15.0 * std::sqrt(2.0));
-    case 6: return pi * pi * pi / (48.0 * std::sqrt(3.0));
-    case 7: return pi * pi * pi / 105.0;
-    default: return pi * pi * pi * pi / 384.0;
+    case 1:
+      return 1.0;
+    case 2:
+      return pi / std::sqrt(12.0);
+    case 3:
+      return pi / std::sqrt(18.0);
+    case 4:
+      return pi * pi / 16.0;
+    case 5:
+      return pi * pi / (15.0 * std::sqrt(2.0));
+    case 6:
+      return pi * pi * pi / (48.0 * std::sqrt(3.0));
+    case 7:
+      return pi * pi * pi / 105.0;
+    default:
+      return pi * pi * pi * pi / 384.0;
   }
 }
 
-double max_packing_distance(int64_t n, int dim) { return distance_for_density(double(n), dim, densest_packing_density(dim)); }
+double max_packing_distance(int64_t n, int dim) {
+  return distance_for_density(double(n), dim, densest_packing_density(dim));
+}
 
 double maximal_packing_density(int dim) {
   // 2-D..4-D: Gamito–Maddock Table I. 1-D: Renyi's parking constant. 5-D..8-D: random
   // sequential addition saturation densities (Torquato, Uche & Stillinger 2006).
   switch (dim) {
-    case 1: return 0.7476;
-    case 2: return 0.5470;
-    case 3: return 0.3841;
-    case 4: return 0.2599;
-    case 5: return 0.1707;
-    case 6: return 0.1097;
-    case 7: return 0.0687;
-    default: return 0.0427;
+    case 1:
+      return 0.7476;
+    case 2:
+      return 0.5470;
+    case 3:
+      return 0.3841;
+    case 4:
+      return 0.2599;
+    case 5:
+      return 0.1707;
+    case 6:
+      return 0.1097;
+    case 7:
+      return 0.0687;
+    default:
+      return 0.0427;
   }
 }
 

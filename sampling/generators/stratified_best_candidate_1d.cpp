@@ -18,10 +18,14 @@ double nearest(const std::set<double>& s, double x, bool periodic) {
   if (s.empty()) return std::numeric_limits<double>::infinity();
   auto hi = s.lower_bound(x);
   double d = std::numeric_limits<double>::infinity();
-  if (hi != s.end()) d = *hi - x;
-  else if (periodic) d = *s.begin() + 1.0 - x;
-  if (hi != s.begin()) d = std::min(d, x - *std::prev(hi));
-  else if (periodic) d = std::min(d, x + 1.0 - *s.rbegin());
+  if (hi != s.end())
+    d = *hi - x;
+  else if (periodic)
+    d = *s.begin() + 1.0 - x;
+  if (hi != s.begin())
+    d = std::min(d, x - *std::prev(hi));
+  else if (periodic)
+    d = std::min(d, x + 1.0 - *s.rbegin());
   return d;
 }
 
@@ -29,8 +33,7 @@ double nearest(const std::set<double>& s, double x, bool periodic) {
 
 PointSet stratified_best_candidate_1d(const StratifiedBestCandidate1D& p) {
   if (p.count < 1) throw UsageError("stratified-bc: count must be >= 1, got " + std::to_string(p.count));
-  if (p.candidates < 1)
-    throw UsageError("stratified-bc: candidates must be >= 1, got " + std::to_string(p.candidates));
+  if (p.candidates < 1) throw UsageError("stratified-bc: candidates must be >= 1, got " + std::to_string(p.candidates));
   PointSet ps;
   ps.dim = 1;
   ps.periodic = p.periodic;

@@ -76,12 +76,14 @@ class TorusGrid {
 // Occupancy of the elementary intervals of one level L: shape a (a bits of x, L - a of y).
 struct Level {
   int L = -1, sx = 0, sy = 0;  // the reference (most square) shape (sx, sy), sx = ceil(L/2)
-  std::vector<uint8_t> occ_;  // shape a's interval i at occ_[(a << L) + i]
+  std::vector<uint8_t> occ_;   // shape a's interval i at occ_[(a << L) + i]
   uint8_t& occ(int a, uint32_t i) { return occ_[(std::size_t(a) << L) + i]; }
   uint8_t occ(int a, uint32_t i) const { return occ_[(std::size_t(a) << L) + i]; }
   std::vector<uint32_t> open;  // free intervals of the reference shape
 
-  static uint32_t index(uint32_t X, uint32_t Y, int a, int L) { return (fixed_top_bits(X, a) << (L - a)) | fixed_top_bits(Y, L - a); }
+  static uint32_t index(uint32_t X, uint32_t Y, int a, int L) {
+    return (fixed_top_bits(X, a) << (L - a)) | fixed_top_bits(Y, L - a);
+  }
 
   void reset(int level, const std::vector<uint32_t>& fixed_xy) {
     L = level, sx = (L + 1) / 2, sy = L - sx;
@@ -117,7 +119,7 @@ struct Level {
   bool complete(uint32_t ref, int d, bool prefer_empty, Rng& rng, uint32_t& X, uint32_t& Y) const {
     uint32_t xb = ref >> sy, yb = ref & ((1u << sy) - 1u);  // sx and sy top bits
     const uint32_t yref = yb, xref = xb;
-    uint64_t coins = rng.next_u64();  // one bit per free choice (at most 2 x 32)
+    uint64_t coins = rng.next_u64();     // one bit per free choice (at most 2 x 32)
     for (int a = sx + 1; a <= L; ++a) {  // shape (a, L - a): y's top L - a bits are known
       const uint32_t yt = yref >> (sy - (L - a));
       int pick = int(coins & 1);
@@ -157,7 +159,8 @@ PointSet stratified_poisson_2d(const StratifiedPoisson2D& p) {
     throw UsageError("stratified-pd: count must be in 1..1048576, got " + std::to_string(p.count));
   if (p.candidates < 1) throw UsageError("stratified-pd: candidates must be >= 1, got " + std::to_string(p.candidates));
   for (double f : {p.prefix_floor, p.whole_floor})
-    if (!(f >= 0.0 && f <= 1.0)) throw UsageError("stratified-pd: rho floors must be in [0, 1], got " + std::to_string(f));
+    if (!(f >= 0.0 && f <= 1.0))
+      throw UsageError("stratified-pd: rho floors must be in [0, 1], got " + std::to_string(f));
   const int64_t N = p.count;
   Rng rng(p.seed, 0x73747264706432ull);  // "strdpd2"
   PointSet ps;

@@ -19,10 +19,10 @@ namespace pdrt {
 struct StratifiedPoisson2D {
   int64_t count = 2048;
   uint64_t seed = 1;
-  int candidates = 64;          // m: open intervals tried per point
-  double prefix_floor = 0.65;   // rho floor on every prefix of >= first_prefix points
-  double whole_floor = 0.72;    // rho of the whole set (reached through whole_floor sqrt(n/N))
-  int64_t first_prefix = 16;    // smaller prefixes get no floor
+  int candidates = 64;         // m: open intervals tried per point
+  double prefix_floor = 0.65;  // rho floor on every prefix of >= first_prefix points
+  double whole_floor = 0.72;   // rho of the whole set (reached through whole_floor sqrt(n/N))
+  int64_t first_prefix = 16;   // smaller prefixes get no floor
 };
 
 // Points on the torus in generation order, coordinates exact 32-bit fixed point; radius[i]

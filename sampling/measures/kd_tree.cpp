@@ -22,8 +22,7 @@ KdTree::KdTree(std::span<const double> coords, int dim, bool periodic) : dim_(di
   hi_.reserve(nodes_.capacity() * dim);
   if (n > 0) build(0, uint32_t(n));
   std::vector<double> ordered(n * dim);
-  for (std::size_t s = 0; s < n; ++s)
-    std::copy_n(&pts_[std::size_t(ids_[s]) * dim], dim, &ordered[s * dim]);
+  for (std::size_t s = 0; s < n; ++s) std::copy_n(&pts_[std::size_t(ids_[s]) * dim], dim, &ordered[s * dim]);
   pts_.swap(ordered);
 }
 

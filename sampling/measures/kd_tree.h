@@ -36,9 +36,9 @@ class KdTree {
 
  private:
   struct Node {
-    uint32_t begin, end;   // range in the permuted arrays
-    int32_t left, right;   // children, -1 for a leaf
-    uint32_t min_id;       // smallest input index in the subtree
+    uint32_t begin, end;  // range in the permuted arrays
+    int32_t left, right;  // children, -1 for a leaf
+    uint32_t min_id;      // smallest input index in the subtree
   };
 
   int32_t build(uint32_t begin, uint32_t end);
@@ -48,8 +48,8 @@ class KdTree {
 
   int dim_;
   bool periodic_;
-  std::vector<double> pts_;   // coordinates in tree order
-  std::vector<uint32_t> ids_; // input index of each tree-order point
+  std::vector<double> pts_;    // coordinates in tree order
+  std::vector<uint32_t> ids_;  // input index of each tree-order point
   std::vector<Node> nodes_;
   std::vector<double> lo_, hi_;  // per-node bounding boxes, dim_ values each
 };

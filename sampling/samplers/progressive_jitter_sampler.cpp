@@ -1,9 +1,9 @@
 // The progressive jitter sampler (`jitter` in scenes and on the command line): Cook 1986
 // §4.2 and §5.1 stratified sampling with prefix extension. Each (pixel, family, bounce)
-// draws its own progressive jittered sequence (Christensen, Kensler & Kilpatrick 2018, "pj"): 2-D points are exactly k x k stratified whenever n = 4^j
-// (1-D: n strata when n = 2^j), so n = k^2 samples are Cook's jittered grid, and because
-// every family has an independent random stratum order the dimensions are decorrelated
-// like Cook's per-pixel prototype permutations (Fig. 8).
+// draws its own progressive jittered sequence (Christensen, Kensler & Kilpatrick 2018, "pj"): 2-D points are exactly k
+// x k stratified whenever n = 4^j (1-D: n strata when n = 2^j), so n = k^2 samples are Cook's jittered grid, and
+// because every family has an independent random stratum order the dimensions are decorrelated like Cook's per-pixel
+// prototype permutations (Fig. 8).
 //
 // pj as a pure function of the index: point j >= 4^k (k maximal) is a child of point
 // i = j mod 4^k. Between 4^k and 4^(k+1) each cell of the 2^k grid splits into four; group
@@ -82,8 +82,8 @@ uint32_t pj_1d(uint32_t j, const Keys& key) {
 // compiler knows the two do not overlap.)
 __attribute__((target_clones("avx2", "default"))) void level_2d(int k, uint32_t end, const Keys& key,
                                                                 const uint32_t* __restrict px,
-                                                                const uint32_t* __restrict py,
-                                                                uint32_t* __restrict ox, uint32_t* __restrict oy) {
+                                                                const uint32_t* __restrict py, uint32_t* __restrict ox,
+                                                                uint32_t* __restrict oy) {
   const uint32_t base = uint32_t(1) << (2 * k), mask = base - 1;
   const Keys kk = key;
   for (uint32_t j = base; j < end; ++j) {

@@ -19,9 +19,9 @@
 namespace pdrt {
 
 struct RankSelection {
-  std::vector<uint32_t> kept;   // indices into the candidate prefix, in rank order
-  std::vector<double> weight;   // per kept point: multiply g(s) by it and sum to estimate ∫g
-  double x_integral = 0.0;      // ∫x used (closed form, or k/n estimated from the table)
+  std::vector<uint32_t> kept;  // indices into the candidate prefix, in rank order
+  std::vector<double> weight;  // per kept point: multiply g(s) by it and sum to estimate ∫g
+  double x_integral = 0.0;     // ∫x used (closed form, or k/n estimated from the table)
 };
 
 // `f_min`/`f_max` bound f over the domain (the normalisation of §5.2); `x_integral`, when

@@ -47,7 +47,8 @@ PointSet draw_table(const TableParams& p, int dim, int64_t count, uint64_t seed)
       g.magnification = p.magnification;
       return generate(g);
     }
-    case Construction::Balanced: break;
+    case Construction::Balanced:
+      break;
     case Construction::StratifiedPD: {
       StratifiedPoisson2D g;
       g.count = count, g.seed = seed, g.candidates = p.candidates;
@@ -309,14 +310,22 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
     const std::string name(field, strnlen(field, kParamName));
     const double v = r.get<double>("the construction parameters");
     if (!std::isfinite(v)) r.fail("construction parameter " + name + " is not finite");
-    if (name == "prefix_floor") t.params.prefix_floor = v;
-    else if (name == "whole_floor") t.params.whole_floor = v;
-    else if (name == "decay") t.params.decay = v;
-    else if (name == "attempts") t.params.attempts = v;
-    else if (name == "magnification") t.params.magnification = v;
-    else if (name == "candidates") t.params.candidates = int(std::clamp(v, 0.0, 1e9));
-    else if (name == "depth") t.params.depth = int(std::clamp(v, 0.0, 64.0));
-    else r.fail("unknown construction parameter '" + name + "' for " + construction_name(t.params.construction));
+    if (name == "prefix_floor")
+      t.params.prefix_floor = v;
+    else if (name == "whole_floor")
+      t.params.whole_floor = v;
+    else if (name == "decay")
+      t.params.decay = v;
+    else if (name == "attempts")
+      t.params.attempts = v;
+    else if (name == "magnification")
+      t.params.magnification = v;
+    else if (name == "candidates")
+      t.params.candidates = int(std::clamp(v, 0.0, 1e9));
+    else if (name == "depth")
+      t.params.depth = int(std::clamp(v, 0.0, 64.0));
+    else
+      r.fail("unknown construction parameter '" + name + "' for " + construction_name(t.params.construction));
   }
   const bool pixel = t.params.family == Family::Pixel;
   // Each header field on its own, before the checksum, so a damaged header says which field is wrong.
@@ -336,12 +345,13 @@ SampleTable read_table(const std::filesystem::path& path, const Family* expected
     r.fail("header says " + std::to_string(tables) + " tables" +
            (pixel ? " of " + std::to_string(t.params.tile) + "x" + std::to_string(t.params.tile) + " pixels"
                   : " of " + std::to_string(t.params.points) + " points") +
-           ", which needs at least " + needed + " bytes; the file has " +
-           std::to_string(data.size()) + " (header field tables or points is wrong, or the file is truncated)");
+           ", which needs at least " + needed + " bytes; the file has " + std::to_string(data.size()) +
+           " (header field tables or points is wrong, or the file is truncated)");
   }
   uint64_t stored;
   std::memcpy(&stored, data.data() + data.size() - 8, 8);
-  if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored) r.fail("checksum mismatch: the file is truncated or corrupted");
+  if (fnv1a(std::string_view(data).substr(0, data.size() - 8)) != stored)
+    r.fail("checksum mismatch: the file is truncated or corrupted");
   t.coords.resize(tables);
   t.radius.resize(tables);
   if (pixel) t.cell_start.resize(tables), t.cell_count.resize(tables);
@@ -390,7 +400,8 @@ const char* table_set_name(TableSetKind k) {
 }
 
 Construction table_set_construction(TableSetKind kind, Family family) {
-  if (kind == TableSetKind::Poisson065) return family == Family::Time ? Construction::Balanced : Construction::StratifiedPD;
+  if (kind == TableSetKind::Poisson065)
+    return family == Family::Time ? Construction::Balanced : Construction::StratifiedPD;
   return family == Family::Time ? Construction::StratifiedBC : Construction::OwenPD;
 }
 
@@ -401,9 +412,14 @@ std::vector<std::pair<std::string, double>> construction_params(const TableParam
       v.insert(v.end(), {{"decay", p.decay}, {"attempts", p.attempts}, {"magnification", p.magnification}});
       break;
     case Construction::StratifiedPD:
-    case Construction::StratifiedBC: v.push_back({"candidates", p.candidates}); break;
-    case Construction::OwenPD: v.push_back({"depth", p.depth}); break;
-    case Construction::Balanced: break;
+    case Construction::StratifiedBC:
+      v.push_back({"candidates", p.candidates});
+      break;
+    case Construction::OwenPD:
+      v.push_back({"depth", p.depth});
+      break;
+    case Construction::Balanced:
+      break;
   }
   return v;
 }

@@ -35,9 +35,9 @@ const char* table_set_name(TableSetKind k);  // "poisson", "poisson-065"
 struct TableParams {
   Family family = Family::Lens;
   Construction construction = Construction::StratifiedPD;
-  uint32_t tables = 16;        // T
-  uint32_t points = 2048;      // M per table (non-pixel); samples per pixel wanted (pixel)
-  uint32_t tile = 1;           // P (pixel family only)
+  uint32_t tables = 16;    // T
+  uint32_t points = 2048;  // M per table (non-pixel); samples per pixel wanted (pixel)
+  uint32_t tile = 1;       // P (pixel family only)
   uint64_t seed = 1;
   // The bar every table is drawn to (a draw that misses it is redrawn): rho >= prefix_floor
   // on every prefix of >= 16 points, >= whole_floor for the whole set. stratified-pd also

@@ -20,11 +20,16 @@ std::unique_ptr<Sampler> make_pmj02bn_sampler(uint64_t seed);
 
 const char* family_name(Family f) {
   switch (f) {
-    case Family::Pixel: return "pixel";
-    case Family::Lens: return "lens";
-    case Family::Time: return "time";
-    case Family::Light: return "light";
-    default: return "gloss";
+    case Family::Pixel:
+      return "pixel";
+    case Family::Lens:
+      return "lens";
+    case Family::Time:
+      return "time";
+    case Family::Light:
+      return "light";
+    default:
+      return "gloss";
   }
 }
 
@@ -50,14 +55,22 @@ std::string sampler_name_list() { return name_list(kSamplerNames); }
 
 std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const SamplerShape& shape) {
   switch (kind) {
-    case SamplerKind::Random: return make_random_sampler(seed);
-    case SamplerKind::Regular: return make_regular_sampler(seed);
-    case SamplerKind::Jitter: return make_progressive_jitter_sampler(seed);
-    case SamplerKind::Sobol: return make_sobol_sampler(seed);
-    case SamplerKind::Pmj02bn: return make_pmj02bn_sampler(seed);
-    case SamplerKind::ZSobol: return make_zsobol_sampler(seed, shape);
-    case SamplerKind::Poisson: return make_poisson_sampler(seed, default_tables());
-    case SamplerKind::Poisson065: return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
+    case SamplerKind::Random:
+      return make_random_sampler(seed);
+    case SamplerKind::Regular:
+      return make_regular_sampler(seed);
+    case SamplerKind::Jitter:
+      return make_progressive_jitter_sampler(seed);
+    case SamplerKind::Sobol:
+      return make_sobol_sampler(seed);
+    case SamplerKind::Pmj02bn:
+      return make_pmj02bn_sampler(seed);
+    case SamplerKind::ZSobol:
+      return make_zsobol_sampler(seed, shape);
+    case SamplerKind::Poisson:
+      return make_poisson_sampler(seed, default_tables());
+    case SamplerKind::Poisson065:
+      return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
   }
   return nullptr;
 }

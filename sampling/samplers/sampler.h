@@ -54,7 +54,7 @@ class IndexShuffle {
 
  private:
   uint64_t key_;
-  mutable int top_ = -1;  // the last leading-bit position and its scramble seed: a loop over
+  mutable int top_ = -1;       // the last leading-bit position and its scramble seed: a loop over
   mutable uint64_t seed_ = 0;  // indices hashes once per power of two
 };
 inline uint64_t shuffle_index(uint64_t index, uint64_t stream) { return IndexShuffle(stream)(index); }
@@ -98,7 +98,8 @@ void fill_prepared(PreparedStream* out, uint32_t n, int dim, ValueFn&& value) {
   out->shift = dim == 2 ? 1 : 0;
   out->grows = true;
   for (int k = 0; k < 2; ++k)
-    out->src[k] = uint8_t(dim == 2 ? k : 0), out->xr[k] = 0, out->add[k] = 0, out->off[k] = 0.0, out->mul[k] = 0x1.0p-32;
+    out->src[k] = uint8_t(dim == 2 ? k : 0), out->xr[k] = 0, out->add[k] = 0, out->off[k] = 0.0,
+    out->mul[k] = 0x1.0p-32;
 }
 
 class Sampler {
@@ -136,8 +137,9 @@ class Sampler {
 };
 
 // The sampler state of the pixel sample being traced (pbrt-v4's StartPixelSample + Get1D/
-// Get2D on top of the pure functions): one per thread, reused across pixels. The streams of the current pixel are prepared once, on first use, so the values of a
-// pixel's later samples cost a table read (values are identical to the Sampler's).
+// Get2D on top of the pure functions): one per thread, reused across pixels. The streams of the current pixel are
+// prepared once, on first use, so the values of a pixel's later samples cost a table read (values are identical to the
+// Sampler's).
 class PixelSampleState {
  public:
   explicit PixelSampleState(const Sampler& s) : s_(&s) {}
@@ -192,7 +194,7 @@ class PixelSampleState {
     }
     return p.coords ? &p : nullptr;
   }
-  static constexpr uint32_t kDeclined = UINT32_MAX;  // the sampler has no prepared form
+  static constexpr uint32_t kDeclined = UINT32_MAX;        // the sampler has no prepared form
   static constexpr int64_t kMaxBudget = int64_t(1) << 16;  // larger passes grow by doubling
   const Sampler* s_;
   int px_ = INT32_MIN, py_ = INT32_MIN;

@@ -15,14 +15,13 @@ namespace pdrt {
 // (the same deterministic pattern in every pixel; biased, for aliasing demos).
 enum class SamplerKind { Random, Jitter, Poisson, Poisson065, Sobol, Pmj02bn, ZSobol, Regular };
 inline constexpr NamedValue<SamplerKind> kSamplerNames[] = {
-    {SamplerKind::Random, "random"},   {SamplerKind::Jitter, "jitter"},
-    {SamplerKind::Poisson, "poisson"}, {SamplerKind::Poisson065, "poisson-065"},
-    {SamplerKind::Sobol, "sobol"},     {SamplerKind::Pmj02bn, "pmj02bn"},
-    {SamplerKind::ZSobol, "zsobol"},   {SamplerKind::Regular, "regular"}};
+    {SamplerKind::Random, "random"},          {SamplerKind::Jitter, "jitter"},  {SamplerKind::Poisson, "poisson"},
+    {SamplerKind::Poisson065, "poisson-065"}, {SamplerKind::Sobol, "sobol"},    {SamplerKind::Pmj02bn, "pmj02bn"},
+    {SamplerKind::ZSobol, "zsobol"},          {SamplerKind::Regular, "regular"}};
 // What `compare` sweeps unless told: the project's own and the classic baselines (the peers
 // pmj02bn and zsobol on request, so the default sweep's time stays as documented).
-inline constexpr SamplerKind kCompareDefaultSamplers[] = {SamplerKind::Random, SamplerKind::Jitter, SamplerKind::Poisson,
-                                                          SamplerKind::Poisson065, SamplerKind::Sobol};
+inline constexpr SamplerKind kCompareDefaultSamplers[] = {
+    SamplerKind::Random, SamplerKind::Jitter, SamplerKind::Poisson, SamplerKind::Poisson065, SamplerKind::Sobol};
 static_assert(covers_in_order(kSamplerNames) && std::size(kSamplerNames) == std::size_t(SamplerKind::Regular) + 1,
               "kSamplerNames names every SamplerKind, in order, regular last");
 inline const char* sampler_name(SamplerKind k) { return name_in(kSamplerNames, k); }

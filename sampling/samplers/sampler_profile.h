@@ -30,9 +30,9 @@ struct SamplerScope {
 };
 
 struct SamplerProfile {
-  int64_t ticks = 0;          // CPU milliseconds sampled
-  int64_t sampler_ticks = 0;  // of which inside the sampler
-  double share() const;       // sampler_ticks / ticks; NaN without ticks
+  int64_t ticks = 0;                                     // CPU milliseconds sampled
+  int64_t sampler_ticks = 0;                             // of which inside the sampler
+  double share() const;                                  // sampler_ticks / ticks; NaN without ticks
   SamplerProfile& operator+=(const SamplerProfile& o) {  // pooling runs (seeds, spp)
     ticks += o.ticks, sampler_ticks += o.sampler_ticks;
     return *this;

@@ -53,9 +53,8 @@ class ZSobolSampler final : public Sampler {
     m_ = ceil_log2(o.samples_per_pixel);
     k_ = ceil_log2(std::max(o.width, o.height));
     if (2 * k_ + m_ > 32)
-      throw UsageError("sampler zsobol: " + std::to_string(o.width) + " x " + std::to_string(o.height) +
-                       " pixels at " + std::to_string(o.samples_per_pixel) + " samples per pixel need " +
-                       std::to_string(2 * k_ + m_) +
+      throw UsageError("sampler zsobol: " + std::to_string(o.width) + " x " + std::to_string(o.height) + " pixels at " +
+                       std::to_string(o.samples_per_pixel) + " samples per pixel need " + std::to_string(2 * k_ + m_) +
                        " bits of Morton and sample index, at most 32 (fewer samples per pixel or a smaller image)");
   }
   std::string name() const override { return sampler_name(SamplerKind::ZSobol); }

@@ -16,8 +16,8 @@
 namespace pdrt {
 
 // shape.samples_per_pixel rounded up to a power of two is the block a pixel takes; pixels
-// outside the shape's image wrap onto it. Throws UsageError when Morton index and sample index need more than 32 bits together
-// (the 32-bit fixed-point values see no more).
+// outside the shape's image wrap onto it. Throws UsageError when Morton index and sample index need more than 32 bits
+// together (the 32-bit fixed-point values see no more).
 std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const SamplerShape& shape);
 
 // The Sobol index pixel (px, py)'s sample `index` takes for the dimension key `key`, below

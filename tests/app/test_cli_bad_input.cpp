@@ -52,8 +52,8 @@ TEST_F(BadInput, OtherSubcommandsParseIntegersStrictly) {
   expect_refused("tables --seed -1 -o " + (dir / "t").string(), dir / "t", 2, "--seed must be an integer in [0, ");
   expect_refused("sample -m random -n 2.5 -o " + (dir / "p.csv").string(), dir / "p.csv", 2, "--count");
   expect_refused("sample -m random -n 10 --seed 1e23 -o " + (dir / "p.csv").string(), dir / "p.csv", 2, "--seed");
-  expect_refused("compare " + write_scene(dir).string() + " -o " + (dir / "c").string() + " --spp 1,-4",
-                 dir / "c", 2, "--spp must be an integer in [1, 16777216], got \"-4\"");
+  expect_refused("compare " + write_scene(dir).string() + " -o " + (dir / "c").string() + " --spp 1,-4", dir / "c", 2,
+                 "--spp must be an integer in [1, 16777216], got \"-4\"");
   expect_refused("compare " + write_scene(dir).string() + " -o " + (dir / "c").string() + " --reference-spp 1e23",
                  dir / "c", 2, "--reference-spp");
 }
@@ -75,7 +75,8 @@ TEST_F(BadInput, RenderOverTheSampleBudgetIsRefusedUnlessAllowed) {
   fs::path scene = write_scene(dir, R"("width": 1000, "height": 1000)"), out = dir / "o.exr";
   expect_refused("render " + scene.string() + " -o " + out.string() + " --spp 16000", out, 2,
                  "1000x1000 pixels x 16000 spp = 1.6e+10 samples (about 1.2 hours");
-  auto r = run_pdrt("render " + scene.string() + " -o " + out.string() + " --spp 16000 --allow-long-render"
+  auto r = run_pdrt("render " + scene.string() + " -o " + out.string() +
+                    " --spp 16000 --allow-long-render"
                     " --width 2 --height 2 -q");
   EXPECT_EQ(r.exit_code, 0) << "small enough once --width/--height shrink it: " << r.err;
 }
@@ -95,8 +96,9 @@ TEST_F(BadInput, RenderSaysWhatItWillCostBeforeStarting) {
 
 TEST_F(BadInput, FilmTooLargeNamesTheSceneKeyOrTheOptions) {
   fs::path scene = write_scene(dir, R"("width": 65536, "height": 65536)"), out = dir / "o.exr";
-  expect_refused("render " + scene.string() + " -o " + out.string(), out, 1, "scene.json:3:21: film.width/height: film");
-  fs::path small = dir / "small" ;
+  expect_refused("render " + scene.string() + " -o " + out.string(), out, 1,
+                 "scene.json:3:21: film.width/height: film");
+  fs::path small = dir / "small";
   fs::create_directories(small);
   fs::path s2 = write_scene(small);
   expect_refused("render " + s2.string() + " -o " + out.string() + " --width 65536 --height 65536", out, 1,
@@ -107,15 +109,17 @@ TEST_F(BadInput, UnknownSubcommandIsNamed) {
   auto r = run_pdrt("frob");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown subcommand \"frob\" (expected sample, analyze, tables, render, compare"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
 }
 
 // Issue 29: CLI11 listed extras reversed ("16 --sampls") with no suggestion.
 TEST_F(BadInput, UnknownOptionsAreNamedInTheOrderTypedWithTheNearestValidOption) {
   fs::path scene = write_scene(dir);
   const fs::path out = dir / "o.png";
-  expect_refused("render " + scene.string() + " -o " + out.string() + " --sampls 16 --seeed 3 --zzzzzz", out, 2,
-                 "render: unknown options --sampls (did you mean --sampler?), --seeed (did you mean --seed?), --zzzzzz");
+  expect_refused(
+      "render " + scene.string() + " -o " + out.string() + " --sampls 16 --seeed 3 --zzzzzz", out, 2,
+      "render: unknown options --sampls (did you mean --sampler?), --seeed (did you mean --seed?), --zzzzzz");
   expect_refused("compare " + scene.string() + " --out " + (dir / "c").string() + " --sampler=sobol", dir / "c", 2,
                  "compare: unknown option --sampler (did you mean --samplers?)");
 }
@@ -129,8 +133,9 @@ TEST_F(BadInput, UnexpectedPositionalArgumentsAreNamedInTheOrderTyped) {
 
 TEST_F(BadInput, EmptyOutputPathNamesTheOption) {
   fs::path scene = write_scene(dir);
-  for (const std::string& args : std::vector<std::string>{"render " + scene.string() + " -o ''", std::string("sample -m random -n 4 -o ''"),
-                                  std::string("tables -o ''"), "compare " + scene.string() + " -o ''"})
+  for (const std::string& args :
+       std::vector<std::string>{"render " + scene.string() + " -o ''", std::string("sample -m random -n 4 -o ''"),
+                                std::string("tables -o ''"), "compare " + scene.string() + " -o ''"})
     expect_refused(args, dir / "none", 2, "-o/--out: empty path");
 }
 
@@ -163,7 +168,8 @@ TEST_F(BadInput, BadDeltaLightsAreRefusedByNameWithoutOutput) {
        "scene.json:7:89: lights[0].cone_angle_deg must be in (0, 180]"},
       {R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, -1, 0], "cone_angle_deg": 200})",
        "lights[0].cone_angle_deg must be in (0, 180] (degrees from the axis to the cone's edge), got 200"},
-      {R"({"type": "point", "intensity": [1, 1, 1], "colour": [1, 1, 1]})", "scene.json:7:47: lights[0].colour unknown key"},
+      {R"({"type": "point", "intensity": [1, 1, 1], "colour": [1, 1, 1]})",
+       "scene.json:7:47: lights[0].colour unknown key"},
       {R"({"type": "distant", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "intensity": 2})",
        "lights[0].intensity unknown key"},
   };
@@ -174,7 +180,8 @@ TEST_F(BadInput, BadDeltaLightsAreRefusedByNameWithoutOutput) {
                             "  \"materials\": {\"grey\": {\"type\": \"diffuse\"}},\n"
                             "  \"objects\": [{\"type\": \"sphere\", \"material\": \"grey\", \"radius\": 1}],\n"
                             "  \"lights\": [\n"
-                            "    " << c.light << "\n  ]\n}\n";
+                            "    "
+                         << c.light << "\n  ]\n}\n";
     expect_refused("render " + scene.string() + " -q -o " + out.string(), out, 1, c.what);
   }
 }

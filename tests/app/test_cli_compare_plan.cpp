@@ -25,7 +25,8 @@ fs::path write_scene(const fs::path& dir, const std::string& albedo = "0.8") {
   "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
   "film": {"width": 16, "height": 12},
   "sampler": {"spp": 4},
-  "materials": {"grey": {"type": "glossy", "albedo": [)" << albedo << ", " << albedo << ", " << albedo << R"(], "roughness": 0.4}},
+  "materials": {"grey": {"type": "glossy", "albedo": [)"
+                   << albedo << ", " << albedo << ", " << albedo << R"(], "roughness": 0.4}},
   "objects": [{"type": "sphere", "material": "grey", "radius": 1}],
   "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
 }
@@ -33,12 +34,13 @@ fs::path write_scene(const fs::path& dir, const std::string& albedo = "0.8") {
   return p;
 }
 
-const std::string kSweep = " --samplers jitter,poisson --spp 2,8 --seeds 2 --reference-spp 64 --adaptive --adaptive-target-spp 8";
+const std::string kSweep =
+    " --samplers jitter,poisson --spp 2,8 --seeds 2 --reference-spp 64 --adaptive --adaptive-target-spp 8";
 
 // Plans `sweep` for d/scene.json into d/plan (reference cache d/c).
 CliResult write_plan(const fs::path& d, const std::string& sweep) {
-  return run_pdrt("compare " + (d / "scene.json").string() + " --plan " + (d / "plan").string() + sweep + " --cache-dir " +
-                  (d / "c").string());
+  return run_pdrt("compare " + (d / "scene.json").string() + " --plan " + (d / "plan").string() + sweep +
+                  " --cache-dir " + (d / "c").string());
 }
 
 int shell(const std::string& cmd) {
@@ -55,8 +57,9 @@ std::string slurp(const fs::path& p) {
 
 // Keys whose values are clocks, thread counts or where files were kept: they differ between
 // any two runs. Everything else must be equal.
-const std::set<std::string> kRunDependent = {"seconds", "render_seconds", "cpu_seconds", "sampler_share",
-                                             "sampler_cpu_seconds", "equal_time", "threads", "cached", "file"};
+const std::set<std::string> kRunDependent = {
+    "seconds",    "render_seconds", "cpu_seconds", "sampler_share", "sampler_cpu_seconds",
+    "equal_time", "threads",        "cached",      "file"};
 
 void expect_same_numbers(const json& a, const json& b, const std::string& path = "") {
   ASSERT_EQ(a.type(), b.type()) << path;
@@ -163,16 +166,17 @@ TEST(CliComparePlan, BadPlanInputIsRefusedWithOneLine) {
     int code;
     std::string says;
   };
-  for (const Case& c : std::vector<Case>{
-           {"run-job " + plan, 2, "give job indices or --all"},
-           {"run-job " + plan + " 0 --all", 2, "give job indices or --all"},
-           {"run-job " + plan + " 36", 2, "job index 36: the plan in " + plan + " has jobs 0..35"},
-           {"run-job " + plan + " -1", 2, "job index -1"},
-           {"run-job " + (d / "nowhere").string() + " 0", 1, "no compare plan here"},
-           {"collect " + (d / "nowhere").string(), 1, "no compare plan here"},
-           {"compare " + scene.string() + " --plan " + plan + " --out " + (d / "o").string(), 2, "--out and --plan: give one"},
-           {"compare " + scene.string(), 2, "give --out DIR (the report) or --plan DIR"},
-           {"compare " + scene.string() + " --plan ''", 2, "--plan: empty path"}}) {
+  for (const Case& c :
+       std::vector<Case>{{"run-job " + plan, 2, "give job indices or --all"},
+                         {"run-job " + plan + " 0 --all", 2, "give job indices or --all"},
+                         {"run-job " + plan + " 36", 2, "job index 36: the plan in " + plan + " has jobs 0..35"},
+                         {"run-job " + plan + " -1", 2, "job index -1"},
+                         {"run-job " + (d / "nowhere").string() + " 0", 1, "no compare plan here"},
+                         {"collect " + (d / "nowhere").string(), 1, "no compare plan here"},
+                         {"compare " + scene.string() + " --plan " + plan + " --out " + (d / "o").string(), 2,
+                          "--out and --plan: give one"},
+                         {"compare " + scene.string(), 2, "give --out DIR (the report) or --plan DIR"},
+                         {"compare " + scene.string() + " --plan ''", 2, "--plan: empty path"}}) {
     auto r = run_pdrt(c.args);
     EXPECT_EQ(r.exit_code, c.code) << c.args << ": " << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
@@ -205,7 +209,8 @@ TEST(CliComparePlan, RequestIntegerOutOfRangeIsRefusedWithOneLine) {
   auto r = run_pdrt("run-job " + d.string() + " 0");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("plan.json: request: \"width\" must be an integer in [-2147483648, 2147483647], got 1e+300"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(line_count(r.err), 1) << r.err;
 }
 
@@ -239,10 +244,11 @@ else
 fi
 )";
   fs::permissions(d / "bin" / "sbatch", fs::perms::owner_all);
-  ASSERT_EQ(shell("PATH='" + (d / "bin").string() + "':\"$PATH\" bash '" + (d / "plan" / "slurm" / "submit.sh").string() +
-                  "' >/dev/null 2>&1"),
+  ASSERT_EQ(shell("PATH='" + (d / "bin").string() + "':\"$PATH\" bash '" +
+                  (d / "plan" / "slurm" / "submit.sh").string() + "' >/dev/null 2>&1"),
             0);
-  for (int i = 0; i < 10; ++i) EXPECT_TRUE(fs::exists(d / "plan" / "slurm" / ("job-" + std::to_string(i) + ".log"))) << i;
+  for (int i = 0; i < 10; ++i)
+    EXPECT_TRUE(fs::exists(d / "plan" / "slurm" / ("job-" + std::to_string(i) + ".log"))) << i;
   const json results = json::parse(std::ifstream(d / "plan" / "results.json"));
   EXPECT_EQ(results["runs"].size(), 4u);
   EXPECT_TRUE(fs::exists(d / "plan" / "index.html"));
@@ -257,8 +263,8 @@ TEST(CliComparePlan, MpirunRanksShareTheJobsOnce) {
   ASSERT_EQ(write_plan(d, " --samplers jitter,poisson --spp 2,8 --seeds 2 --reference-spp 64").exit_code, 0);
   const fs::path err = d / "mpirun.txt";
   ASSERT_EQ(shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe --bind-to none "
-                  "--timeout 120 -np 2 " + kPdrt + " run-job " + plan + " --all --threads 1 >/dev/null 2>'" +
-                  err.string() + "'"),
+                  "--timeout 120 -np 2 " +
+                  kPdrt + " run-job " + plan + " --all --threads 1 >/dev/null 2>'" + err.string() + "'"),
             0)
       << slurp(err);
   const std::string log = slurp(err);
@@ -284,8 +290,8 @@ TEST(CliComparePlan, MpirunJobFailureNamesTheRankAndJob) {
   const fs::path err = d / "mpirun.txt";
   const auto t0 = std::chrono::steady_clock::now();
   EXPECT_NE(shell("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun --oversubscribe --bind-to none "
-                  "--timeout 120 -np 2 " + kPdrt + " run-job " + plan + " --all --threads 1 >/dev/null 2>'" +
-                  err.string() + "'"),
+                  "--timeout 120 -np 2 " +
+                  kPdrt + " run-job " + plan + " --all --threads 1 >/dev/null 2>'" + err.string() + "'"),
             0);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30);
   const std::string log = slurp(err);

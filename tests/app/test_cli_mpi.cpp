@@ -34,9 +34,14 @@ std::string scene_text(const std::string& sampler, const std::string& extra_filt
                        bool adaptive = true) {
   return R"({
   "camera": {"position": [0, 1, 4], "look_at": [0, 0.5, 0], "vfov_deg": 45, "aperture_radius": 0.08, "focus_distance": 4},
-  "film": {"width": 40, "height": 28, "filter": {"type": "gaussian", "radius": 1.5)" + extra_filter + R"(}},
-  "sampler": {"type": ")" + sampler + R"(", "spp": 16, "seed": 5)" +
-         (adaptive ? R"(, "adaptive": {"min_spp": 2, "max_spp": 16, "metric": "relative-error", "decision": ")" + decision + "\"}" : "") + R"(},
+  "film": {"width": 40, "height": 28, "filter": {"type": "gaussian", "radius": 1.5)" +
+         extra_filter + R"(}},
+  "sampler": {"type": ")" +
+         sampler + R"(", "spp": 16, "seed": 5)" +
+         (adaptive ? R"(, "adaptive": {"min_spp": 2, "max_spp": 16, "metric": "relative-error", "decision": ")" +
+                         decision + "\"}"
+                   : "") +
+         R"(},
   "integrator": {"max_depth": 4},
   "materials": {"grey": {"type": "diffuse", "albedo": [0.6, 0.6, 0.6]}, "lamp": {"type": "emitter", "radiance": [6, 6, 6]}},
   "objects": [
@@ -183,8 +188,10 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageWhenSplattingAndSplitDeciding) {
 TEST(CliMpi, StatsListEveryRanksShare) {
   const fs::path dir = scratch_dir("mpi-stats");
   std::ofstream(dir / "s.json") << scene_text("jitter", "", "shared");
-  ASSERT_EQ(run(kMpirun + "2 '" + PDRT_BINARY + "' render '" + (dir / "s.json").string() + "' --quiet --threads 1 -o '" +
-                (dir / "o.exr").string() + "' --stats '" + (dir / "stats.json").string() + "'"), 0);
+  ASSERT_EQ(
+      run(kMpirun + "2 '" + PDRT_BINARY + "' render '" + (dir / "s.json").string() + "' --quiet --threads 1 -o '" +
+          (dir / "o.exr").string() + "' --stats '" + (dir / "stats.json").string() + "'"),
+      0);
   std::ifstream in(dir / "stats.json");
   std::stringstream s;
   s << in.rdbuf();
@@ -243,7 +250,8 @@ TEST(CliMpi, SigusrOneToMpirunWritesThePartialImageAndExits130) {
 TEST(CliMpi, WarningsArePrintedOnce) {
   const fs::path dir = scratch_dir("mpi-warn");
   std::string text = scene_text("jitter", "", "shared", false);
-  const std::string mesh = R"({"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [0, 1, 2, 0, 0, 1]},)";
+  const std::string mesh =
+      R"({"type": "mesh", "material": "grey", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [0, 1, 2, 0, 0, 1]},)";
   text.insert(text.find("\"objects\": [") + 12, "\n    " + mesh);
   std::ofstream(dir / "s.json") << text;
   const std::string warning = "warning: skipped 1 degenerate triangle";

@@ -26,7 +26,8 @@ fs::path write_scene(const fs::path& dir, const std::string& film = R"("width": 
   fs::path p = dir / "scene.json";
   std::ofstream(p) << R"({
   "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
-  "film": {)" << film << R"(},
+  "film": {)" << film
+                   << R"(},
   "sampler": {"spp": 4},
   "materials": {"grey": {"type": "glossy", "albedo": [0.8, 0.8, 0.8], "roughness": 0.4}},
   "objects": [{"type": "sphere", "material": "grey", "radius": 1}],
@@ -70,8 +71,10 @@ TEST(CliRender, CreatedOutputDirectoryIsReportedOnStderr) {
   fs::path scene = write_scene(d);
   auto r = run_pdrt("render " + scene.string() + " -o " + (d / "new" / "sub" / "t.png").string() + " --spp 1 --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("pdrt: created directory '" + (d / "new").string() + "' for '" + (d / "new" / "sub").string() + "'"),
-            std::string::npos) << r.err;
+  EXPECT_NE(
+      r.err.find("pdrt: created directory '" + (d / "new").string() + "' for '" + (d / "new" / "sub").string() + "'"),
+      std::string::npos)
+      << r.err;
   EXPECT_EQ(test::line_count(r.err), 1) << r.err;
   // Writing into it again creates nothing and says nothing.
   r = run_pdrt("render " + scene.string() + " -o " + (d / "new" / "sub" / "t.png").string() + " --spp 1 --quiet");
@@ -104,7 +107,8 @@ TEST(CliRender, UnknownReconstructionIsAUsageError) {
   fs::path scene = write_scene(d);
   auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --reconstruction weights");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--reconstruction: unknown mode \"weights\" (importance, splat, rank)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--reconstruction: unknown mode \"weights\" (importance, splat, rank)"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(d / "out.exr"));
   r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() +
                " --reconstruction rank --adaptive-decision split");
@@ -340,14 +344,17 @@ TEST(CliCompare, ReferenceCacheKeySeesTheMeshesAndTexturesTheSceneReads) {
   auto write_obj = [&](float z) {
     std::ofstream(d / "tri.obj") << "v -1 -1 " << z << "\nv 1 -1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
   };
-  auto write_ppm = [&](int grey) { std::ofstream(d / "pic.ppm") << "P3\n1 1\n255\n" << grey << " " << grey << " " << grey << "\n"; };
+  auto write_ppm = [&](int grey) {
+    std::ofstream(d / "pic.ppm") << "P3\n1 1\n255\n" << grey << " " << grey << " " << grey << "\n";
+  };
   write_obj(0);
   write_ppm(200);
   int run = 0;
   auto cached = [&] {
     const fs::path out = d / ("report" + std::to_string(run++));
     auto r = run_pdrt("compare " + (d / "scene.json").string() + " --out " + out.string() +
-                      " --samplers jitter --spp 2 --reference-spp 16 --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+                      " --samplers jitter --spp 2 --reference-spp 16 --cache-dir " + (d / "cache").string() +
+                      " --no-plots --quiet");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return nlohmann::json::parse(std::ifstream(out / "results.json"))["reference"]["cached"].get<bool>();
   };
@@ -402,8 +409,8 @@ TEST(CliCompare, OneSeedPrintsNoIntervalOnTheConsole) {
   fs::path scene = write_scene(d, R"("width": 12, "height": 8)");
   for (int seeds : {1, 2}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / ("r" + std::to_string(seeds))).string() +
-                      " --samplers random --spp 2 --seeds " + std::to_string(seeds) + " --reference-spp 16 --cache-dir " +
-                      (d / "cache").string() + " --no-plots");
+                      " --samplers random --spp 2 --seeds " + std::to_string(seeds) +
+                      " --reference-spp 16 --cache-dir " + (d / "cache").string() + " --no-plots");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const bool one = seeds == 1;
     EXPECT_EQ(r.err.find("+-") == std::string::npos, one) << r.err;
@@ -420,9 +427,11 @@ TEST(CliCompare, OneSeedPrintsNoIntervalOnTheConsole) {
 // seed, is the biased control the same check refuses.
 TEST(CliCompare, PoissonSeedAverageOfARenderConvergesToTheReference) {
   fs::path d = scratch_dir("compare_poisson_bias");
-  auto r = run_pdrt(std::string("compare '") + PDRT_SCENES_DIR + "/soft-shadows.json' --out " + (d / "report").string() +
-                    " --samplers poisson,regular --spp 4,16,64 --seeds 64 --reference-spp 1024 --width 40 --height 30"
-                    " --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+  auto r =
+      run_pdrt(std::string("compare '") + PDRT_SCENES_DIR + "/soft-shadows.json' --out " + (d / "report").string() +
+               " --samplers poisson,regular --spp 4,16,64 --seeds 64 --reference-spp 1024 --width 40 --height 30"
+               " --cache-dir " +
+               (d / "cache").string() + " --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_EQ(j["runs"].size(), 6u);
@@ -508,7 +517,8 @@ TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
   fs::path scene = write_scene(d, R"("width": 16, "height": 12)");
   auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
                     " --samplers poisson --spp 2,8,32 --reference-spp 256 --adaptive --adaptive-target-spp 8"
-                    " --cache-dir " + (d / "cache").string() + " --no-plots --quiet");
+                    " --cache-dir " +
+                    (d / "cache").string() + " --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_GE(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4 (more while the target is not crossed)";
@@ -550,8 +560,7 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
   for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
                         "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive-decision foo",
                         "--adaptive --adaptive-target-spp 3", "--reconstruction weights", "--seeds 0", "--seeds -1",
-                        "--seeds two", "--seeds 1.5",
-                        "--reconstruction rank --adaptive --adaptive-decision split"}) {
+                        "--seeds two", "--seeds 1.5", "--reconstruction rank --adaptive --adaptive-decision split"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
     EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
@@ -588,8 +597,9 @@ TEST(CliRender, InterruptWritesPartialImage) {
   // The summary counts the pixels that got samples, not a mean spp (issue 29).
   std::stringstream err;
   err << std::ifstream(d / "err.txt").rdbuf();
-  EXPECT_TRUE(std::regex_search(err.str(), std::regex("wrote the partial image .*out\\.exr: [0-9]+ of 262144 pixels rendered "
-                                                      "at [0-9]+(–[0-9]+)? spp \\(of 4096\\)")))
+  EXPECT_TRUE(
+      std::regex_search(err.str(), std::regex("wrote the partial image .*out\\.exr: [0-9]+ of 262144 pixels rendered "
+                                              "at [0-9]+(–[0-9]+)? spp \\(of 4096\\)")))
       << err.str();
 }
 
@@ -600,8 +610,8 @@ TEST(CliRender, InterruptWritesPartialImage) {
 TEST(CliRender, CropWindowWritesTheCroppedImageAndNamesItsPixels) {
   fs::path d = scratch_dir("render_crop");
   fs::path scene = write_scene(d, R"("width": 24, "height": 16, "crop_window": [0.25, 0.75, 0.5, 1])");
-  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " + (d / "stats.json").string() +
-                    " --quiet");
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " +
+                    (d / "stats.json").string() + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto in = OIIO::ImageInput::open((d / "out.exr").string());
   ASSERT_TRUE(in);
@@ -660,8 +670,9 @@ TEST(CliCompare, RendersUnregularizedUnlessAskedAndNamesIt) {
     text.insert(text.find("\"materials\""), "\"integrator\": {\"regularize\": true},\n  ");
     std::ofstream(scene) << text;
   }
-  const std::string common = " --samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --cache-dir " +
-                             (d / "cache").string() + " --no-plots";
+  const std::string common =
+      " --samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --cache-dir " +
+      (d / "cache").string() + " --no-plots";
   auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "plain").string() + common);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("sets integrator.regularize"), std::string::npos) << r.err;

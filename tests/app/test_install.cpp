@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 const fs::path& installed_prefix() {
   static const fs::path prefix = [] {
     const fs::path p = test::scratch_base() / "install-a";
-    const std::string cmd = std::string("'") + PDRT_CMAKE + "' --install '" + PDRT_BUILD_DIR + "' --prefix '" + p.string() +
-                            "' >/dev/null 2>&1";
+    const std::string cmd = std::string("'") + PDRT_CMAKE + "' --install '" + PDRT_BUILD_DIR + "' --prefix '" +
+                            p.string() + "' >/dev/null 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return p;
   }();
@@ -41,24 +41,24 @@ class Install : public ::testing::Test {
   // The installed pdrt, with no PDRT_* variable that would point elsewhere.
   InstalledRun pdrt(const std::string& args) {
     const fs::path err = dir / "err.txt";
-    const std::string cmd = "env -u PDRT_TABLES -u PDRT_ASSETS -u PDRT_IMAGE_MODULE '" + (prefix / "bin" / "pdrt").string() +
-                            "' " + args + " >/dev/null 2>'" + err.string() + "'";
+    const std::string cmd = "env -u PDRT_TABLES -u PDRT_ASSETS -u PDRT_IMAGE_MODULE '" +
+                            (prefix / "bin" / "pdrt").string() + "' " + args + " >/dev/null 2>'" + err.string() + "'";
     const int status = std::system(cmd.c_str());
     std::stringstream ss;
     ss << std::ifstream(err).rdbuf();
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
   }
   std::string render_env_lit() {
-    return "render '" + (prefix / "share/pdrt/scenes/env-lit.json").string() + "' --spp 1 --width 16 --height 12 -q -o '" +
-           (dir / "o.png").string() + "'";
+    return "render '" + (prefix / "share/pdrt/scenes/env-lit.json").string() +
+           "' --spp 1 --width 16 --height 12 -q -o '" + (dir / "o.png").string() + "'";
   }
   fs::path dir, prefix;
 };
 
 TEST_F(Install, MovedInstallRendersTheDemoSceneAndTheSkyScene) {
   for (const char* scene : {"cornell-box.json", "env-lit.json"}) {
-    InstalledRun r = pdrt("render '" + (prefix / "share/pdrt/scenes" / scene).string() + "' --spp 1 --width 16 --height 12 -q -o '" +
-                 (dir / "o.png").string() + "'");
+    InstalledRun r = pdrt("render '" + (prefix / "share/pdrt/scenes" / scene).string() +
+                          "' --spp 1 --width 16 --height 12 -q -o '" + (dir / "o.png").string() + "'");
     EXPECT_EQ(r.code, 0) << scene << ": " << r.err;
     EXPECT_TRUE(fs::exists(dir / "o.png")) << scene;
     fs::remove(dir / "o.png");
@@ -105,7 +105,7 @@ TEST_F(Install, InstalledPdrtRunsTheInstalledPlotScript) {
 TEST_F(Install, PlanPrintsCommandsThatRunTheInstalledPdrt) {
   const fs::path scene = prefix / "share/pdrt/scenes/cornell-box.json";
   InstalledRun r = pdrt("compare '" + scene.string() + "' --plan '" + (dir / "plan").string() +
-               "' --samplers jitter --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8");
+                        "' --samplers jitter --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string self = (prefix / "bin" / "pdrt").string();
   EXPECT_NE(r.err.find(self + " run-job " + (dir / "plan").string()), std::string::npos) << r.err;

@@ -14,7 +14,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   pdrt::fuzz::write_input(cut == text.npos ? std::string_view() : text.substr(cut + kSplit.size()), "model.mtl");
   try {
     pdrt::load_obj(obj, size > 0 && (data[0] & 1));
-  } catch (const pdrt::InputError&) {
-  }
+  } catch (const pdrt::InputError&) {}
   return 0;
 }

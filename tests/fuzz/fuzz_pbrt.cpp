@@ -8,11 +8,11 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
-    const auto directives = pdrt::parse_pbrt_text(pdrt::fuzz::as_text(data, size), "fuzz.pbrt", pdrt::fuzz::scratch_dir());
+    const auto directives =
+        pdrt::parse_pbrt_text(pdrt::fuzz::as_text(data, size), "fuzz.pbrt", pdrt::fuzz::scratch_dir());
     // Not strict: the lenient path reaches every mapping and records the report lines.
     pdrt::build_pbrt_scene(directives, false);
   } catch (const pdrt::InputError&) {
-  } catch (const pdrt::UsageError&) {
-  }
+  } catch (const pdrt::UsageError&) {}
   return 0;
 }

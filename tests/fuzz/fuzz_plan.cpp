@@ -12,15 +12,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const pdrt::ComparePlan plan = pdrt::read_compare_plan(pdrt::fuzz::scratch_dir());
     pdrt::cli::plan_request(plan);
-  } catch (const pdrt::InputError&) {
-  }
+  } catch (const pdrt::InputError&) {}
   const nlohmann::json mark = nlohmann::json::parse(text, nullptr, false);
   if (!mark.is_discarded()) {
     pdrt::mark_is_for(mark, pdrt::ComparePlan{}, 0);
     try {
       pdrt::job_mark_render(mark);
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
   }
   return 0;
 }

@@ -7,7 +7,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto file = pdrt::fuzz::write_input(pdrt::fuzz::as_text(data, size), "mesh.ply");
   try {
     pdrt::load_ply(file, "mesh.ply");
-  } catch (const pdrt::InputError&) {
-  }
+  } catch (const pdrt::InputError&) {}
   return 0;
 }

@@ -7,7 +7,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto file = pdrt::fuzz::write_input(pdrt::fuzz::as_text(data, size), "points.csv");
   try {
     pdrt::read_point_csv(file);
-  } catch (const pdrt::InputError&) {
-  }
+  } catch (const pdrt::InputError&) {}
   return 0;
 }

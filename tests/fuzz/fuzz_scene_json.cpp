@@ -10,7 +10,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     pdrt::load_scene(file);
   } catch (const pdrt::InputError&) {
-  } catch (const pdrt::UsageError&) {
-  }
+  } catch (const pdrt::UsageError&) {}
   return 0;
 }

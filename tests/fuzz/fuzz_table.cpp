@@ -17,7 +17,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto file = pdrt::fuzz::write_input(bytes, "t.pdrttbl");
   try {
     pdrt::read_table(file);
-  } catch (const pdrt::InputError&) {
-  }
+  } catch (const pdrt::InputError&) {}
   return 0;
 }

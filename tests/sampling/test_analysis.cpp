@@ -210,8 +210,8 @@ TEST(Analysis, MaxEmptyRadius1DIsHalfTheLargestGap) {
   ps.coords = {0.1, 0.3, 0.8};
   EXPECT_NEAR(max_empty_ball(ps, false).radius, 0.25, 1e-15);  // gap 0.3..0.8
   ps.coords = {0.3, 0.45, 0.6};
-  EXPECT_NEAR(max_empty_ball(ps, false).radius, 0.4, 1e-15);   // the end x = 1
-  EXPECT_NEAR(max_empty_ball(ps, true).radius, 0.35, 1e-15);   // wrap gap 0.6..1.3
+  EXPECT_NEAR(max_empty_ball(ps, false).radius, 0.4, 1e-15);  // the end x = 1
+  EXPECT_NEAR(max_empty_ball(ps, true).radius, 0.35, 1e-15);  // wrap gap 0.6..1.3
 }
 
 // ---- chi-square uniformity
@@ -367,7 +367,8 @@ TEST(AnalyzeCli, MismatchedDimsAreRejected) {
   write_text(a, "x0,x1\n0.1,0.2\n0.3,0.4\n");
   write_text(b, "x0,x1,x2\n0.1,0.2,0.3\n");
   fs::path out = dir / "out";
-  test::CliResult r = run_pdrt("analyze '" + a.string() + "' '" + b.string() + "' --no-plots --out '" + out.string() + "'");
+  test::CliResult r =
+      run_pdrt("analyze '" + a.string() + "' '" + b.string() + "' --no-plots --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find(b.string() + ":1:"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -89,7 +89,7 @@ std::string case_name(const Case& c) {
 // trees refine slowly, so fewer points there; bounded 5-D sets come out about twice as
 // large as asked, Eq. 7 having no 5-D correction).
 const std::vector<Case> kCases = {
-    {1, false, 500}, {1, true, 500}, {2, false, 2000}, {2, true, 2000}, {3, false, 1000},
+    {1, false, 500}, {1, true, 500},  {2, false, 2000}, {2, true, 2000}, {3, false, 1000},
     {3, true, 1000}, {4, false, 500}, {4, true, 500},   {5, false, 100}, {5, true, 150},
 };
 
@@ -126,7 +126,8 @@ TEST(GamitoGenerator, NoTwoPointsCloserThanRadius) {
 TEST(GamitoGenerator, SameSeedSamePointsOtherSeedOtherPoints) {
   for (bool periodic : {false, true}) {
     double r = radius_for(1000, 2, periodic);
-    pdrt::PointSet a = run_gamito(2, periodic, r, 42), b = run_gamito(2, periodic, r, 42), c = run_gamito(2, periodic, r, 43);
+    pdrt::PointSet a = run_gamito(2, periodic, r, 42), b = run_gamito(2, periodic, r, 42),
+                   c = run_gamito(2, periodic, r, 43);
     EXPECT_EQ(a.coords, b.coords);
     EXPECT_NE(a.coords, c.coords);
   }

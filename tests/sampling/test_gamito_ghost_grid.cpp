@@ -47,7 +47,8 @@ void expect_queries_match_brute_force(bool periodic) {
       if (dx * dx + dy * dy >= reach * reach) return false;
       // Which sample this is (an image differs from it by whole periods).
       for (std::size_t i = 0; i < pts.size(); ++i)
-        if (std::abs(std::remainder(s[0] - pts[i][0], 1.0)) < 1e-12 && std::abs(std::remainder(s[1] - pts[i][1], 1.0)) < 1e-12 &&
+        if (std::abs(std::remainder(s[0] - pts[i][0], 1.0)) < 1e-12 &&
+            std::abs(std::remainder(s[1] - pts[i][1], 1.0)) < 1e-12 &&
             (periodic || (s[0] == pts[i][0] && s[1] == pts[i][1])))
           got.insert(i);
       return false;

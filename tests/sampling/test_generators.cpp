@@ -102,7 +102,8 @@ TEST(McCool, PrefixRelativeRadiusStaysHigh) {
   PointSet ps = generate(p);
   double running = std::numeric_limits<double>::infinity();
   for (std::size_t i = 1; i < ps.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) running = std::min(running, std::sqrt(distance_sq(ps.point(i), ps.point(j), true)));
+    for (std::size_t j = 0; j < i; ++j)
+      running = std::min(running, std::sqrt(distance_sq(ps.point(i), ps.point(j), true)));
     if (i + 1 >= 16) {
       ASSERT_GE(running / max_packing_distance(int64_t(i + 1), 2), 0.65) << "prefix " << i + 1;
     }
@@ -120,7 +121,8 @@ TEST(McCool, IssueTwoRhoAtFourThousandPoints) {
       p.count = 4096;
       std::vector<double> rho = prefix_relative_radius(generate(p), periodic);
       ASSERT_EQ(rho.size(), 4095u);
-      for (std::size_t n = 16; n <= 4096; ++n) ASSERT_GE(rho[n - 2], 0.65) << "prefix " << n << " periodic " << periodic;
+      for (std::size_t n = 16; n <= 4096; ++n)
+        ASSERT_GE(rho[n - 2], 0.65) << "prefix " << n << " periodic " << periodic;
       EXPECT_GE(rho.back(), 0.72) << "periodic " << periodic << " seed " << seed;
     }
 }
@@ -196,7 +198,8 @@ double quantisation_mse(const PointSet& ps) {
   for (int s = 0; s < probes; ++s) {
     double q[2] = {rng.uniform(), rng.uniform()};
     double best = 1e9;
-    for (std::size_t i = 0; i < ps.size(); ++i) best = std::min(best, distance_sq(q, ps.point(i).data(), 2, ps.periodic));
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      best = std::min(best, distance_sq(q, ps.point(i).data(), 2, ps.periodic));
     sum += best;
   }
   return sum / probes;

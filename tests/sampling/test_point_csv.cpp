@@ -16,7 +16,8 @@ TEST(PointCsv, WriteThenReadGivesIdenticalDoubles) {
   ps.dim = 3;
   // Values that need all 17 significant digits, the extremes of [0,1), and tiny radii.
   const double edge[] = {0.0, std::nextafter(1.0, 0.0), 0.1, 1.0 / 3.0, 5e-324, 2.2250738585072014e-308, 1e-5};
-  for (double v : edge) ps.coords.insert(ps.coords.end(), {v, 1.0 - std::nextafter(1.0, 0.0), 0.5}), ps.radius.push_back(v);
+  for (double v : edge)
+    ps.coords.insert(ps.coords.end(), {v, 1.0 - std::nextafter(1.0, 0.0), 0.5}), ps.radius.push_back(v);
   Rng rng(7);
   for (int i = 0; i < 5000; ++i) {
     for (int k = 0; k < 3; ++k) ps.coords.push_back(rng.uniform());

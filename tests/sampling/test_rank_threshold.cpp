@@ -35,7 +35,8 @@ TEST(RankThreshold, KeptDensityFollowsTheImportance) {
   double kept = 0.0;
   for (uint32_t t = 0; t < 16; ++t) {
     auto c = table_points(t, 1024);
-    RankSelection s = rank_threshold(c, [](Vec2 p) { return p[0]; }, 0.0, 1.0);
+    RankSelection s = rank_threshold(
+        c, [](Vec2 p) { return p[0]; }, 0.0, 1.0);
     for (uint32_t i : s.kept) hits[std::min(9, int(c[i][0] * 10))] += 1, kept += 1;
   }
   double chi2 = 0.0;

@@ -66,9 +66,10 @@ TEST(SampleTable, HeaderRecordsTheConstructionAndItsParameters) {
 // Every construction: the same parameters give bit-identical tables on one thread and on
 // all of them (tables are generated in parallel; each draws from its own derived seed).
 TEST(SampleTable, GenerationIsDeterministicAtAnyThreadCount) {
-  for (auto [f, c] : {std::pair{Family::Lens, Construction::StratifiedPD}, std::pair{Family::Gloss, Construction::OwenPD},
-                      std::pair{Family::Time, Construction::StratifiedBC}, std::pair{Family::Time, Construction::Balanced},
-                      std::pair{Family::Light, Construction::Relaxation}}) {
+  for (auto [f, c] :
+       {std::pair{Family::Lens, Construction::StratifiedPD}, std::pair{Family::Gloss, Construction::OwenPD},
+        std::pair{Family::Time, Construction::StratifiedBC}, std::pair{Family::Time, Construction::Balanced},
+        std::pair{Family::Light, Construction::Relaxation}}) {
     TableParams p;
     p.family = f, p.construction = c, p.tables = 4, p.points = 256, p.seed = 77;
     if (c == Construction::OwenPD) p.prefix_floor = 0.35, p.whole_floor = 0.0;
@@ -167,8 +168,10 @@ TEST(SampleTable, RefusesUnknownConstruction) {
 }
 // The parameter list starts at byte 40 (count), the first name at 44, its value at 60.
 TEST(SampleTable, RefusesUnknownOrNonFiniteConstructionParameters) {
-  expect_refused([](std::string& b) { b[44] = 'Z'; }, "unknown construction parameter 'Zrefix_floor' for stratified-pd");
-  expect_refused([](std::string& b) { b[66] = char(0xF0), b[67] = char(0x7F); }, "construction parameter prefix_floor is not finite");
+  expect_refused([](std::string& b) { b[44] = 'Z'; },
+                 "unknown construction parameter 'Zrefix_floor' for stratified-pd");
+  expect_refused([](std::string& b) { b[66] = char(0xF0), b[67] = char(0x7F); },
+                 "construction parameter prefix_floor is not finite");
   expect_refused([](std::string& b) { b[40] = b[41] = char(0xFF); }, "construction parameters, at most 64");
 }
 TEST(SampleTable, RefusesWrongMagic) {
@@ -186,8 +189,9 @@ TEST(SampleTable, TableSetRefusesAnotherConstruction) {
   for (Family f : {Family::Pixel, Family::Lens, Family::Time, Family::Light, Family::Gloss})
     std::filesystem::copy_file(std::filesystem::path(PDRT_TABLE_DIR) / table_file_name(f), dir / table_file_name(f));
   EXPECT_NO_THROW(load_tables(dir));
-  std::filesystem::copy_file(std::filesystem::path(PDRT_TABLE_DIR) / table_file_name(Family::Lens, TableSetKind::Poisson065),
-                             dir / table_file_name(Family::Lens), std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(
+      std::filesystem::path(PDRT_TABLE_DIR) / table_file_name(Family::Lens, TableSetKind::Poisson065),
+      dir / table_file_name(Family::Lens), std::filesystem::copy_options::overwrite_existing);
   try {
     load_tables(dir);
     FAIL() << "accepted stratified-pd lens tables as the poisson set's";
@@ -197,9 +201,10 @@ TEST(SampleTable, TableSetRefusesAnotherConstruction) {
                        ": construction is stratified-pd, the poisson sampler's lens tables must be owen-pd");
   }
   // And from the command line: exit 1, one line, no image.
-  const auto r = test::run_pdrt(std::string("render '") + PDRT_SCENES_DIR + "/moving-square.json' --width 8 --height 8 -o '" +
-                                    (dir / "o.exr").string() + "' --quiet",
-                                "PDRT_TABLES='" + dir.string() + "'");
+  const auto r =
+      test::run_pdrt(std::string("render '") + PDRT_SCENES_DIR + "/moving-square.json' --width 8 --height 8 -o '" +
+                         (dir / "o.exr").string() + "' --quiet",
+                     "PDRT_TABLES='" + dir.string() + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(test::line_count(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("construction is stratified-pd"), std::string::npos) << r.err;
@@ -269,7 +274,8 @@ TEST(DefaultTables, PixelSubsequencesHoldTheirLocalRadius) {
       std::vector<uint32_t> c(t.coords[k].begin() + 2 * start, t.coords[k].begin() + 2 * (start + n));
       auto m = prefix_min_distance(c, 2, n, false);
       for (uint32_t i = 1; i < n; ++i)
-        ASSERT_GE(m[i], t.radius[k][start + i] * (1 - 1e-6)) << "table " << k << " pixel " << cell << " prefix " << i + 1;
+        ASSERT_GE(m[i], t.radius[k][start + i] * (1 - 1e-6))
+            << "table " << k << " pixel " << cell << " prefix " << i + 1;
     }
 }
 
@@ -314,7 +320,8 @@ TEST(DefaultTables, PoissonPowerOfTwoPrefixesAreStratified) {
     EXPECT_EQ(t.params.construction, Construction::OwenPD);
     for (uint32_t k = 0; k < t.table_count(); ++k) {
       const PointSet ps = table_points(t, k);
-      for (std::size_t n = 1; n <= ps.size(); n *= 2) ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " " << k << " " << n;
+      for (std::size_t n = 1; n <= ps.size(); n *= 2)
+        ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " " << k << " " << n;
     }
   }
   const SampleTable& t = *set.family[int(Family::Time)];

@@ -27,13 +27,13 @@ double uniformity_p(const std::string& name, Family f, int bounce, int64_t index
     for (int y = 0; y < 64; ++y)
       for (int x = 0; x < 64; ++x)
         for (int64_t i = index; i < index + pooled; ++i) {
-        if (ps.dim == 1) {
-          ps.coords.push_back(s->get_1d(x, y, i, f, bounce));
-        } else {
-          Vec2 v = s->get_2d(x, y, i, f, bounce);
-          ps.coords.push_back(v[0]), ps.coords.push_back(v[1]);
+          if (ps.dim == 1) {
+            ps.coords.push_back(s->get_1d(x, y, i, f, bounce));
+          } else {
+            Vec2 v = s->get_2d(x, y, i, f, bounce);
+            ps.coords.push_back(v[0]), ps.coords.push_back(v[1]);
+          }
         }
-      }
   }
   ps.radius.assign(ps.size(), 0.0);
   return chi_square_uniformity(ps).p;

@@ -33,8 +33,12 @@ TEST_P(EverySampler, ReplaysInAnyOrderAndFromAnyThread) {
   std::vector<Vec2> forward(256), backward(256), threaded(256);
   for (int i = 0; i < 256; ++i) forward[i] = s->get_2d(7, 9, i, Family::Pixel, 0);
   for (int i = 255; i >= 0; --i) backward[i] = s->get_2d(7, 9, i, Family::Pixel, 0);
-  std::thread a([&] { for (int i = 0; i < 256; i += 2) threaded[i] = s->get_2d(7, 9, i, Family::Pixel, 0); });
-  std::thread b([&] { for (int i = 1; i < 256; i += 2) threaded[i] = s->get_2d(7, 9, i, Family::Pixel, 0); });
+  std::thread a([&] {
+    for (int i = 0; i < 256; i += 2) threaded[i] = s->get_2d(7, 9, i, Family::Pixel, 0);
+  });
+  std::thread b([&] {
+    for (int i = 1; i < 256; i += 2) threaded[i] = s->get_2d(7, 9, i, Family::Pixel, 0);
+  });
   a.join();
   b.join();
   EXPECT_EQ(forward, backward);
@@ -212,7 +216,6 @@ TEST(SobolSampler, PowerOfTwoPrefixesAreZeroTwoNets) {
     }
 }
 
-
 // RMS error over 64 x 32 pixels of estimating the time a moving edge has covered a pixel,
 // the integral of [t < tau] = tau, from each pixel's first n time samples.
 double time_step_rmse(const Sampler& s, int n) {
@@ -277,7 +280,8 @@ TEST(PoissonSampler, EveryStreamKeepsItsStrata) {
   for (int bounce : {0, 48}) {
     for (uint64_t n = 1; n <= 2048; n *= 2) {
       std::vector<int> hits(n, 0);
-      for (uint64_t i = 0; i < n; ++i) ++hits[std::size_t(s->get_1d(9, 9, int64_t(i), Family::Time, bounce) * double(n))];
+      for (uint64_t i = 0; i < n; ++i)
+        ++hits[std::size_t(s->get_1d(9, 9, int64_t(i), Family::Time, bounce) * double(n))];
       ASSERT_TRUE(std::all_of(hits.begin(), hits.end(), [](int h) { return h == 1; })) << bounce << " " << n;
     }
   }

@@ -154,7 +154,8 @@ TEST(Spectra, McCoolRingHasNoSquareLatticePeaks) {
 TEST(Spectra, SectorRatioDetectsTheLatticeOfUnlimitedBudget) {
   // The detector itself: the saturating variant started at the diameter of the torus
   // (sqrt(2)/2) must show the peaks.
-  double ratio = sector_ratio(mccool_periodogram(int64_t(1) << 40, std::sqrt(0.5)), {0, 45, 90, 135, 180, 225, 270, 315}, 4.0);
+  double ratio =
+      sector_ratio(mccool_periodogram(int64_t(1) << 40, std::sqrt(0.5)), {0, 45, 90, 135, 180, 225, 270, 315}, 4.0);
   RecordProperty("sector_ratio", std::to_string(ratio));
   EXPECT_GT(ratio, 1.5);
 }

@@ -43,8 +43,7 @@ TEST(StratifiedBestCandidate1D, EveryPrefixKeepsAMinimumDistanceFarAboveJitters)
     worst_all = std::min(worst_all, worst);
     EXPECT_GT(worst, 0.25) << seed;
     // The recorded radius is the prefix's minimum distance.
-    for (std::size_t i = 1; i < ps.size(); ++i)
-      ASSERT_NEAR(ps.radius[i], rho[i - 1] / double(i + 1), 1e-12) << i;
+    for (std::size_t i = 1; i < ps.size(); ++i) ASSERT_NEAR(ps.radius[i], rho[i - 1] / double(i + 1), 1e-12) << i;
   }
   std::printf("stratified-bc worst prefix rho (n >= 16, 1024 points, 8 seeds): %.3f\n", worst_all);
   EXPECT_TRUE(std::isinf(draw(1, 1).radius[0]));

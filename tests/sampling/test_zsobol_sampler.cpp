@@ -41,7 +41,8 @@ TEST(ZSobolSampler, AlignedTwoByTwoPixelGroupsTogetherFormANet) {
   auto s = make_zsobol_sampler(11, {16, 32, 32});
   for (int y = 0; y < 32; y += 2)
     for (int x = 0; x < 32; x += 2)
-      ASSERT_TRUE(is_02_net(points_of(*s, {{x, y}, {x + 1, y}, {x, y + 1}, {x + 1, y + 1}}, 16, Family::Light, 0), 0, 64));
+      ASSERT_TRUE(
+          is_02_net(points_of(*s, {{x, y}, {x + 1, y}, {x, y + 1}, {x + 1, y + 1}}, 16, Family::Light, 0), 0, 64));
   std::vector<std::array<int, 2>> group;
   for (int y = 4; y < 8; ++y)
     for (int x = 8; x < 12; ++x) group.push_back({x, y});
@@ -138,7 +139,8 @@ TEST(ZSobolSampler, RefusesImagesItCannotOrder) {
     make_zsobol_sampler(1, {1024, 4096, 4096});
     FAIL() << "accepted 34 index bits";
   } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("4096 x 4096 pixels at 1024 samples per pixel need 34 bits"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("4096 x 4096 pixels at 1024 samples per pixel need 34 bits"),
+              std::string::npos)
         << e.what();
   }
   EXPECT_NO_THROW(make_zsobol_sampler(1, {256, 4096, 4096}));

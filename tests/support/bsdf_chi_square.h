@@ -45,7 +45,8 @@ double adaptive_simpson(F& f, double x0, double x1, double y0, double y1, double
   double q[4] = {simpson3x3(f, x0, xm, y0, ym), simpson3x3(f, xm, x1, y0, ym), simpson3x3(f, x0, xm, ym, y1),
                  simpson3x3(f, xm, x1, ym, y1)};
   double halves = q[0] + q[1] + q[2] + q[3];
-  if (depth == 0 || std::abs(halves - whole) <= 15.0 * std::max(eps, rel * std::abs(halves))) return halves + (halves - whole) / 15.0;
+  if (depth == 0 || std::abs(halves - whole) <= 15.0 * std::max(eps, rel * std::abs(halves)))
+    return halves + (halves - whole) / 15.0;
   return adaptive_simpson(f, x0, xm, y0, ym, q[0], eps / 4, rel, depth - 1) +
          adaptive_simpson(f, xm, x1, y0, ym, q[1], eps / 4, rel, depth - 1) +
          adaptive_simpson(f, x0, xm, ym, y1, q[2], eps / 4, rel, depth - 1) +
@@ -54,8 +55,8 @@ double adaptive_simpson(F& f, double x0, double x1, double y0, double y1, double
 
 struct FitResult {
   double statistic = 0, dof = 0, p = 0;
-  double pdf_integral = 0;      // of pdf() over the sphere
-  double success_fraction = 0;  // of sample() calls returning true
+  double pdf_integral = 0;       // of pdf() over the sphere
+  double success_fraction = 0;   // of sample() calls returning true
   int64_t zero_pdf_samples = 0;  // successful samples where pdf() is 0 (must never happen)
   int64_t pdf_mismatches = 0;    // samples whose pdf differs from pdf() by > 1e-3 relative
   double delta_probability = 0;  // the discrete probability delta samples report (their own category)
@@ -98,9 +99,7 @@ FitResult chi_square_fit(const B& bsdf, const Vec3& wo, uint64_t seed, int64_t n
   // (theta, phi) with the sin theta Jacobian, which is smooth at the poles where pdf(cos, phi)
   // has a square-root singularity. Each bin starts as 2x2 cells so that a narrow lobe inside a
   // bin is seen before adaptivity decides.
-  auto f = [&](double theta, double phi) {
-    return double(bsdf.pdf(wo, from_theta_phi(theta, phi))) * std::sin(theta);
-  };
+  auto f = [&](double theta, double phi) { return double(bsdf.pdf(wo, from_theta_phi(theta, phi))) * std::sin(theta); };
   const double dc = 2.0 / kCosBins, dp = 2 * M_PI / kPhiBins;
   const int split = 2;
   const double eps = 1e-7 / (split * split);  // absolute, per cell; ~0.05 counts per bin at n = 5e5

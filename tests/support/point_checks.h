@@ -16,8 +16,7 @@ inline double brute_min_distance(const PointSet& ps, std::size_t prefix, bool pe
   std::size_t n = std::min(prefix, ps.size());
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      best = std::min(best, distance_sq(ps.point(i), ps.point(j), periodic));
+    for (std::size_t j = i + 1; j < n; ++j) best = std::min(best, distance_sq(ps.point(i), ps.point(j), periodic));
   return std::sqrt(best);
 }
 inline double brute_min_distance(const PointSet& ps, std::size_t prefix = std::size_t(-1)) {

@@ -53,5 +53,8 @@ class SceneFileTest : public ::testing::Test {
 
 }  // namespace pdrt::test
 
-#define EXPECT_ERROR(f, text) \
-  do { std::string m_ = error(f); EXPECT_NE(m_.find(text), std::string::npos) << m_; } while (0)
+#define EXPECT_ERROR(f, text)                          \
+  do {                                                 \
+    std::string m_ = error(f);                         \
+    EXPECT_NE(m_.find(text), std::string::npos) << m_; \
+  } while (0)

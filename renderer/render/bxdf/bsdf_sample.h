@@ -12,7 +12,7 @@ struct BsdfSample {
   float pdf = 0;       // solid-angle pdf of wi (for a delta lobe: the discrete probability of that lobe)
   bool delta = false;  // chosen lobe is a Dirac delta (mirror / smooth dielectric): not usable for MIS
   bool transmission = false;
-  float eta = 1;       // transmitted over incident index for transmission, else 1 (radiance scales by 1/eta^2)
+  float eta = 1;  // transmitted over incident index for transmission, else 1 (radiance scales by 1/eta^2)
 };
 
 // Smallest GGX alpha: keeps rough lobes non-delta and their D finite in float.

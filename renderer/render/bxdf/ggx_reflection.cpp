@@ -18,8 +18,7 @@ GgxReflectionBxdf GgxReflectionBxdf::glossy(const Vec3& f0, float alpha, bool en
   return b;
 }
 
-GgxReflectionBxdf GgxReflectionBxdf::conductor(const Vec3& eta, const Vec3& k, float alpha,
-                                               bool energy_compensation) {
+GgxReflectionBxdf GgxReflectionBxdf::conductor(const Vec3& eta, const Vec3& k, float alpha, bool energy_compensation) {
   GgxReflectionBxdf b;
   b.conductor_ = true;
   b.eta_ = eta, b.k_ = k;

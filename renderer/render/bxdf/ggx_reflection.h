@@ -35,10 +35,10 @@ class GgxReflectionBxdf {
   float alpha_ = 1.0f;
   bool conductor_ = false;
   Vec3 eta_{1.0f}, k_{0.0f};
-  bool ms_ = false;        // energy compensation active
-  Vec3 ms_scale_{0.0f};    // F_ms / (pi (1 - E_avg)) per channel
+  bool ms_ = false;                        // energy compensation active
+  Vec3 ms_scale_{0.0f};                    // F_ms / (pi (1 - E_avg)) per channel
   float ms_pick_ss_ = 0, ms_pick_ms_ = 0;  // mean F_avg and F_ms, weights of the lobe choice
-  MsAlbedoRow row_;        // side 0 only
+  MsAlbedoRow row_;                        // side 0 only
 };
 
 }  // namespace pdrt

@@ -10,9 +10,9 @@
 namespace pdrt {
 
 struct DistantLight {
-  Vec3 to_light;    // unit, against the direction the light travels
+  Vec3 to_light;  // unit, against the direction the light travels
   Vec3 irradiance;
-  float lum = 0;    // luminance of the irradiance (> 0)
+  float lum = 0;  // luminance of the irradiance (> 0)
 
   InfiniteLightBounds bounds() const { return {to_light, lum, true}; }
   bool sample(const Vec3&, float, std::array<double, 2>, LightSample* out) const {

@@ -14,9 +14,9 @@
 namespace pdrt {
 
 struct EnvironmentLight {
-  Vec3 constant{0.0f};                       // the constant environment (black with an image)
+  Vec3 constant{0.0f};                        // the constant environment (black with an image)
   std::shared_ptr<const EnvironmentMap> map;  // or the image (shared: a light is copied into the set)
-  float irradiance = 0;                      // pi x (mean) luminance, 0 if it emits nothing
+  float irradiance = 0;                       // pi x (mean) luminance, 0 if it emits nothing
 
   EnvironmentLight() = default;
   explicit EnvironmentLight(const EnvironmentDesc& d);

@@ -9,7 +9,7 @@
 namespace pdrt {
 
 struct LightPlacement {
-  const DeltaLightDesc* desc = nullptr;      // the scene's
+  const DeltaLightDesc* desc = nullptr;       // the scene's
   float shutter_open = 0, shutter_close = 1;  // the camera's: time is normalised to the shutter
 
   // World position and (if `axis`) unit axis at the normalised time.

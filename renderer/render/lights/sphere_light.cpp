@@ -28,7 +28,8 @@ SurfaceHit sphere_hit(const EmbreeScene& s, int shape, const Affine& m, const Ve
 }
 
 // The point of a sphere light nearest to `near`, with the error of its (transformed) centre.
-ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, const Vec3& c, float r, const Vec3& near) {
+ErrorPoint sphere_light_point(const EmbreeScene& s, int shape, const Affine& m, const Vec3& c, float r,
+                              const Vec3& near) {
   ErrorPoint x = sphere_point(c, r, near);
   if (s.moving(shape)) x.error += transform_point(m, {s.sphere_center(shape), Vec3(0.0f)}).error;
   return x;
@@ -101,8 +102,7 @@ bool SphereLight::sample_area(const Affine& m, const Vec3& c, float r, const Vec
   float cos_l = -dot(n, out->wi);
   if (std::abs(cos_l) < 1e-7f) return false;
   const Material& mat = emitter.material();
-  out->radiance =
-      (cos_l > 0 || mat.two_sided) ? emitter.radiance(mat, sphere_hit(s, emitter.shape, m, p)) : Vec3(0.0f);
+  out->radiance = (cos_l > 0 || mat.two_sided) ? emitter.radiance(mat, sphere_hit(s, emitter.shape, m, p)) : Vec3(0.0f);
   out->pdf = d2 / (std::abs(cos_l) * 4 * kPi * r * r);
   return true;
 }

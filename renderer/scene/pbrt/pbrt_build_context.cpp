@@ -32,7 +32,9 @@ void PbrtBuild::place(const PbrtLocation& at, Affine* transform, std::vector<Mot
   for (int i = 0; i < 2; ++i) {
     double shear = 0;
     MotionKey k = decompose(gs.cur.ctm.t[i], &shear);
-    if (shear > 1e-4) note(at, "the transform at time " + pbrt_number(gs.times[i]) + " shears (dropped: pdrt's motion keys hold scale, rotation, translation)");
+    if (shear > 1e-4)
+      note(at, "the transform at time " + pbrt_number(gs.times[i]) +
+                   " shears (dropped: pdrt's motion keys hold scale, rotation, translation)");
     k.time = float(gs.times[i]);
     motion->push_back(k);
   }
@@ -47,7 +49,8 @@ Vec3 PbrtBuild::color(const PbrtParams& ps, const std::string& name, Vec3 fallba
     if (p->numbers.size() != 3) fail(p->at, p->quoted() + " needs 3 values, got " + std::to_string(p->numbers.size()));
     Vec3 c{float(p->numbers[0]), float(p->numbers[1]), float(p->numbers[2])};
     for (int i = 0; i < 3; ++i)
-      if (!(c[i] >= 0)) fail(p->at, "\"" + p->type + " " + name + "\" must have components >= 0, got " + pbrt_number(c[i]));
+      if (!(c[i] >= 0))
+        fail(p->at, "\"" + p->type + " " + name + "\" must have components >= 0, got " + pbrt_number(c[i]));
     return c;
   }
   if (type == "blackbody") {
@@ -82,7 +85,8 @@ float PbrtBuild::positive(const PbrtParams& ps, const std::string& name, float f
   std::optional<double> v = ps.find_float(name);
   if (!v) return fallback;
   if (!(allow_zero ? *v >= 0 : *v > 0) || !std::isfinite(*v))
-    fail(ps.find(name)->at, "\"float " + name + "\" must be " + (allow_zero ? ">= 0" : "> 0") + ", got " + pbrt_number(*v));
+    fail(ps.find(name)->at,
+         "\"float " + name + "\" must be " + (allow_zero ? ">= 0" : "> 0") + ", got " + pbrt_number(*v));
   return float(*v);
 }
 
@@ -98,7 +102,8 @@ std::optional<int> PbrtBuild::texture_ref(const PbrtParam& p, const std::string&
 }
 
 // A texture input of a checkerboard: a number, an rgb or a texture.
-TextureInput PbrtBuild::texture_input(const PbrtParams& ps, const std::string& name, float fallback, const std::string& kind) {
+TextureInput PbrtBuild::texture_input(const PbrtParams& ps, const std::string& name, float fallback,
+                                      const std::string& kind) {
   TextureInput in;
   in.value = Vec3(fallback);
   const PbrtParam* p = ps.find(name);
@@ -117,7 +122,8 @@ int PbrtBuild::add_texture(TextureDesc t, const std::string& name, const PbrtLoc
   t.where = at.str();
   const long long cost = texture_node_cost(t, texture_cost);
   if (cost > kMaxTextureEvaluation)
-    fail(at, "texture \"" + name + "\" evaluates " + (cost >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost)) +
+    fail(at, "texture \"" + name + "\" evaluates " +
+                 (cost >= (1LL << 40) ? std::string("more than 2^40") : std::to_string(cost)) +
                  " scale/mix/invert/power nodes per lookup (at most " + std::to_string(kMaxTextureEvaluation) + ")");
   out.scene.textures.push_back(std::move(t));
   texture_cost.push_back(cost);

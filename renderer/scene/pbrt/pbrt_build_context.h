@@ -42,8 +42,8 @@ struct PbrtBuild {
   PbrtCameraState camera;
   std::optional<PbrtLocation> last;  // the latest directive
   int default_material = -1;
-  std::vector<long long> texture_cost;  // per scene texture: texture_node_cost
-  std::map<std::string, int> textures;  // "float:name" / "spectrum:name" -> index, -1 unsupported
+  std::vector<long long> texture_cost;             // per scene texture: texture_node_cost
+  std::map<std::string, int> textures;             // "float:name" / "spectrum:name" -> index, -1 unsupported
   std::vector<TextureBinding>* bind_to = nullptr;  // where color() binds a texture parameter
   MaterialParam bind_param = MaterialParam::Albedo;
 

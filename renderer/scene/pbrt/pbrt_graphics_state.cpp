@@ -12,13 +12,18 @@ namespace {
 // The Attribute target a directive reads its defaults from ("" = none).
 const char* attribute_target(PbrtDirectiveKind kind) {
   switch (kind) {
-    case PbrtDirectiveKind::Shape: return "shape";
+    case PbrtDirectiveKind::Shape:
+      return "shape";
     case PbrtDirectiveKind::LightSource:
-    case PbrtDirectiveKind::AreaLightSource: return "light";
+    case PbrtDirectiveKind::AreaLightSource:
+      return "light";
     case PbrtDirectiveKind::Material:
-    case PbrtDirectiveKind::MakeNamedMaterial: return "material";
-    case PbrtDirectiveKind::Texture: return "texture";
-    default: return "";
+    case PbrtDirectiveKind::MakeNamedMaterial:
+      return "material";
+    case PbrtDirectiveKind::Texture:
+      return "texture";
+    default:
+      return "";
   }
 }
 
@@ -37,9 +42,12 @@ void PbrtGraphicsState::set(const Mat4& m) {
 void PbrtGraphicsState::transform_directive(const PbrtDirective& d) {
   const auto& a = d.numbers;
   switch (d.kind) {
-    case PbrtDirectiveKind::Identity: return set(Mat4{});
-    case PbrtDirectiveKind::Translate: return apply(Mat4::translate(a[0], a[1], a[2]));
-    case PbrtDirectiveKind::Scale: return apply(Mat4::scale(a[0], a[1], a[2]));
+    case PbrtDirectiveKind::Identity:
+      return set(Mat4{});
+    case PbrtDirectiveKind::Translate:
+      return apply(Mat4::translate(a[0], a[1], a[2]));
+    case PbrtDirectiveKind::Scale:
+      return apply(Mat4::scale(a[0], a[1], a[2]));
     case PbrtDirectiveKind::Rotate:
       if (a[1] == 0 && a[2] == 0 && a[3] == 0) fail(d.at, "Rotate needs a non-zero axis");
       return apply(Mat4::rotate(a[0], a[1], a[2], a[3]));
@@ -49,8 +57,10 @@ void PbrtGraphicsState::transform_directive(const PbrtDirective& d) {
       if (!m) fail(d.at, "LookAt needs distinct eye and look points and an up vector not along the view");
       return apply(*m);
     }
-    case PbrtDirectiveKind::Transform: return set(Mat4::from_pbrt(a.data()));
-    case PbrtDirectiveKind::ConcatTransform: return apply(Mat4::from_pbrt(a.data()));
+    case PbrtDirectiveKind::Transform:
+      return set(Mat4::from_pbrt(a.data()));
+    case PbrtDirectiveKind::ConcatTransform:
+      return apply(Mat4::from_pbrt(a.data()));
     case PbrtDirectiveKind::CoordinateSystem:
       named[d.strings[0]] = cur.ctm;
       return;
@@ -67,17 +77,21 @@ void PbrtGraphicsState::transform_directive(const PbrtDirective& d) {
       return;
     case PbrtDirectiveKind::TransformTimes:
       if (in_world) fail(d.at, "TransformTimes must come before WorldBegin");
-      if (!(a[0] <= a[1])) fail(d.at, "TransformTimes needs start <= end, got " + pbrt_number(a[0]) + " > " + pbrt_number(a[1]));
+      if (!(a[0] <= a[1]))
+        fail(d.at, "TransformTimes needs start <= end, got " + pbrt_number(a[0]) + " > " + pbrt_number(a[1]));
       times[0] = a[0], times[1] = a[1];
       return;
     case PbrtDirectiveKind::ReverseOrientation:
       cur.reverse = !cur.reverse;
       return;
     case PbrtDirectiveKind::AttributeBegin:
-    case PbrtDirectiveKind::TransformBegin: return begin(d);
+    case PbrtDirectiveKind::TransformBegin:
+      return begin(d);
     case PbrtDirectiveKind::AttributeEnd:
-    case PbrtDirectiveKind::TransformEnd: return end(d);
-    default: fail(d.at, "directive " + d.name + " is not a transform");
+    case PbrtDirectiveKind::TransformEnd:
+      return end(d);
+    default:
+      fail(d.at, "directive " + d.name + " is not a transform");
   }
 }
 
@@ -92,7 +106,8 @@ void PbrtGraphicsState::end(const PbrtDirective& d) {
   if (stack.empty()) fail(d.at, n + " without a matching " + (!closes_transform ? "AttributeBegin" : "TransformBegin"));
   const bool transform_only = stack_transform_only.back();
   if (transform_only != closes_transform)
-    fail(d.at, n + " closes the " + (transform_only ? "TransformBegin" : "AttributeBegin") + " at " + stack.back().first.str());
+    fail(d.at, n + " closes the " + (transform_only ? "TransformBegin" : "AttributeBegin") + " at " +
+                   stack.back().first.str());
   if (transform_only) {
     cur.ctm = stack.back().second.ctm;
     std::copy(stack.back().second.active, stack.back().second.active + 2, cur.active);

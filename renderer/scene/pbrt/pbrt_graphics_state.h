@@ -31,7 +31,7 @@ struct PbrtAttributes {
   PbrtTransformPair ctm;
   bool active[2] = {true, true};
   bool reverse = false;
-  int material = -1;  // index into the scene's materials; -1 = pbrt's default (diffuse 0.5)
+  int material = -1;       // index into the scene's materials; -1 = pbrt's default (diffuse 0.5)
   bool interface = false;  // the current material is "interface": shapes bound no surface
   std::optional<PbrtAreaLight> area;
   // Attribute "shape" | "light" | "material" | "texture": parameters every later directive of

@@ -20,7 +20,8 @@ namespace {
 std::optional<double> positive_or_unset(PbrtBuild& b, const PbrtParams& ps, const char* name) {
   std::optional<double> v = ps.find_float(name);
   if (!v) return std::nullopt;
-  if (!std::isfinite(*v)) b.fail(ps.find(name)->at, std::string("\"float ") + name + "\" must be finite, got " + pbrt_number(*v));
+  if (!std::isfinite(*v))
+    b.fail(ps.find(name)->at, std::string("\"float ") + name + "\" must be finite, got " + pbrt_number(*v));
   return *v > 0 ? v : std::nullopt;
 }
 
@@ -29,14 +30,16 @@ void image_light(PbrtBuild& b, const PbrtDirective& d, float scale) {
   const PbrtParam& f = *ps.find("filename");
   const std::string name = *ps.find_string("filename");
   if (ps.find("L")) b.fail(ps.find("L")->at, "an infinite light takes \"L\" or \"filename\", not both");
-  const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
-  const std::filesystem::path file = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : rel / name;
+  const std::filesystem::path rel =
+      d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+  const std::filesystem::path file =
+      std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : rel / name;
   EnvironmentImage img;
   std::string reason;
   if (!read_environment_image(file, &img, &reason)) b.fail(f.at, "cannot read \"" + name + "\": " + reason);
   if (img.width != img.height)
     b.fail(f.at, "\"" + name + "\" is " + std::to_string(img.width) + " x " + std::to_string(img.height) +
-                   ": pbrt-v4's environment images are square (equal-area octahedral)");
+                     ": pbrt-v4's environment images are square (equal-area octahedral)");
   for (float v : img.rgb)
     if (!(std::isfinite(v) && v >= 0)) b.fail(f.at, "\"" + name + "\" holds a negative or non-finite value");
   if (!b.gs.cur.ctm.t[0].affine()) b.fail(d.at, "the current transform is projective");
@@ -158,9 +161,12 @@ void area_light(PbrtBuild& b, const PbrtDirective& d) {
 
 void translate_pbrt_light(PbrtBuild& b, const PbrtDirective& d) {
   switch (d.kind) {
-    case PbrtDirectiveKind::LightSource: return light(b, d);
-    case PbrtDirectiveKind::AreaLightSource: return area_light(b, d);
-    default: b.fail(d.at, "directive " + d.name + " is not a light");
+    case PbrtDirectiveKind::LightSource:
+      return light(b, d);
+    case PbrtDirectiveKind::AreaLightSource:
+      return area_light(b, d);
+    default:
+      b.fail(d.at, "directive " + d.name + " is not a light");
   }
 }
 

@@ -44,7 +44,8 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
       return r;
     }
     r.value = *ps.find_float(n);
-    if (!(r.value >= 0) || !std::isfinite(r.value)) b.fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + pbrt_number(r.value));
+    if (!(r.value >= 0) || !std::isfinite(r.value))
+      b.fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + pbrt_number(r.value));
     return r;
   };
   std::optional<Rough> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
@@ -52,7 +53,8 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
   const bool remap = ps.get_bool("remaproughness", true);
   if (ru.texture < 0 && rv.texture < 0) {
     if (ru.value != rv.value)
-      b.note(d.at, "anisotropic roughness (" + pbrt_number(ru.value) + ", " + pbrt_number(rv.value) + ") is not supported (their mean used)");
+      b.note(d.at, "anisotropic roughness (" + pbrt_number(ru.value) + ", " + pbrt_number(rv.value) +
+                       ") is not supported (their mean used)");
     double rough = 0.5 * (ru.value + rv.value);
     double alpha = remap ? std::sqrt(rough) : rough;
     return float(std::min(1.0, std::sqrt(alpha)));
@@ -73,7 +75,6 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
   return 0;
 }
 
-
 // A conductor's eta or k: rgb, or pbrt-v4's named metal spectra for the metals pdrt has.
 Vec3 metal_param(PbrtBuild& b, const PbrtParams& ps, const std::string& name, bool eta) {
   const PbrtParam* p = ps.find(name);
@@ -83,7 +84,8 @@ Vec3 metal_param(PbrtBuild& b, const PbrtParams& ps, const std::string& name, bo
   if (pbrt_canonical_type(p->type) == "spectrum" && !p->strings.empty()) {
     const std::string& s = p->strings[0];
     for (const char* metal : {"Au", "Ag", "Cu", "Al"})
-      if (s == std::string("metal-") + metal + (eta ? "-eta" : "-k")) return eta ? find_named_metal(metal)->eta : find_named_metal(metal)->k;
+      if (s == std::string("metal-") + metal + (eta ? "-eta" : "-k"))
+        return eta ? find_named_metal(metal)->eta : find_named_metal(metal)->k;
     b.note(p->at, "named spectrum \"" + s + "\" is not supported (copper used)");
     return eta ? cu->eta : cu->k;
   }
@@ -93,10 +95,9 @@ Vec3 metal_param(PbrtBuild& b, const PbrtParams& ps, const std::string& name, bo
 }
 
 float named_glass_ior(PbrtBuild& b, const PbrtParam& p) {
-  static const std::map<std::string, float> kGlass = {{"glass-BK7", 1.5168f}, {"glass-BAF10", 1.6700f},
-                                                      {"glass-FK51A", 1.4866f}, {"glass-LASF9", 1.8503f},
-                                                      {"glass-F5", 1.6034f}, {"glass-F10", 1.6200f},
-                                                      {"glass-F11", 1.6209f}};
+  static const std::map<std::string, float> kGlass = {
+      {"glass-BK7", 1.5168f}, {"glass-BAF10", 1.6700f}, {"glass-FK51A", 1.4866f}, {"glass-LASF9", 1.8503f},
+      {"glass-F5", 1.6034f},  {"glass-F10", 1.6200f},   {"glass-F11", 1.6209f}};
   if (!p.strings.empty()) {
     auto it = kGlass.find(p.strings[0]);
     if (it != kGlass.end()) return it->second;
@@ -121,7 +122,8 @@ float index_of_refraction(PbrtBuild& b, const PbrtParams& ps) {
 }
 
 // Returns the material's index, or -2 for "interface" (a medium boundary, no surface).
-int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, const PbrtParams& ps, const std::string& name) {
+int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, const PbrtParams& ps,
+             const std::string& name) {
   Material m;
   m.name = name;
   // pbrt-v4's microfacet lobes lose the energy of multiple scattering; pdrt's compensation
@@ -137,7 +139,8 @@ int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, cons
     m.type = MaterialType::Diffuse;
     m.albedo = albedo(b, ps, m);
   } else if (type == "conductor" || type == "coatedconductor") {
-    if (type == "coatedconductor") b.note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
+    if (type == "coatedconductor")
+      b.note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
     m.type = MaterialType::Conductor;
     m.roughness = roughness(b, d, ps, m);
     const std::string pre = type == "coatedconductor" ? "conductor." : "";
@@ -169,7 +172,8 @@ int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, cons
     m.ior = eta;
     const float thickness = b.positive(ps, "thickness", 0.01f, true);
     const Vec3 medium = b.color(ps, "albedo", Vec3(0.0f), false);
-    if (!is_black(medium)) b.note(d.at, "a scattering medium in the coat (\"albedo\") is not supported (it only absorbs)");
+    if (!is_black(medium))
+      b.note(d.at, "a scattering medium in the coat (\"albedo\") is not supported (it only absorbs)");
     m.coat_color = Vec3(std::exp(-thickness));
     m.coat_thickness = 1;
     for (const char* k : {"g", "maxdepth", "nsamples"}) ps.find(k) && (ps.find(k)->used = true);
@@ -192,8 +196,10 @@ int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, cons
     p->used = true;
     for (size_t i = 0; i < 2; ++i) {
       auto it = b.gs.named_materials.find(p->strings[i]);
-      if (it == b.gs.named_materials.end()) b.fail(p->at, "unknown named material \"" + p->strings[i] + "\" in \"materials\"");
-      if (it->second == -2) b.fail(p->at, "a mix of \"" + p->strings[i] + "\" (an interface, no surface) is not supported");
+      if (it == b.gs.named_materials.end())
+        b.fail(p->at, "unknown named material \"" + p->strings[i] + "\" in \"materials\"");
+      if (it->second == -2)
+        b.fail(p->at, "a mix of \"" + p->strings[i] + "\" (an interface, no surface) is not supported");
       m.mix[i] = it->second;
     }
     if (const PbrtParam* a = ps.find("amount"); a && pbrt_canonical_type(a->type) == "texture") {
@@ -237,7 +243,8 @@ void translate_pbrt_material(PbrtBuild& b, const PbrtDirective& d) {
       cur.material = it->second == -2 ? -1 : it->second;
       return;
     }
-    default: b.fail(d.at, "directive " + d.name + " is not a material");
+    default:
+      b.fail(d.at, "directive " + d.name + " is not a material");
   }
 }
 

@@ -144,7 +144,8 @@ MotionKey decompose(const Mat4& m, double* shear) {
                  c22 = r[0][0] * r[1][1] - r[0][1] * r[1][0];
     const double det = r[0][0] * c00 + r[0][1] * c01 + r[0][2] * c02;
     if (!(std::abs(det) > 1e-300)) break;
-    const double it_[3][3] = {{c00 / det, c01 / det, c02 / det}, {c10 / det, c11 / det, c12 / det}, {c20 / det, c21 / det, c22 / det}};
+    const double it_[3][3] = {
+        {c00 / det, c01 / det, c02 / det}, {c10 / det, c11 / det, c12 / det}, {c20 / det, c21 / det, c22 / det}};
     double change = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {

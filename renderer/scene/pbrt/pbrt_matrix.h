@@ -23,10 +23,10 @@ struct Mat4 {
 
   std::optional<Mat4> inverse() const;  // nullopt when singular
   bool affine() const { return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1; }
-  double det3() const;                  // of the upper-left 3x3: < 0 swaps handedness
-  Vec3 point(const Vec3& p) const;      // affine part only
+  double det3() const;              // of the upper-left 3x3: < 0 swaps handedness
+  Vec3 point(const Vec3& p) const;  // affine part only
   Vec3 vector(const Vec3& v) const;
-  Affine to_affine() const;             // the upper 3x4, in float
+  Affine to_affine() const;  // the upper 3x4, in float
   bool operator==(const Mat4& o) const { return m == o.m; }
 };
 Mat4 operator*(const Mat4& a, const Mat4& b);

@@ -18,7 +18,7 @@ struct PbrtParam {
   std::string type;  // integer float point2 vector2 point3 vector3 normal3 normal point vector bool
                      // string texture rgb color spectrum blackbody (as written)
   std::string name;
-  PbrtLocation at;   // of the "type name" string
+  PbrtLocation at;                   // of the "type name" string
   std::vector<double> numbers;       // numeric types (and spectrum given as lambda/value pairs)
   std::vector<std::string> strings;  // string, texture, spectrum given by name or file
   std::vector<bool> bools;
@@ -58,9 +58,9 @@ class PbrtParams {
   // Arrays (empty when absent): every value of the type; triples for the 3-vector types.
   std::vector<double> floats(const std::string& name) const;
   std::vector<int64_t> ints(const std::string& name) const;
-  std::vector<Vec3> point3s(const std::string& name) const;   // point3 / point
-  std::vector<Vec3> normal3s(const std::string& name) const;  // normal3 / normal
-  std::vector<Vec3> vector3s(const std::string& name) const;  // vector3 / vector
+  std::vector<Vec3> point3s(const std::string& name) const;                  // point3 / point
+  std::vector<Vec3> normal3s(const std::string& name) const;                 // normal3 / normal
+  std::vector<Vec3> vector3s(const std::string& name) const;                 // vector3 / vector
   std::vector<std::array<float, 2>> point2s(const std::string& name) const;  // point2 (also a flat float list)
 
   // The parameters no lookup has touched, in file order.

@@ -15,15 +15,15 @@ namespace {
 
 // What follows a directive's name (pbrt-v4's file-format documentation).
 enum class Shape {
-  Nothing,        // AttributeBegin, WorldBegin, ...
-  Numbers,        // a fixed count of numbers: Translate 3, Rotate 4, LookAt 9, TransformTimes 2
-  Matrix,         // 16 numbers, bracketed or bare: Transform, ConcatTransform
-  OneString,      // CoordinateSystem "name", Include "file", ...
-  Word,           // ActiveTransform StartTime|EndTime|All
-  StringParams,   // Shape "sphere" params, Camera "perspective" params, ...
+  Nothing,            // AttributeBegin, WorldBegin, ...
+  Numbers,            // a fixed count of numbers: Translate 3, Rotate 4, LookAt 9, TransformTimes 2
+  Matrix,             // 16 numbers, bracketed or bare: Transform, ConcatTransform
+  OneString,          // CoordinateSystem "name", Include "file", ...
+  Word,               // ActiveTransform StartTime|EndTime|All
+  StringParams,       // Shape "sphere" params, Camera "perspective" params, ...
   ThreeStringParams,  // Texture "name" "spectrum" "imagemap" params
-  Strings12,      // MediumInterface "inside" ["outside"]
-  Params,         // Option "bool name" value
+  Strings12,          // MediumInterface "inside" ["outside"]
+  Params,             // Option "bool name" value
 };
 
 struct Syntax {
@@ -35,29 +35,46 @@ struct Syntax {
 const std::map<std::string, Syntax, std::less<>>& syntax() {
   using K = PbrtDirectiveKind;
   static const std::map<std::string, Syntax, std::less<>> table = {
-      {"AttributeBegin", {K::AttributeBegin, Shape::Nothing}}, {"AttributeEnd", {K::AttributeEnd, Shape::Nothing}},
-      {"TransformBegin", {K::TransformBegin, Shape::Nothing}}, {"TransformEnd", {K::TransformEnd, Shape::Nothing}},
-      {"WorldBegin", {K::WorldBegin, Shape::Nothing}}, {"WorldEnd", {K::WorldEnd, Shape::Nothing}},
-      {"ReverseOrientation", {K::ReverseOrientation, Shape::Nothing}}, {"Identity", {K::Identity, Shape::Nothing}},
+      {"AttributeBegin", {K::AttributeBegin, Shape::Nothing}},
+      {"AttributeEnd", {K::AttributeEnd, Shape::Nothing}},
+      {"TransformBegin", {K::TransformBegin, Shape::Nothing}},
+      {"TransformEnd", {K::TransformEnd, Shape::Nothing}},
+      {"WorldBegin", {K::WorldBegin, Shape::Nothing}},
+      {"WorldEnd", {K::WorldEnd, Shape::Nothing}},
+      {"ReverseOrientation", {K::ReverseOrientation, Shape::Nothing}},
+      {"Identity", {K::Identity, Shape::Nothing}},
       {"ObjectEnd", {K::ObjectEnd, Shape::Nothing}},
-      {"Translate", {K::Translate, Shape::Numbers, 3}}, {"Scale", {K::Scale, Shape::Numbers, 3}},
-      {"Rotate", {K::Rotate, Shape::Numbers, 4}}, {"LookAt", {K::LookAt, Shape::Numbers, 9}},
+      {"Translate", {K::Translate, Shape::Numbers, 3}},
+      {"Scale", {K::Scale, Shape::Numbers, 3}},
+      {"Rotate", {K::Rotate, Shape::Numbers, 4}},
+      {"LookAt", {K::LookAt, Shape::Numbers, 9}},
       {"TransformTimes", {K::TransformTimes, Shape::Numbers, 2}},
-      {"Transform", {K::Transform, Shape::Matrix}}, {"ConcatTransform", {K::ConcatTransform, Shape::Matrix}},
+      {"Transform", {K::Transform, Shape::Matrix}},
+      {"ConcatTransform", {K::ConcatTransform, Shape::Matrix}},
       {"CoordinateSystem", {K::CoordinateSystem, Shape::OneString}},
       {"CoordSysTransform", {K::CoordSysTransform, Shape::OneString}},
-      {"ColorSpace", {K::ColorSpace, Shape::OneString}}, {"NamedMaterial", {K::NamedMaterial, Shape::OneString}},
-      {"ObjectBegin", {K::ObjectBegin, Shape::OneString}}, {"ObjectInstance", {K::ObjectInstance, Shape::OneString}},
-      {"Include", {K::Include, Shape::OneString}}, {"Import", {K::Import, Shape::OneString}},
+      {"ColorSpace", {K::ColorSpace, Shape::OneString}},
+      {"NamedMaterial", {K::NamedMaterial, Shape::OneString}},
+      {"ObjectBegin", {K::ObjectBegin, Shape::OneString}},
+      {"ObjectInstance", {K::ObjectInstance, Shape::OneString}},
+      {"Include", {K::Include, Shape::OneString}},
+      {"Import", {K::Import, Shape::OneString}},
       {"ActiveTransform", {K::ActiveTransform, Shape::Word}},
-      {"Camera", {K::Camera, Shape::StringParams}}, {"Film", {K::Film, Shape::StringParams}},
-      {"Sampler", {K::Sampler, Shape::StringParams}}, {"PixelFilter", {K::PixelFilter, Shape::StringParams}},
-      {"Integrator", {K::Integrator, Shape::StringParams}}, {"Accelerator", {K::Accelerator, Shape::StringParams}},
-      {"Material", {K::Material, Shape::StringParams}}, {"MakeNamedMaterial", {K::MakeNamedMaterial, Shape::StringParams}},
-      {"Shape", {K::Shape, Shape::StringParams}}, {"LightSource", {K::LightSource, Shape::StringParams}},
+      {"Camera", {K::Camera, Shape::StringParams}},
+      {"Film", {K::Film, Shape::StringParams}},
+      {"Sampler", {K::Sampler, Shape::StringParams}},
+      {"PixelFilter", {K::PixelFilter, Shape::StringParams}},
+      {"Integrator", {K::Integrator, Shape::StringParams}},
+      {"Accelerator", {K::Accelerator, Shape::StringParams}},
+      {"Material", {K::Material, Shape::StringParams}},
+      {"MakeNamedMaterial", {K::MakeNamedMaterial, Shape::StringParams}},
+      {"Shape", {K::Shape, Shape::StringParams}},
+      {"LightSource", {K::LightSource, Shape::StringParams}},
       {"AreaLightSource", {K::AreaLightSource, Shape::StringParams}},
-      {"MakeNamedMedium", {K::MakeNamedMedium, Shape::StringParams}}, {"Attribute", {K::Attribute, Shape::StringParams}},
-      {"Texture", {K::Texture, Shape::ThreeStringParams}}, {"MediumInterface", {K::MediumInterface, Shape::Strings12}},
+      {"MakeNamedMedium", {K::MakeNamedMedium, Shape::StringParams}},
+      {"Attribute", {K::Attribute, Shape::StringParams}},
+      {"Texture", {K::Texture, Shape::ThreeStringParams}},
+      {"MediumInterface", {K::MediumInterface, Shape::Strings12}},
       {"Option", {K::Option, Shape::Params}},
   };
   return table;
@@ -77,7 +94,8 @@ class Parser {
       if (open == canon)
         throw InputError(included_at->str() + ": \"" + shown + "\" includes itself (an Include cycle)");
     if (int(stack_.size()) >= kMaxIncludeDepth)
-      throw InputError(included_at->str() + ": Include is nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
+      throw InputError(included_at->str() + ": Include is nested more than " + std::to_string(kMaxIncludeDepth) +
+                       " deep");
     std::string reason;
     std::optional<std::string> text = read_text_file(file, reason);
     if (!text) {
@@ -96,8 +114,7 @@ class Parser {
     for (;;) {
       PbrtToken t = in.take();
       if (t.kind == PbrtToken::Kind::End) return;
-      if (t.kind != PbrtToken::Kind::Word)
-        throw InputError(t.at.str() + ": expected a directive, got " + describe(t));
+      if (t.kind != PbrtToken::Kind::Word) throw InputError(t.at.str() + ": expected a directive, got " + describe(t));
       auto it = syntax().find(t.text);
       if (it == syntax().end()) throw InputError(t.at.str() + ": unknown directive \"" + t.text + "\"");
       PbrtDirective d;
@@ -137,16 +154,22 @@ class Parser {
 
   static std::string describe(const PbrtToken& t) {
     switch (t.kind) {
-      case PbrtToken::Kind::Word: return "\"" + t.text + "\"";
-      case PbrtToken::Kind::String: return "the string \"" + t.text + "\"";
-      case PbrtToken::Kind::Open: return "'['";
-      case PbrtToken::Kind::Close: return "']'";
-      default: return "the end of the file";
+      case PbrtToken::Kind::Word:
+        return "\"" + t.text + "\"";
+      case PbrtToken::Kind::String:
+        return "the string \"" + t.text + "\"";
+      case PbrtToken::Kind::Open:
+        return "'['";
+      case PbrtToken::Kind::Close:
+        return "']'";
+      default:
+        return "the end of the file";
     }
   }
 
   static double number(const PbrtToken& t, const std::string& what) {
-    if (t.kind != PbrtToken::Kind::Word) throw InputError(t.at.str() + ": " + what + " must be a number, got " + describe(t));
+    if (t.kind != PbrtToken::Kind::Word)
+      throw InputError(t.at.str() + ": " + what + " must be a number, got " + describe(t));
     const char* b = t.text.data();
     const char* e = b + t.text.size();
     if (b != e && *b == '+') ++b;
@@ -171,7 +194,8 @@ class Parser {
       case Shape::Nothing:
         return;
       case Shape::Numbers:
-        for (int i = 0; i < s.count; ++i) d.numbers.push_back(number(in.take(), d.name + " argument " + std::to_string(i + 1)));
+        for (int i = 0; i < s.count; ++i)
+          d.numbers.push_back(number(in.take(), d.name + " argument " + std::to_string(i + 1)));
         return;
       case Shape::Matrix: {
         bool bracket = in.peek().kind == PbrtToken::Kind::Open;
@@ -233,9 +257,12 @@ class Parser {
       p.type = decl.text.substr(a, b - a);
       p.name = decl.text.substr(c, e == std::string::npos ? std::string::npos : e - c);
       const std::string type = pbrt_canonical_type(p.type);
-      if (type.empty()) throw InputError(decl.at.str() + ": unknown parameter type \"" + p.type + "\" (of \"" + p.name + "\")");
+      if (type.empty())
+        throw InputError(decl.at.str() + ": unknown parameter type \"" + p.type + "\" (of \"" + p.name + "\")");
       for (const PbrtParam& q : d.params.list)
-        if (q.name == p.name) throw InputError(decl.at.str() + ": parameter \"" + p.name + "\" is given twice (first at " + q.at.str() + ")");
+        if (q.name == p.name)
+          throw InputError(decl.at.str() + ": parameter \"" + p.name + "\" is given twice (first at " + q.at.str() +
+                           ")");
       std::vector<PbrtToken> values;
       if (in.peek().kind == PbrtToken::Kind::Open) {
         PbrtToken open = in.take();
@@ -243,7 +270,8 @@ class Parser {
           const PbrtToken& t = in.peek();
           if (t.kind == PbrtToken::Kind::Close) break;
           if (t.kind == PbrtToken::Kind::End || t.kind == PbrtToken::Kind::Open)
-            throw InputError(open.at.str() + ": '[' of \"" + p.name + "\" is not closed (found " + describe(t) + " at " + t.at.str() + ")");
+            throw InputError(open.at.str() + ": '[' of \"" + p.name + "\" is not closed (found " + describe(t) +
+                             " at " + t.at.str() + ")");
           values.push_back(in.take());
         }
         in.take();
@@ -269,11 +297,13 @@ class Parser {
       }
     } else if (type == "string" || type == "texture") {
       for (const PbrtToken& t : values) {
-        if (t.kind != PbrtToken::Kind::String) throw InputError(t.at.str() + ": " + what + " must be a quoted string, got " + describe(t));
+        if (t.kind != PbrtToken::Kind::String)
+          throw InputError(t.at.str() + ": " + what + " must be a quoted string, got " + describe(t));
         p.strings.push_back(t.text);
       }
     } else if (type == "spectrum" && values[0].kind == PbrtToken::Kind::String) {
-      if (values.size() != 1) throw InputError(values[1].at.str() + ": \"" + p.type + " " + p.name + "\" takes one spectrum name or file");
+      if (values.size() != 1)
+        throw InputError(values[1].at.str() + ": \"" + p.type + " " + p.name + "\" takes one spectrum name or file");
       p.strings.push_back(values[0].text);
     } else {
       for (const PbrtToken& t : values) p.numbers.push_back(number(t, what));

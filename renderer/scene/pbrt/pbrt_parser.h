@@ -18,22 +18,55 @@ namespace pdrt {
 // Every directive pbrt-v4's file format has, in the order of its documentation's sections.
 enum class PbrtDirectiveKind {
   // transforms
-  Identity, Translate, Scale, Rotate, LookAt, Transform, ConcatTransform, CoordinateSystem, CoordSysTransform,
-  ActiveTransform, TransformTimes, ReverseOrientation,
+  Identity,
+  Translate,
+  Scale,
+  Rotate,
+  LookAt,
+  Transform,
+  ConcatTransform,
+  CoordinateSystem,
+  CoordSysTransform,
+  ActiveTransform,
+  TransformTimes,
+  ReverseOrientation,
   // block structure and graphics state
-  WorldBegin, WorldEnd, AttributeBegin, AttributeEnd, TransformBegin, TransformEnd, Attribute, ObjectBegin, ObjectEnd,
+  WorldBegin,
+  WorldEnd,
+  AttributeBegin,
+  AttributeEnd,
+  TransformBegin,
+  TransformEnd,
+  Attribute,
+  ObjectBegin,
+  ObjectEnd,
   ObjectInstance,
   // rendering options
-  Camera, Film, PixelFilter, Sampler, Integrator, Accelerator, ColorSpace, Option,
+  Camera,
+  Film,
+  PixelFilter,
+  Sampler,
+  Integrator,
+  Accelerator,
+  ColorSpace,
+  Option,
   // scene elements
-  Texture, Material, MakeNamedMaterial, NamedMaterial, LightSource, AreaLightSource, Shape, MakeNamedMedium,
+  Texture,
+  Material,
+  MakeNamedMaterial,
+  NamedMaterial,
+  LightSource,
+  AreaLightSource,
+  Shape,
+  MakeNamedMedium,
   MediumInterface,
   // files (expanded by the parser, never in its output)
-  Include, Import,
+  Include,
+  Import,
 };
 
 struct PbrtDirective {
-  std::string name;                  // "Shape", "Translate", ... as written
+  std::string name;  // "Shape", "Translate", ... as written
   PbrtDirectiveKind kind = PbrtDirectiveKind::Identity;
   PbrtLocation at;                   // of the directive's name
   std::vector<double> numbers;       // numeric arguments: Translate 3, Rotate 4, LookAt 9, Transform 16, ...

@@ -56,39 +56,73 @@ class Builder {
     using K = PbrtDirectiveKind;
     b_.last = d.at;
     switch (d.kind) {
-      case K::Identity: case K::Translate: case K::Scale: case K::Rotate: case K::LookAt: case K::Transform:
-      case K::ConcatTransform: case K::CoordinateSystem: case K::CoordSysTransform: case K::ActiveTransform:
-      case K::TransformTimes: case K::ReverseOrientation: case K::AttributeBegin: case K::TransformBegin:
-      case K::AttributeEnd: case K::TransformEnd:
+      case K::Identity:
+      case K::Translate:
+      case K::Scale:
+      case K::Rotate:
+      case K::LookAt:
+      case K::Transform:
+      case K::ConcatTransform:
+      case K::CoordinateSystem:
+      case K::CoordSysTransform:
+      case K::ActiveTransform:
+      case K::TransformTimes:
+      case K::ReverseOrientation:
+      case K::AttributeBegin:
+      case K::TransformBegin:
+      case K::AttributeEnd:
+      case K::TransformEnd:
         return b_.gs.transform_directive(d);
-      case K::Camera: case K::Film: case K::PixelFilter: case K::Sampler: case K::Integrator:
+      case K::Camera:
+      case K::Film:
+      case K::PixelFilter:
+      case K::Sampler:
+      case K::Integrator:
         return translate_pbrt_option(b_, d);
-      case K::Accelerator: return;  // pdrt always builds Embree's BVH; its parameters are reported unused
+      case K::Accelerator:
+        return;  // pdrt always builds Embree's BVH; its parameters are reported unused
       case K::ColorSpace:
-        if (d.strings[0] != "srgb") b_.note(d.at, "ColorSpace \"" + d.strings[0] + "\" is not supported (pdrt renders linear sRGB)");
+        if (d.strings[0] != "srgb")
+          b_.note(d.at, "ColorSpace \"" + d.strings[0] + "\" is not supported (pdrt renders linear sRGB)");
         return;
-      case K::Option: return;  // reported as unused parameters
+      case K::Option:
+        return;  // reported as unused parameters
       case K::WorldBegin:
         if (b_.gs.in_world) b_.fail(d.at, "a second WorldBegin");
         return b_.gs.begin_world();
-      case K::WorldEnd: return;  // pbrt-v3
-      case K::MakeNamedMedium: case K::MediumInterface:
+      case K::WorldEnd:
+        return;  // pbrt-v3
+      case K::MakeNamedMedium:
+      case K::MediumInterface:
         b_.note(d.at, d.name + " is not supported: pdrt has no participating media (ignored)");
         for (const PbrtParam& p : d.params.list) p.used = true;
         return;
-      case K::Attribute: return attribute(d);
-      case K::ObjectEnd: return b_.gs.end_object(d);
-      case K::Texture: return translate_pbrt_texture(b_, d);
-      default: break;
+      case K::Attribute:
+        return attribute(d);
+      case K::ObjectEnd:
+        return b_.gs.end_object(d);
+      case K::Texture:
+        return translate_pbrt_texture(b_, d);
+      default:
+        break;
     }
     if (!b_.gs.in_world) b_.fail(d.at, d.name + " must come after WorldBegin");
     switch (d.kind) {
-      case K::Material: case K::MakeNamedMaterial: case K::NamedMaterial: return translate_pbrt_material(b_, d);
-      case K::AreaLightSource: case K::LightSource: return translate_pbrt_light(b_, d);
-      case K::Shape: return translate_pbrt_shape(b_, d);
-      case K::ObjectBegin: return object_begin(d);
-      case K::ObjectInstance: return object_instance(d);
-      default: b_.fail(d.at, "directive " + d.name + " is not handled");  // Include and Import are the parser's
+      case K::Material:
+      case K::MakeNamedMaterial:
+      case K::NamedMaterial:
+        return translate_pbrt_material(b_, d);
+      case K::AreaLightSource:
+      case K::LightSource:
+        return translate_pbrt_light(b_, d);
+      case K::Shape:
+        return translate_pbrt_shape(b_, d);
+      case K::ObjectBegin:
+        return object_begin(d);
+      case K::ObjectInstance:
+        return object_instance(d);
+      default:
+        b_.fail(d.at, "directive " + d.name + " is not handled");  // Include and Import are the parser's
     }
   }
 
@@ -97,7 +131,8 @@ class Builder {
     if (target == "medium") {
       b_.note(d.at, "Attribute \"medium\" is not supported: pdrt has no participating media (ignored)");
     } else if (target != "shape" && target != "light" && target != "material" && target != "texture") {
-      b_.fail(d.at, "Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got \"" + target + "\"");
+      b_.fail(d.at, "Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got \"" +
+                        target + "\"");
     } else {
       b_.gs.set_defaults(target, d.params.list);
     }
@@ -132,7 +167,9 @@ class Builder {
     const double* times = b_.gs.times;
     const CameraDesc& c = b_.out.scene.camera;
     if (!inst.motion.empty() && !(times[0] >= c.shutter_open && times[1] <= c.shutter_close))
-      b_.note(d.at, "motion keys at TransformTimes outside the camera's shutter (the instance's motion is clamped to the shutter)");
+      b_.note(d.at,
+              "motion keys at TransformTimes outside the camera's shutter (the instance's motion is clamped to the "
+              "shutter)");
     inst.where = d.at.str();
     b_.out.scene.instances.push_back(std::move(inst));
   }

@@ -4,8 +4,8 @@
 // the shutter's start and end, attributes, named coordinate systems, materials, area lights,
 // object instances, as pbrt-v4's BasicSceneBuilder keeps it) or to the translator of its kind
 // (pbrt_build_context.h), which maps each camera, film, filter, sampler, integrator, texture,
-// material, light and shape onto pdrt's (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one line each,
-// "file:line:col: what (what pdrt does instead)"; with `strict` the first such line is an error.
+// material, light and shape onto pdrt's (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one
+// line each, "file:line:col: what (what pdrt does instead)"; with `strict` the first such line is an error.
 #include "renderer/scene/pbrt/pbrt_parser.h"
 #include "renderer/scene/scene_desc.h"
 

@@ -26,8 +26,10 @@ void sphere(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
   const PbrtParams& ps = d.params;
   s.kind = ShapeDesc::Kind::Sphere;
   s.radius = b.positive(ps, "radius", 1);
-  const double zmin = ps.get_float("zmin", -s.radius), zmax = ps.get_float("zmax", s.radius), phimax = ps.get_float("phimax", 360);
-  if (zmin > -s.radius || zmax < s.radius || phimax < 360) b.note(d.at, "partial spheres are not supported (the whole sphere is used)");
+  const double zmin = ps.get_float("zmin", -s.radius), zmax = ps.get_float("zmax", s.radius),
+               phimax = ps.get_float("phimax", 360);
+  if (zmin > -s.radius || zmax < s.radius || phimax < 360)
+    b.note(d.at, "partial spheres are not supported (the whole sphere is used)");
   if (flip && b.gs.cur.area) b.note(d.at, "an inward-facing emitting sphere is not supported (it emits outward)");
 }
 
@@ -36,15 +38,19 @@ MeshInput ply_input(PbrtBuild& b, const PbrtDirective& d) {
   const PbrtParams& ps = d.params;
   std::optional<std::string> name = ps.find_string("filename");
   if (!name) b.fail(d.at, "Shape \"plymesh\" needs \"string filename\"");
-  const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
-  const std::filesystem::path file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
+  const std::filesystem::path rel =
+      d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+  const std::filesystem::path file =
+      std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
   PlyMesh ply;
   try {
     ply = load_ply(file, file.string());
   } catch (const InputError& e) {
     b.fail(ps.find("filename")->at, e.what());
   }
-  if (ply.dropped_faces) b.note(ps.find("filename")->at, std::to_string(ply.dropped_faces) + " points or lines in the PLY file are not surfaces (skipped)");
+  if (ply.dropped_faces)
+    b.note(ps.find("filename")->at,
+           std::to_string(ply.dropped_faces) + " points or lines in the PLY file are not surfaces (skipped)");
   MeshInput m;
   m.P = std::move(ply.mesh.positions);
   m.N = std::move(ply.mesh.normals);
@@ -78,12 +84,16 @@ void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput
   if (idx.size() % 4) b.fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
   check_indices(b, d, idx, m.P.size());
   if (!m.uvs.empty() && m.uvs.size() != m.P.size())
-    b.fail(ps.find("uv")->at, "\"uv\" needs one per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.uvs.size()));
+    b.fail(ps.find("uv")->at,
+           "\"uv\" needs one per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.uvs.size()));
   if (!m.N.empty() && m.N.size() != m.P.size())
-    b.fail(ps.find("N")->at, "\"N\" needs one normal per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.N.size()));
+    b.fail(ps.find("N")->at,
+           "\"N\" needs one normal per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.N.size()));
   constexpr int kMaxGrid = 64;
   constexpr double kTolerance = 1e-4;
-  auto grid_for = [&](double twist, double tol) { return twist > 0 ? int(std::ceil(std::sqrt(twist / (4 * tol)))) : 1; };
+  auto grid_for = [&](double twist, double tol) {
+    return twist > 0 ? int(std::ceil(std::sqrt(twist / (4 * tol)))) : 1;
+  };
   MeshInput out;
   int64_t capped = 0;
   for (size_t k = 0; k < idx.size(); k += 4) {
@@ -122,7 +132,8 @@ void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput
   }
   if (capped)
     b.note(d.at, std::to_string(capped) + " bilinear patch(es) twisted beyond a " + std::to_string(kMaxGrid) + " x " +
-                     std::to_string(kMaxGrid) + " grid of triangles: position or uv there is off the patch by more than 1e-4");
+                     std::to_string(kMaxGrid) +
+                     " grid of triangles: position or uv there is off the patch by more than 1e-4");
   m = std::move(out);
 }
 
@@ -130,7 +141,8 @@ void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput
 void subdivide(PbrtBuild& b, const PbrtDirective& d, MeshInput& in) {
   const PbrtParams& ps = d.params;
   const int64_t levels = ps.get_int("levels", 3);
-  if (levels < 0 || levels > 12) b.fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
+  if (levels < 0 || levels > 12)
+    b.fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
   MeshData m;
   try {
     m = loop_subdivide(in.P, std::vector<uint32_t>(in.idx.begin(), in.idx.end()), int(levels));
@@ -175,23 +187,27 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
   std::vector<int64_t>& idx = m.idx;
   if (P.empty()) b.fail(d.at, "Shape \"" + t + "\" needs \"point3 P\"");
   if (t == "trianglemesh" && idx.empty()) {
-    if (P.size() != 3) b.fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
+    if (P.size() != 3)
+      b.fail(d.at, "a trianglemesh without \"indices\" must have exactly 3 points, got " + std::to_string(P.size()));
     idx = {0, 1, 2};
   }
   if (t != "plymesh" && t != "loopsubdiv") m.uvs = ps.point2s("uv");
   if (t == "bilinearmesh") tessellate_bilinear_patches(b, d, m);
-  if (idx.size() % 3) b.fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
+  if (idx.size() % 3)
+    b.fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
   check_indices(b, d, idx, P.size());
   for (const Vec3& p : P)
     if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
   if (t == "loopsubdiv") subdivide(b, d, m);
   const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
   if (!m.N.empty() && m.N.size() != P.size())
-    b.fail(n_at, "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.N.size()));
+    b.fail(n_at,
+           "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.N.size()));
   for (Vec3& n : m.N)
     if (!(length(n) > 0) || !is_finite(n)) b.fail(n_at, "\"N\" holds a zero or non-finite normal");
   if (!m.uvs.empty() && m.uvs.size() != P.size())
-    b.fail(ps.find("uv") ? ps.find("uv")->at : d.at, "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.uvs.size()));
+    b.fail(ps.find("uv") ? ps.find("uv")->at : d.at,
+           "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.uvs.size()));
   for (const char* k : {"S", "faceIndices"})
     if (const PbrtParam* p = ps.find(k)) p->used = true;
   s.mesh.positions = std::move(P);
@@ -208,7 +224,8 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
 // Shape "disk": a fan (or ring) of 256 triangles; the polygon's area is 0.01 % below the disk's.
 void disk(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
   const PbrtParams& ps = d.params;
-  const double h = ps.get_float("height", 0), r = b.positive(ps, "radius", 1), ri = b.positive(ps, "innerradius", 0, true);
+  const double h = ps.get_float("height", 0), r = b.positive(ps, "radius", 1),
+               ri = b.positive(ps, "innerradius", 0, true);
   if (ps.get_float("phimax", 360) < 360) b.note(d.at, "partial disks are not supported (the whole disk is used)");
   if (!(ri < r)) b.fail(d.at, "\"innerradius\" must be < \"radius\"");
   const int n = 256;
@@ -256,8 +273,9 @@ double emitter_area(PbrtBuild& b, const PbrtDirective& d, const ShapeDesc& s) {
   }
   const size_t n = ix.size() / 3;
   if (n > 1 && hi > lo * (1 + 1e-3))
-    b.note(d.at, "\"power\" of an area light on triangles of unequal area: pbrt-v4 gives each triangle that power, "
-                 "pdrt gives all of them the radiance of the mean triangle (the same total power)");
+    b.note(d.at,
+           "\"power\" of an area light on triangles of unequal area: pbrt-v4 gives each triangle that power, "
+           "pdrt gives all of them the radiance of the mean triangle (the same total power)");
   return n ? sum / double(n) : 0;
 }
 
@@ -289,16 +307,20 @@ void add_shape(PbrtBuild& b, const PbrtDirective& d, ShapeDesc s) {
   if (b.gs.object) {
     // pbrt-v4 keeps the whole CTM at the shape's definition (the CTM at ObjectBegin
     // included) as the shape's transform within the object; instances apply theirs on top.
-    if (!b.gs.cur.ctm.t[0].affine()) b.fail(d.at, "the current transform is projective; shapes and lights need an affine one");
-    if (b.gs.moving()) b.note(d.at, "a moving shape inside an object definition is not supported (its start transform is used)");
+    if (!b.gs.cur.ctm.t[0].affine())
+      b.fail(d.at, "the current transform is projective; shapes and lights need an affine one");
+    if (b.gs.moving())
+      b.note(d.at, "a moving shape inside an object definition is not supported (its start transform is used)");
     s.transform = b.gs.cur.ctm.t[0].to_affine();
     s.where = d.at.str();
     b.out.scene.prototypes[size_t(b.gs.objects[*b.gs.object])].shapes.push_back(std::move(s));
     return;
   }
   b.place(d.at, &s.transform, &s.motion);
-  if (!s.motion.empty() && !(b.gs.times[0] >= b.out.scene.camera.shutter_open && b.gs.times[1] <= b.out.scene.camera.shutter_close)) {
-    b.note(d.at, "motion keys at TransformTimes outside the camera's shutter (the shape's motion is clamped to the shutter)");
+  if (!s.motion.empty() &&
+      !(b.gs.times[0] >= b.out.scene.camera.shutter_open && b.gs.times[1] <= b.out.scene.camera.shutter_close)) {
+    b.note(d.at,
+           "motion keys at TransformTimes outside the camera's shutter (the shape's motion is clamped to the shutter)");
   }
   b.out.scene.shapes.push_back(std::move(s));
 }

@@ -30,7 +30,8 @@ double piecewise_linear(const std::vector<double>& p, double nm) {
   if (n == 0 || nm < p[0] || nm > p[2 * (n - 1)]) return 0;
   for (size_t i = 0; i + 1 < n; ++i) {
     const double a = p[2 * i], b = p[2 * i + 2];
-    if (nm >= a && nm <= b) return b > a ? p[2 * i + 1] + (nm - a) / (b - a) * (p[2 * i + 3] - p[2 * i + 1]) : p[2 * i + 1];
+    if (nm >= a && nm <= b)
+      return b > a ? p[2 * i + 1] + (nm - a) / (b - a) * (p[2 * i + 3] - p[2 * i + 1]) : p[2 * i + 1];
   }
   return n == 1 ? p[1] : 0;
 }
@@ -38,7 +39,8 @@ double piecewise_linear(const std::vector<double>& p, double nm) {
 }  // namespace
 
 Vec3 cie_xyz_bar(double nm) {
-  const double x = 1.056 * g(nm, 599.8, 37.9, 31.0) + 0.362 * g(nm, 442.0, 16.0, 26.7) - 0.065 * g(nm, 501.1, 20.4, 26.2);
+  const double x =
+      1.056 * g(nm, 599.8, 37.9, 31.0) + 0.362 * g(nm, 442.0, 16.0, 26.7) - 0.065 * g(nm, 501.1, 20.4, 26.2);
   const double y = 0.821 * g(nm, 568.8, 46.9, 40.5) + 0.286 * g(nm, 530.9, 16.3, 31.1);
   const double z = 1.217 * g(nm, 437.0, 11.8, 36.0) + 0.681 * g(nm, 459.0, 26.0, 13.8);
   return {float(x), float(y), float(z)};

@@ -14,32 +14,46 @@ void image_texture(PbrtBuild& b, const PbrtDirective& d, TextureDesc& t) {
   t.kind = TextureDesc::Kind::Image;
   std::optional<std::string> name = ps.find_string("filename");
   if (!name) b.fail(d.at, "Texture \"imagemap\" needs \"string filename\"");
-  const std::filesystem::path rel = d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
+  const std::filesystem::path rel =
+      d.at.file ? std::filesystem::path(*d.at.file).parent_path() : std::filesystem::path();
   t.file = std::filesystem::path(*name).is_absolute() ? std::filesystem::path(*name) : rel / *name;
   std::string reason;
-  if (!can_open_file(t.file, reason)) b.fail(ps.find("filename")->at, "cannot open \"" + t.file.string() + "\": " + reason);
+  if (!can_open_file(t.file, reason))
+    b.fail(ps.find("filename")->at, "cannot open \"" + t.file.string() + "\": " + reason);
   const std::string filter = ps.get_string("filter", "bilinear");
-  if (filter == "point") t.filter = TextureFilter::None;
-  else if (filter == "bilinear") t.filter = TextureFilter::Bilinear;
-  else if (filter == "trilinear") t.filter = TextureFilter::Trilinear;
-  else if (filter == "ewa") t.filter = TextureFilter::Ewa;
-  else b.fail(ps.find("filter")->at, "unknown filter \"" + filter + "\" (point, bilinear, trilinear, ewa)");
+  if (filter == "point")
+    t.filter = TextureFilter::None;
+  else if (filter == "bilinear")
+    t.filter = TextureFilter::Bilinear;
+  else if (filter == "trilinear")
+    t.filter = TextureFilter::Trilinear;
+  else if (filter == "ewa")
+    t.filter = TextureFilter::Ewa;
+  else
+    b.fail(ps.find("filter")->at, "unknown filter \"" + filter + "\" (point, bilinear, trilinear, ewa)");
   const std::string wrap = ps.get_string("wrap", "repeat");
-  if (wrap == "repeat") t.wrap = TextureWrap::Repeat;
-  else if (wrap == "black") t.wrap = TextureWrap::Black;
-  else if (wrap == "clamp") t.wrap = TextureWrap::Clamp;
+  if (wrap == "repeat")
+    t.wrap = TextureWrap::Repeat;
+  else if (wrap == "black")
+    t.wrap = TextureWrap::Black;
+  else if (wrap == "clamp")
+    t.wrap = TextureWrap::Clamp;
   else {
     b.note(ps.find("wrap")->at, "wrap \"" + wrap + "\" is not supported (repeat used)");
   }
   if (std::optional<std::string> enc = ps.find_string("encoding")) {
-    if (*enc == "sRGB") t.encoding = TextureEncoding::Srgb;
-    else if (*enc == "linear") t.encoding = TextureEncoding::Linear;
-    else b.note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
+    if (*enc == "sRGB")
+      t.encoding = TextureEncoding::Srgb;
+    else if (*enc == "linear")
+      t.encoding = TextureEncoding::Linear;
+    else
+      b.note(ps.find("encoding")->at, "encoding \"" + *enc + "\" is not supported (sRGB for 8-bit files, else linear)");
   }
   // pbrt-v4's image textures: ClampZero(invert ? 1 - scale x : scale x), as a scale and an
   // invert texture on top of the image (the name then means the outermost).
   const double scale = ps.get_float("scale", 1);
-  if (!(scale >= 0) || !std::isfinite(scale)) b.fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + pbrt_number(scale));
+  if (!(scale >= 0) || !std::isfinite(scale))
+    b.fail(ps.find("scale")->at, "\"float scale\" must be >= 0, got " + pbrt_number(scale));
   const bool invert = ps.get_bool("invert", false);
   if (scale != 1 || invert) {
     TextureInput in;
@@ -66,8 +80,9 @@ void image_texture(PbrtBuild& b, const PbrtDirective& d, TextureDesc& t) {
 // get their default value.
 void translate_pbrt_texture(PbrtBuild& b, const PbrtDirective& d) {
   const PbrtParams& ps = d.params;
-  const std::string& kind = d.strings[1], &cls = d.strings[2];
-  if (kind != "float" && kind != "spectrum") b.fail(d.at, "a texture's type must be \"float\" or \"spectrum\", got \"" + kind + "\"");
+  const std::string &kind = d.strings[1], &cls = d.strings[2];
+  if (kind != "float" && kind != "spectrum")
+    b.fail(d.at, "a texture's type must be \"float\" or \"spectrum\", got \"" + kind + "\"");
   const std::string key = kind + ":" + d.strings[0];
   TextureDesc t;
   t.name = d.strings[0];
@@ -85,7 +100,8 @@ void translate_pbrt_texture(PbrtBuild& b, const PbrtDirective& d) {
   auto non_negative = [&](const char* name, float fallback) {
     TextureInput in = b.texture_input(ps, name, fallback, kind);
     for (int c = 0; c < 3; ++c)
-      if (!(in.value[c] >= 0)) b.fail(ps.find(name)->at, std::string("\"") + name + "\" must be >= 0, got " + pbrt_number(in.value[c]));
+      if (!(in.value[c] >= 0))
+        b.fail(ps.find(name)->at, std::string("\"") + name + "\" must be >= 0, got " + pbrt_number(in.value[c]));
     return in;
   };
   if (cls == "scale") {

@@ -19,7 +19,8 @@ void PbrtTokenizer::advance(size_t n) {
 
 PbrtToken PbrtTokenizer::next() {
   for (;;) {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r'))
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' || text_[pos_] == '\r'))
       advance(1);
     if (pos_ < text_.size() && text_[pos_] == '#') {
       while (pos_ < text_.size() && text_[pos_] != '\n') advance(1);
@@ -53,14 +54,30 @@ PbrtToken PbrtTokenizer::next() {
         advance(1);
         if (pos_ >= text_.size()) throw InputError(esc.str() + ": string ends inside an escape");
         switch (text_[pos_]) {
-          case 'b': d = '\b'; break;
-          case 'f': d = '\f'; break;
-          case 'n': d = '\n'; break;
-          case 'r': d = '\r'; break;
-          case 't': d = '\t'; break;
-          case '\\': d = '\\'; break;
-          case '\'': d = '\''; break;
-          case '"': d = '"'; break;
+          case 'b':
+            d = '\b';
+            break;
+          case 'f':
+            d = '\f';
+            break;
+          case 'n':
+            d = '\n';
+            break;
+          case 'r':
+            d = '\r';
+            break;
+          case 't':
+            d = '\t';
+            break;
+          case '\\':
+            d = '\\';
+            break;
+          case '\'':
+            d = '\'';
+            break;
+          case '"':
+            d = '"';
+            break;
           default:
             throw InputError(esc.str() + ": unknown escape '\\" + std::string(1, text_[pos_]) + "' in a string");
         }
@@ -70,7 +87,8 @@ PbrtToken PbrtTokenizer::next() {
     }
   }
   if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-    throw InputError(t.at.str() + ": unexpected control character (byte " + std::to_string(int(static_cast<unsigned char>(c))) + ")");
+    throw InputError(t.at.str() + ": unexpected control character (byte " +
+                     std::to_string(int(static_cast<unsigned char>(c))) + ")");
   t.kind = PbrtToken::Kind::Word;
   size_t end = pos_;
   while (end < text_.size()) {

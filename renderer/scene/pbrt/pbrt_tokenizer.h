@@ -12,7 +12,9 @@ namespace pdrt {
 struct PbrtLocation {
   std::shared_ptr<const std::string> file;  // as the user or the Include named it
   int line = 1, col = 1;                    // 1-based; columns count bytes
-  std::string str() const { return (file ? *file : std::string("<text>")) + ":" + std::to_string(line) + ":" + std::to_string(col); }
+  std::string str() const {
+    return (file ? *file : std::string("<text>")) + ":" + std::to_string(line) + ":" + std::to_string(col);
+  }
 };
 
 struct PbrtToken {

@@ -101,7 +101,8 @@ class PlyChecker {
         words >> e.name >> count;
         char* end = nullptr;
         e.count = std::strtoull(count.c_str(), &end, 10);
-        if (e.name.empty() || count.empty() || *end || count[0] == '-') fail(line_no, 1, "an element line is \"element <name> <count>\"");
+        if (e.name.empty() || count.empty() || *end || count[0] == '-')
+          fail(line_no, 1, "an element line is \"element <name> <count>\"");
         elements.push_back(e);
       } else if (w == "property") {
         if (elements.empty()) fail(line_no, 1, "a property before any element");
@@ -111,8 +112,8 @@ class PlyChecker {
         if (t == "list") {
           p.list = true;
           words >> p.count_type >> p.type >> name;
-          if (!scalar_size(p.count_type) || p.count_type == "float" || p.count_type == "double" || p.count_type == "float32" ||
-              p.count_type == "float64")
+          if (!scalar_size(p.count_type) || p.count_type == "float" || p.count_type == "double" ||
+              p.count_type == "float32" || p.count_type == "float64")
             fail(line_no, 15, "a list's count type must be an integer type, got \"" + p.count_type + "\"");
         } else {
           p.type = t;
@@ -138,7 +139,9 @@ class PlyChecker {
         std::string body;
         do {
           if (!std::getline(in_, body))
-            fail(line_no + 1, 1, "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) + " (truncated)");
+            fail(line_no + 1, 1,
+                 "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
+                     " (truncated)");
           ++line_no;
           if (!body.empty() && body.back() == '\r') body.pop_back();
           refuse_control_characters(body, line_no, "body");
@@ -147,13 +150,15 @@ class PlyChecker {
         size_t col = 0;
         auto next = [&](bool integer) {
           std::string tok;
-          if (!(v >> tok)) fail(line_no, int(body.size() + 1), e.name + " " + std::to_string(i) + " has too few values");
+          if (!(v >> tok))
+            fail(line_no, int(body.size() + 1), e.name + " " + std::to_string(i) + " has too few values");
           col = size_t(v.tellg() == -1 ? body.size() : size_t(v.tellg())) - tok.size() + 1;
           char* end = nullptr;
           double x = std::strtod(tok.c_str(), &end);
           if (*end) fail(line_no, int(col), "\"" + tok + "\" is not a number");
           // 2^64 and above first: converting them to uint64_t is undefined (found with fuzz_ply).
-          if (integer && (!(x >= 0 && x < 18446744073709551616.0) || x != std::floor(x))) fail(line_no, int(col), "a list count must be a non-negative integer, got \"" + tok + "\"");
+          if (integer && (!(x >= 0 && x < 18446744073709551616.0) || x != std::floor(x)))
+            fail(line_no, int(col), "a list count must be a non-negative integer, got \"" + tok + "\"");
           return x;
         };
         for (const Property& p : e.props) {
@@ -168,7 +173,9 @@ class PlyChecker {
           for (uint64_t k = 0; k < uint64_t(n); ++k) next(false);
         }
         std::string extra;
-        if (v >> extra) fail(line_no, int(body.size() - extra.size() + 1), e.name + " " + std::to_string(i) + " has more values than its properties");
+        if (v >> extra)
+          fail(line_no, int(body.size() - extra.size() + 1),
+               e.name + " " + std::to_string(i) + " has more values than its properties");
       }
   }
 
@@ -180,8 +187,8 @@ class PlyChecker {
     const uint64_t size = uint64_t(in_.tellg());
     uint64_t pos = body_start;
     auto truncated = [&](const Element& e, uint64_t i) {
-      throw InputError(shown_ + ": byte " + std::to_string(size) + ": the body ends inside " + e.name + " " + std::to_string(i) +
-                       " of " + std::to_string(e.count) + " (truncated)");
+      throw InputError(shown_ + ": byte " + std::to_string(size) + ": the body ends inside " + e.name + " " +
+                       std::to_string(i) + " of " + std::to_string(e.count) + " (truncated)");
     };
     for (const Element& e : elements) {
       bool fixed = true;
@@ -212,14 +219,16 @@ class PlyChecker {
           uint64_t n = 0;
           std::memcpy(&n, b, size_t(cs));  // little-endian host: low bytes first
           if ((p.count_type[0] != 'u') && cs < 8 && (b[cs - 1] & 0x80))
-            throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + e.name + " " + std::to_string(i) + " has a negative list count");
+            throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + e.name + " " + std::to_string(i) +
+                             " has a negative list count");
           pos += uint64_t(cs);
           if (n > (size - pos) / uint64_t(s)) truncated(e, i);
           pos += n * uint64_t(s);
         }
-  }
-  if (pos != size)
-    throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + std::to_string(size - pos) + " bytes after the last element");
+    }
+    if (pos != size)
+      throw InputError(shown_ + ": byte " + std::to_string(pos) + ": " + std::to_string(size - pos) +
+                       " bytes after the last element");
   }
 
   std::ifstream& in_;

@@ -36,7 +36,8 @@ PlyMesh load_ply(const std::filesystem::path& file, const std::string& shown) {
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* mesh = scene->mMeshes[m];
     const uint64_t base = out.mesh.positions.size();
-    if (base + mesh->mNumVertices > UINT32_MAX) throw InputError(shown + ": too many vertices for pdrt (more than 2^32)");
+    if (base + mesh->mNumVertices > UINT32_MAX)
+      throw InputError(shown + ": too many vertices for pdrt (more than 2^32)");
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
       const aiVector3D& p = mesh->mVertices[v];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

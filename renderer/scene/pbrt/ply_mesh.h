@@ -12,9 +12,9 @@
 namespace pdrt {
 
 struct PlyMesh {
-  MeshData mesh;                            // positions, normals (per vertex, or empty), triangles
-  std::vector<std::array<float, 2>> uvs;    // per vertex, or empty
-  int64_t dropped_faces = 0;                // points and lines
+  MeshData mesh;                          // positions, normals (per vertex, or empty), triangles
+  std::vector<std::array<float, 2>> uvs;  // per vertex, or empty
+  int64_t dropped_faces = 0;              // points and lines
 };
 
 // Throws InputError "<shown>: <Assimp's reason>" when the file cannot be read or holds no

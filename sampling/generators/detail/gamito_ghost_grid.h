@@ -141,7 +141,6 @@ class GamitoGhostGrid {
     return id;
   }
 
-
   int res_, pad_, side_;
   bool periodic_;
   std::size_t stride_[N];

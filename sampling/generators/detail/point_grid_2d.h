@@ -93,7 +93,8 @@ class PointGrid2D {
   void put(int cx, int cy, double x, double y, bool own) {
     const std::size_t i = std::size_t(cx + kPad), j = std::size_t(cy + kPad);
     uint8_t& byte = occupied_[j * row_bytes_ + i / 8];
-    if (own && (byte >> (i & 7) & 1)) throw std::logic_error("PointGrid2D: two points in one cell (closer than the grid's spacing)");
+    if (own && (byte >> (i & 7) & 1))
+      throw std::logic_error("PointGrid2D: two points in one cell (closer than the grid's spacing)");
     byte = uint8_t(byte | 1u << (i & 7));
     double* q = &xy_[(j * std::size_t(stride_) + i) * 2];
     q[0] = x, q[1] = y;
@@ -103,8 +104,8 @@ class PointGrid2D {
   int res_ = 0, stride_ = 0;
   std::size_t row_bytes_ = 0;
   std::vector<uint8_t> occupied_;  // per row, bit i: padded cell i holds a point
-  std::vector<double> xy_;     // (x, y) of each padded cell's point
-  std::vector<double> shift_;  // period shift of each padded column (= row)
+  std::vector<double> xy_;         // (x, y) of each padded cell's point
+  std::vector<double> shift_;      // period shift of each padded column (= row)
 };
 
 }  // namespace pdrt

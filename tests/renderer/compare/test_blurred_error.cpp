@@ -37,7 +37,8 @@ void expect_white_noise_blur(double sigma) {
   const double amplitude = 1.0, s = amplitude / std::sqrt(12.0);
   const int margin = int(std::ceil(4 * sigma));
   double ms = 0;
-  for (int k = 0; k < 64; ++k) ms += interior_mean_square(gaussian_blur(uniform_noise(64, 64, 100 + k, amplitude), sigma), margin) / 64;
+  for (int k = 0; k < 64; ++k)
+    ms += interior_mean_square(gaussian_blur(uniform_noise(64, 64, 100 + k, amplitude), sigma), margin) / 64;
   const double expect = s / (2 * std::sqrt(M_PI) * sigma);
   EXPECT_NEAR(std::sqrt(ms), expect, 0.05 * expect) << "sigma " << sigma;
 }

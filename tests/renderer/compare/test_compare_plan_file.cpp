@@ -18,7 +18,8 @@ namespace {
 // A plan of one uniform job whose "spp" is written as `spp`.
 std::string plan_with_spp(const std::string& spp) {
   return R"({"pdrt_plan": 1, "id": "0123456789abcdef", "scene_hash": "a1b2c3d4e5f60718", "request": {},
-  "jobs": [{"kind": "uniform", "sampler": "poisson", "spp": )" + spp + R"(, "seed_index": 0, "half": 0, "sweep_step": 0}]})";
+  "jobs": [{"kind": "uniform", "sampler": "poisson", "spp": )" +
+         spp + R"(, "seed_index": 0, "half": 0, "sweep_step": 0}]})";
 }
 
 // The message read_compare_plan refuses `plan_json` with, or "accepted".
@@ -40,13 +41,12 @@ const nlohmann::json kMark = nlohmann::json::parse(R"({"plan": "0123456789abcdef
   "build_seconds": 0.01, "cpu_seconds": 0.2, "build_cpu_seconds": 0.01, "spp_mean": 4.0, "samples": 1024,
   "adaptive_rounds": 0, "threads": 2, "profile_ticks": 40, "profile_sampler_ticks": 3, "cached": false, "file": ""})");
 
-TEST(ComparePlanFile, ReadsAnIntegerSpp) {
-  EXPECT_EQ(read_error(plan_with_spp("4")), "accepted");
-}
+TEST(ComparePlanFile, ReadsAnIntegerSpp) { EXPECT_EQ(read_error(plan_with_spp("4")), "accepted"); }
 
 TEST(ComparePlanFile, RefusesASppOutsideTheIntegersByName) {
-  EXPECT_NE(read_error(plan_with_spp("1e300")).find(
-                "plan.json: not a pdrt compare plan (\"spp\" must be an integer in [-2147483648, 2147483647], got 1e+300)"),
+  EXPECT_NE(read_error(plan_with_spp("1e300"))
+                .find("plan.json: not a pdrt compare plan (\"spp\" must be an integer in [-2147483648, 2147483647], "
+                      "got 1e+300)"),
             std::string::npos);
 }
 

@@ -21,7 +21,9 @@ Image field(int w, int h, const std::function<double(int, int)>& f) {
   return im;
 }
 
-Image zero(int w, int h) { return field(w, h, [](int, int) { return 0.0; }); }
+Image zero(int w, int h) {
+  return field(w, h, [](int, int) { return 0.0; });
+}
 
 }  // namespace
 

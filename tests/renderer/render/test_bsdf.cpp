@@ -91,10 +91,12 @@ struct FitCase {
 
 std::vector<FitCase> fit_cases() {
   std::vector<FitCase> cases;
-  for (float t : {0.0f, 45.0f, 80.0f}) cases.push_back({"Diffuse_theta" + std::to_string(int(t)), diffuse(Vec3(0.5f)), direction(t)});
+  for (float t : {0.0f, 45.0f, 80.0f})
+    cases.push_back({"Diffuse_theta" + std::to_string(int(t)), diffuse(Vec3(0.5f)), direction(t)});
   for (int r : {2, 5, 9})
     for (float t : {0.0f, 30.0f, 60.0f, 80.0f})
-      cases.push_back({"Ggx_r0p" + std::to_string(r) + "_theta" + std::to_string(int(t)), ggx(0.1f * r, Vec3(0.7f)), direction(t)});
+      cases.push_back(
+          {"Ggx_r0p" + std::to_string(r) + "_theta" + std::to_string(int(t)), ggx(0.1f * r, Vec3(0.7f)), direction(t)});
   for (float n : {10.0f, 100.0f})
     for (float t : {0.0f, 45.0f, 80.0f})
       cases.push_back({"Phong_n" + std::to_string(int(n)) + "_theta" + std::to_string(int(t)), phong(n), direction(t)});
@@ -143,9 +145,14 @@ INSTANTIATE_TEST_SUITE_P(Bsdf, SampleMatchesPdf, ::testing::ValuesIn(fit_cases()
 // ---- Weights and pdfs reported by sample() agree with eval() and pdf().
 
 TEST(Bsdf, SampleWeightIsEvalCosOverPdf) {
-  std::vector<Material> materials = {diffuse(Vec3(0.2f, 0.5f, 0.9f)), ggx(0.2f, Vec3(0.9f, 0.5f, 0.1f)), ggx(0.5f),
-                                     ggx(0.9f, Vec3(0.3f)), phong(10), phong(100, Vec3(0.5f, 0.6f, 0.7f)),
-                                     dielectric(0.3f, 1.5f, Vec3(0.9f, 0.8f, 0.7f)), dielectric(0.7f, 1.33f)};
+  std::vector<Material> materials = {diffuse(Vec3(0.2f, 0.5f, 0.9f)),
+                                     ggx(0.2f, Vec3(0.9f, 0.5f, 0.1f)),
+                                     ggx(0.5f),
+                                     ggx(0.9f, Vec3(0.3f)),
+                                     phong(10),
+                                     phong(100, Vec3(0.5f, 0.6f, 0.7f)),
+                                     dielectric(0.3f, 1.5f, Vec3(0.9f, 0.8f, 0.7f)),
+                                     dielectric(0.7f, 1.33f)};
   Rng rng(77);
   for (const Material& m : materials) {
     Bsdf bsdf(m);
@@ -173,14 +180,13 @@ TEST(Bsdf, SampleWeightIsEvalCosOverPdf) {
 // Integral of f(direction) over the upper hemisphere, in (theta, phi) like the chi-square bins.
 template <class F>
 double integrate_hemisphere(F f) {
-  auto g = [&](double theta, double phi) {
-    return f(from_theta_phi(theta, phi)) * std::sin(theta);
-  };
+  auto g = [&](double theta, double phi) { return f(from_theta_phi(theta, phi)) * std::sin(theta); };
   double sum = 0;
   const int nt = 16, np = 16;
   for (int i = 0; i < nt; ++i)
     for (int j = 0; j < np; ++j) {
-      double x0 = 0.5 * M_PI * i / nt, x1 = 0.5 * M_PI * (i + 1) / nt, y0 = 2 * M_PI * j / np, y1 = 2 * M_PI * (j + 1) / np;
+      double x0 = 0.5 * M_PI * i / nt, x1 = 0.5 * M_PI * (i + 1) / nt, y0 = 2 * M_PI * j / np,
+             y1 = 2 * M_PI * (j + 1) / np;
       sum += adaptive_simpson(g, x0, x1, y0, y1, simpson3x3(g, x0, x1, y0, y1), 1e-9, 1e-6, 8);
     }
   return sum;
@@ -251,7 +257,8 @@ TEST(Bsdf, GlossyGgxNeverCreatesEnergy) {
         Material m = ggx(r);
         m.energy_compensation = comp;
         Estimate e = mean_weight(Bsdf(m), direction(t), 11, 50000);
-        EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma + (comp ? 3e-3 : 0.0)) << "roughness " << r << " theta " << t << " comp " << comp;
+        EXPECT_LE(e.mean, 1.0 + 3.0 * e.sigma + (comp ? 3e-3 : 0.0))
+            << "roughness " << r << " theta " << t << " comp " << comp;
       }
 }
 
@@ -379,8 +386,8 @@ TEST(Bsdf, MirrorWeightIsSchlickFresnel) {
 // ---- Reciprocity.
 
 TEST(Bsdf, ReflectionIsReciprocal) {
-  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.2f, Vec3(0.3f)), ggx(0.5f), ggx(0.9f), phong(10),
-                                     phong(100), dielectric(0.3f), dielectric(0.7f)};
+  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.2f, Vec3(0.3f)), ggx(0.5f),       ggx(0.9f), phong(10),
+                                     phong(100),          dielectric(0.3f),      dielectric(0.7f)};
   Rng rng(31);
   for (const Material& m : materials) {
     Bsdf bsdf(m);
@@ -410,24 +417,25 @@ TEST(Bsdf, RoughDielectricTransmissionIsReciprocalUpToEta2) {
   // multiple-scattering compensation lobe, whose split between reflection and transmission
   // is chosen to keep this; ior < 1 (a bubble) too.
   for (float ior : {1.5f, 1.33f, 2.4f, 0.75f})
-  for (bool comp : {true, false})
-  for (float r : {0.3f, 0.7f, 1.0f}) {
-    Material m = dielectric(r, ior);
-    m.energy_compensation = comp;
-    Bsdf bsdf(m);
-    Rng rng(32);
-    int nonzero = 0;
-    for (int i = 0; i < 20000; ++i) {
-      Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
-      wo.z = std::abs(wo.z), wi.z = -std::abs(wi.z);
-      Vec3 a = bsdf.eval(wo, wi), b = bsdf.eval(wi, wo);
-      if (a.x < 1e-12f && b.x < 1e-12f) continue;
-      ++nonzero;
-      ASSERT_LE(rel_diff(a.x * ior * ior, b.x), 1e-4) << "ior " << ior << " comp " << comp << " r " << r << " wo " << wo.x << "," << wo.y << "," << wo.z << " wi " << wi.x
-                                                        << "," << wi.y << "," << wi.z << " f " << a.x << " " << b.x;
-    }
-    EXPECT_GT(nonzero, 1000);
-  }
+    for (bool comp : {true, false})
+      for (float r : {0.3f, 0.7f, 1.0f}) {
+        Material m = dielectric(r, ior);
+        m.energy_compensation = comp;
+        Bsdf bsdf(m);
+        Rng rng(32);
+        int nonzero = 0;
+        for (int i = 0; i < 20000; ++i) {
+          Vec3 wo = uniform_sphere(rng), wi = uniform_sphere(rng);
+          wo.z = std::abs(wo.z), wi.z = -std::abs(wi.z);
+          Vec3 a = bsdf.eval(wo, wi), b = bsdf.eval(wi, wo);
+          if (a.x < 1e-12f && b.x < 1e-12f) continue;
+          ++nonzero;
+          ASSERT_LE(rel_diff(a.x * ior * ior, b.x), 1e-4)
+              << "ior " << ior << " comp " << comp << " r " << r << " wo " << wo.x << "," << wo.y << "," << wo.z
+              << " wi " << wi.x << "," << wi.y << "," << wi.z << " f " << a.x << " " << b.x;
+        }
+        EXPECT_GT(nonzero, 1000);
+      }
 }
 
 // ---- Smooth dielectric optics.
@@ -517,8 +525,9 @@ TEST(Bsdf, SmoothDielectricRefractionObeysSnell) {
 
 TEST(Bsdf, SamplesAreFiniteAtTheCornersOfTheUnitSquare) {
   const float one_minus = 0x1.fffffep-1f;
-  std::vector<Material> materials = {diffuse(Vec3(0.5f)), ggx(0.0f), ggx(0.2f), ggx(1.0f), phong(0), phong(1000),
-                                     mirror(Vec3(0.9f)), dielectric(0.0f), dielectric(0.001f), dielectric(1.0f)};
+  std::vector<Material> materials = {
+      diffuse(Vec3(0.5f)), ggx(0.0f),          ggx(0.2f),        ggx(1.0f),          phong(0),
+      phong(1000),         mirror(Vec3(0.9f)), dielectric(0.0f), dielectric(0.001f), dielectric(1.0f)};
   for (const Material& m : materials) {
     Bsdf bsdf(m);
     for (float t : {0.0f, 45.0f, 89.9f})
@@ -593,14 +602,34 @@ struct MetalTable {
   PublishedNk rows[6];  // ascending wavelength: two entries around 450, 550 and 650 nm
 };
 constexpr MetalTable kPublished[] = {
-    {"Au", {{0.4305, 1.45, 1.948}, {0.4509, 1.38, 1.914}, {0.5209, 0.62, 2.081}, {0.5486, 0.43, 2.455},
-            {0.6168, 0.21, 3.272}, {0.6595, 0.14, 3.697}}},
-    {"Ag", {{0.4305, 0.04, 2.462}, {0.4509, 0.04, 2.657}, {0.5209, 0.05, 3.324}, {0.5486, 0.06, 3.586},
-            {0.6168, 0.06, 4.152}, {0.6595, 0.05, 4.483}}},
-    {"Cu", {{0.4305, 1.25, 2.305}, {0.4509, 1.24, 2.397}, {0.5209, 1.18, 2.608}, {0.5486, 1.02, 2.577},
-            {0.6168, 0.30, 3.205}, {0.6595, 0.22, 3.747}}},
-    {"Al", {{0.4428, 0.6079, 5.3676}, {0.47687, 0.7278, 5.7781}, {0.5166, 0.8734, 6.2418},
-            {0.56357, 1.0728, 6.7839}, {0.61993, 1.3660, 7.4052}, {0.65225, 1.5724, 7.7354}}},
+    {"Au",
+     {{0.4305, 1.45, 1.948},
+      {0.4509, 1.38, 1.914},
+      {0.5209, 0.62, 2.081},
+      {0.5486, 0.43, 2.455},
+      {0.6168, 0.21, 3.272},
+      {0.6595, 0.14, 3.697}}},
+    {"Ag",
+     {{0.4305, 0.04, 2.462},
+      {0.4509, 0.04, 2.657},
+      {0.5209, 0.05, 3.324},
+      {0.5486, 0.06, 3.586},
+      {0.6168, 0.06, 4.152},
+      {0.6595, 0.05, 4.483}}},
+    {"Cu",
+     {{0.4305, 1.25, 2.305},
+      {0.4509, 1.24, 2.397},
+      {0.5209, 1.18, 2.608},
+      {0.5486, 1.02, 2.577},
+      {0.6168, 0.30, 3.205},
+      {0.6595, 0.22, 3.747}}},
+    {"Al",
+     {{0.4428, 0.6079, 5.3676},
+      {0.47687, 0.7278, 5.7781},
+      {0.5166, 0.8734, 6.2418},
+      {0.56357, 1.0728, 6.7839},
+      {0.61993, 1.3660, 7.4052},
+      {0.65225, 1.5724, 7.7354}}},
 };
 
 double published_r0(const MetalTable& t, double um) {
@@ -626,7 +655,8 @@ TEST(Conductor, FresnelAtNormalIncidenceIsR0OfEachNamedMetal) {
       EXPECT_NEAR(fresnel_conductor(1.0, nm->eta[c], nm->k[c]), r0, 1e-12) << t.name << " channel " << c;
       // And the published reflectance within 1 % (relative).
       double published = published_r0(t, channel_um[c]);
-      EXPECT_LE(rel_diff(r0, published), 0.01) << t.name << " channel " << c << " R0 " << r0 << " published " << published;
+      EXPECT_LE(rel_diff(r0, published), 0.01)
+          << t.name << " channel " << c << " R0 " << r0 << " published " << published;
     }
   }
 }
@@ -697,7 +727,8 @@ TEST(Conductor, RoughConductorIsReciprocal) {
 TEST(Conductor, PerfectConductorFurnaceStaysWithinTheGlossyBounds) {
   // A conductor with k = 1e4 has F = 1 to 2e-4 at every angle (R0 = 1 - 4 eta / ((eta+1)^2 + k^2)).
   // Same bounds as GlossyGgxNeverCreatesEnergy: mean weight <= 1 + 3 sigma (+ 3e-3 with
-  // compensation); and, with compensation, no more than 3 % lost as in test_energy_compensation.cpp (E_ss alone loses up to 60 %).
+  // compensation); and, with compensation, no more than 3 % lost as in test_energy_compensation.cpp (E_ss alone loses
+  // up to 60 %).
   EXPECT_GT(fresnel_conductor(0.05, 1.0, 1e4), 1.0 - 2e-4);
   for (bool comp : {false, true})
     for (float r : {0.05f, 0.2f, 0.5f, 0.9f, 1.0f})

@@ -89,7 +89,8 @@ std::vector<FitCase> fit_cases() {
     for (float t : {0.0f, 60.0f, 85.0f})
       cases.push_back({"Rough_r" + std::to_string(r / 10) + "p" + std::to_string(r % 10) + "_theta" + deg(t),
                        coated(0.1f * r, Vec3(0.5f)), direction(t)});
-  cases.push_back({"RoughAbsorbing_r0p3_theta70", coated(0.3f, Vec3(0.9f), 1.33f, Vec3(0.5f, 0.7f, 0.9f)), direction(70)});
+  cases.push_back(
+      {"RoughAbsorbing_r0p3_theta70", coated(0.3f, Vec3(0.9f), 1.33f, Vec3(0.5f, 0.7f, 0.9f)), direction(70)});
   return cases;
 }
 
@@ -201,8 +202,9 @@ TEST(CoatedDiffuse, DirectionsBelowTheSurfaceGiveNothing) {
 
 TEST(CoatedDiffuse, SamplesAreFiniteAtTheCornersOfTheUnitSquare) {
   const float one_minus = 0x1.fffffep-1f;
-  for (const Material& m : {coated(0), coated(0.001f), coated(1.0f), coated(0, Vec3(0.0f)), coated(0.5f, Vec3(0.0f), 1.0f),
-                            coated(0, Vec3(1.0f), 1.0f, Vec3(0.0f)), coated(0.4f, Vec3(1.0f), 3.0f, Vec3(0.0f, 0.5f, 1.0f), 1e30f)}) {
+  for (const Material& m :
+       {coated(0), coated(0.001f), coated(1.0f), coated(0, Vec3(0.0f)), coated(0.5f, Vec3(0.0f), 1.0f),
+        coated(0, Vec3(1.0f), 1.0f, Vec3(0.0f)), coated(0.4f, Vec3(1.0f), 3.0f, Vec3(0.0f, 0.5f, 1.0f), 1e30f)}) {
     Bsdf bsdf(m);
     for (float t : {0.0f, 45.0f, 89.9f, 89.999f})
       for (float u1 : {0.0f, 0.5f, one_minus})
@@ -271,8 +273,8 @@ TEST(CoatedDiffuse, SmoothWhiteFurnaceIsExactlyOneByQuadrature) {
   for (float ior : {1.2f, 1.5f, 2.4f})
     for (float mu : {0.05f, 0.4f, 1.0f}) {
       Bsdf bsdf(coated(0, Vec3(1.0f), ior));
-      double diffuse = test::integrate_sphere([&](const Vec3& wi) { return double(bsdf.eval(wo_at(mu), wi).x) * std::abs(wi.z); },
-                                              512, 64);
+      double diffuse = test::integrate_sphere(
+          [&](const Vec3& wi) { return double(bsdf.eval(wo_at(mu), wi).x) * std::abs(wi.z); }, 512, 64);
       EXPECT_NEAR(fresnel_dielectric(mu, ior) + diffuse, 1.0, 1e-4) << "ior " << ior << " mu " << mu;
     }
 }
@@ -286,7 +288,8 @@ TEST(CoatedDiffuse, BlackBaseReflectsTheCoatAlone) {
     EXPECT_LT(s.sigma[0], 1e-6);  // every weight is F(mu_o), up to float rounding
     for (float r : {0.3f, 0.7f, 1.0f}) {
       Estimate e = sampled_albedo(Bsdf(coated(r, Vec3(0.0f))), wo_at(mu), 8, 200000);
-      EXPECT_NEAR(e.mean[0], ggx_coat_albedo(mu, r * r, 1.5f), 3.0 * e.sigma[0] + 3e-3) << "roughness " << r << " mu " << mu;
+      EXPECT_NEAR(e.mean[0], ggx_coat_albedo(mu, r * r, 1.5f), 3.0 * e.sigma[0] + 3e-3)
+          << "roughness " << r << " mu " << mu;
     }
   }
 }

@@ -70,7 +70,7 @@ TEST(CropWindow, PixelsAreTheCeilingsOfTheBounds) {
   EXPECT_EQ(all.y0, 0);
   EXPECT_EQ(all.y1, 32);
   EXPECT_TRUE(crop_pixels({0.501f, 0.52f, 0, 1}, 48, 32).empty());  // ceil: 25 .. 25, no pixel
-  EXPECT_EQ(crop_pixels({0.5f, 0.51f, 0, 1}, 48, 32).width(), 1);  // 24.0 .. 24.48: pixel 24
+  EXPECT_EQ(crop_pixels({0.5f, 0.51f, 0, 1}, 48, 32).width(), 1);   // 24.0 .. 24.48: pixel 24
 }
 
 // pbrt-v4's pixelbounds as a window: every rectangle of a few film sizes maps back to itself.
@@ -124,7 +124,8 @@ TEST(CropWindow, AdaptiveCroppedRenderIsTheCropOfTheFullRender) {
       EXPECT_GT(full.stats.adaptive_rounds, 1);
       s.film.crop_window = kCrop;
       RenderResult part = render_quietly(s);
-      EXPECT_EQ(differences(full.image, part.image, crop_pixels(kCrop, 48, 32)), 0) << sampler << " " << reconstruction_name(m);
+      EXPECT_EQ(differences(full.image, part.image, crop_pixels(kCrop, 48, 32)), 0)
+          << sampler << " " << reconstruction_name(m);
       double samples = 0;
       for (float n : part.image.samples) samples += n;
       EXPECT_GT(samples, 17 * 11);  // some pixels refined

@@ -140,13 +140,15 @@ TEST(DeltaLights, MovingPointLightLightsFromWhereItIsAtTheRayTime) {
       for (int x = 0; x < W; ++x) {
         double expected = 0;
         for (int k = 0; k < 64; ++k)
-          expected += pixel_mean(x, y, [&](const Vec3& p) { return point_radiance(p, q + path * ((k + 0.5f) / 64), I); }) / 64;
+          expected +=
+              pixel_mean(x, y, [&](const Vec3& p) { return point_radiance(p, q + path * ((k + 0.5f) / 64), I); }) / 64;
         worst = std::max(worst, std::abs(mean_rgb(im, x, y) / expected - 1));
         mean += mean_rgb(im, x, y) / expected / (W * W);
       }
     EXPECT_NEAR(mean, 1, 1e-3) << describe(at);
     EXPECT_LT(worst, 0.015) << describe(at);
-    std::printf("moving point light, %s: mean ratio %.5f, worst relative error %.2e\n", describe(at).c_str(), mean, worst);
+    std::printf("moving point light, %s: mean ratio %.5f, worst relative error %.2e\n", describe(at).c_str(), mean,
+                worst);
   }
 }
 
@@ -203,9 +205,10 @@ TEST(DeltaLights, SpotLightIsThePointLightInsideItsConeBlackOutsideAndBetweenInI
     mean_between /= between;
     EXPECT_NEAR(mean_between, 1, 0.003) << describe(at);
     EXPECT_LT(worst_between, 0.05) << describe(at);
-    std::printf("spot light, %s: %d pixels inside (worst %.2e), %d in the falloff (mean ratio %.5f, worst %.2e), "
-                "%d outside (max %g)\n",
-                describe(at).c_str(), inside, worst_in, between, mean_between, worst_between, outside, brightest_out);
+    std::printf(
+        "spot light, %s: %d pixels inside (worst %.2e), %d in the falloff (mean ratio %.5f, worst %.2e), "
+        "%d outside (max %g)\n",
+        describe(at).c_str(), inside, worst_in, between, mean_between, worst_between, outside, brightest_out);
   }
 }
 
@@ -340,8 +343,10 @@ TEST(DeltaLights, SelectionProbabilitiesSumToOneWithDeltaLights) {
     for (bool env : {false, true}) {
       const Placement at{Vec3(100, -20, 30) * scale, scale};
       SceneDesc s = base_scene(8, 8, 1);
-      s.shapes.push_back(quad(at.point({-4, 0, -4}), at.vector({0, 0, 8}), at.vector({8, 0, 0}), add_material(s, diffuse(0.5f))));
-      s.shapes.push_back(quad(at.point({-1, 2, -1}), at.vector({2, 0, 0}), at.vector({0, 0, 2}), add_material(s, emitter(3))));
+      s.shapes.push_back(
+          quad(at.point({-4, 0, -4}), at.vector({0, 0, 8}), at.vector({8, 0, 0}), add_material(s, diffuse(0.5f))));
+      s.shapes.push_back(
+          quad(at.point({-1, 2, -1}), at.vector({2, 0, 0}), at.vector({0, 0, 2}), add_material(s, emitter(3))));
       s.delta_lights.push_back(point_light(at.point({1, 1, 1}), 5 * scale * scale));
       s.delta_lights.push_back(spot_light(at.point({-2, 3, 0}), {0, -1, 0}, 50 * scale * scale, 20, 10));
       s.delta_lights.push_back(distant_light({1, -1, 0.5f}, 2));
@@ -393,14 +398,16 @@ TEST(DeltaLights, DeltaAndAreaLightsTogetherRenderTheSumOfTheirSeparateImages) {
     SceneDesc s = base_scene(S, S, 64);
     s.camera.position = at.point({0, 1.5f, 3}), s.camera.look_at = at.point({0, 0.3f, 0}), s.camera.vfov_deg = 60;
     s.integrator.max_depth = 2;
-    s.shapes.push_back(quad(at.point({-3, 0, -3}), at.vector({0, 0, 6}), at.vector({6, 0, 0}), add_material(s, diffuse(0.6f))));
-    s.shapes.push_back(quad(at.point({-3, 0, -1}), at.vector({6, 0, 0}), at.vector({0, 3, 0}), add_material(s, diffuse(0.4f))));  // back wall
+    s.shapes.push_back(
+        quad(at.point({-3, 0, -3}), at.vector({0, 0, 6}), at.vector({6, 0, 0}), add_material(s, diffuse(0.6f))));
+    s.shapes.push_back(quad(at.point({-3, 0, -1}), at.vector({6, 0, 0}), at.vector({0, 3, 0}),
+                            add_material(s, diffuse(0.4f))));  // back wall
     s.shapes.push_back(sphere(at.point({0.5f, 0.4f, 0.5f}), 0.4f, add_material(s, diffuse(0.7f))));
     const int off = add_material(s, emitter(0)), lamp = add_material(s, emitter(4));
     // The quad light keeps its geometry when it is off (an emitter of radiance 0, which
     // neither emits nor scatters), so every image sees the same scene.
-    s.shapes.push_back(quad(at.point({-1.5f, 2, -0.5f}), at.vector({0.6f, 0, 0}), at.vector({0, 0, 0.6f}),
-                            (which & 1) ? lamp : off));
+    s.shapes.push_back(
+        quad(at.point({-1.5f, 2, -0.5f}), at.vector({0.6f, 0, 0}), at.vector({0, 0, 0.6f}), (which & 1) ? lamp : off));
     if (set == 0) {
       if (which & 2) s.delta_lights.push_back(point_light(at.point({1, 1.2f, 1}), 1.5f));
     } else {

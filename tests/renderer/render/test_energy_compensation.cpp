@@ -120,9 +120,12 @@ TEST(EnergyCompensation, SampledEstimateMatchesQuadratureOfEval) {
   gold.albedo = Vec3(1.0f, 0.78f, 0.34f);
   Material tinted = glass(1.5f, 0.8f);
   tinted.albedo = Vec3(0.9f, 0.6f, 0.3f);
-  struct Case { Material m; Vec3 wo; };
-  for (const Case& c : {Case{gold, wo_at(0.8f)}, Case{gold, wo_at(0.3f)}, Case{tinted, wo_at(0.7f)},
-                        Case{tinted, -wo_at(0.5f)}}) {
+  struct Case {
+    Material m;
+    Vec3 wo;
+  };
+  for (const Case& c :
+       {Case{gold, wo_at(0.8f)}, Case{gold, wo_at(0.3f)}, Case{tinted, wo_at(0.7f)}, Case{tinted, -wo_at(0.5f)}}) {
     Bsdf bsdf(c.m);
     float ior = c.m.type == MaterialType::Dielectric ? c.m.ior : 1.0f;
     for (int k = 0; k < 3; ++k) {

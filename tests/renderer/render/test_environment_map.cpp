@@ -225,7 +225,8 @@ SceneDesc quad_light_and_map(float scale) {
 }  // namespace
 
 // Light selection: the map competes with the quad light by its power; ten times the scale
-// gives ten times the odds (pmf / (1 - pmf); 1e4 times for scales 1e-3 and 10), so a dim map is chosen rarely, a bright one often.
+// gives ten times the odds (pmf / (1 - pmf); 1e4 times for scales 1e-3 and 10), so a dim map is chosen rarely, a bright
+// one often.
 TEST(EnvironmentMap, SelectionOddsScaleWithTheMapsRadiance) {
   double odds[2], pmf[2];
   for (int k = 0; k < 2; ++k) {
@@ -256,7 +257,8 @@ TEST(EnvironmentMap, LightSetDrawsFromTheMap) {
   int env = 0;
   for (int i = 0; i < 2000; ++i) {
     LightSample ls;
-    if (!lights.sample(ref, n, 0, float(rng.uniform()), {rng.uniform(), rng.uniform()}, &ls) || !ls.at_infinity) continue;
+    if (!lights.sample(ref, n, 0, float(rng.uniform()), {rng.uniform(), rng.uniform()}, &ls) || !ls.at_infinity)
+      continue;
     ++env;
     EXPECT_NEAR(ls.pdf, pick * map.pdf(ls.wi), 1e-4f * ls.pdf);
     EXPECT_NEAR(lights.environment_pdf(ref, n, ls.wi), ls.pdf, 1e-4f * ls.pdf);

@@ -25,7 +25,9 @@ Material uncompensated(MaterialType type, float roughness, float ior = 1.5f) {
 // Absolute tolerance: the generator's 64^2 (conductor) and 40^2 (dielectric) midpoint rules
 // and linear interpolation between nodes; the quadrature here is good to ~1e-4.
 TEST(GgxAlbedo, ConductorTableMatchesBruteForce) {
-  struct P { float mu, roughness; };
+  struct P {
+    float mu, roughness;
+  };
   for (P p : {P{1.0f, 1.0f}, P{0.5f, 0.5f}, P{0.2f, 0.8f}, P{0.75f, 0.3f}, P{0.9f, 0.65f}}) {
     float alpha = p.roughness * p.roughness;
     double ref = test::energy_albedo(Bsdf(uncompensated(MaterialType::Glossy, p.roughness)), wo_at(p.mu));
@@ -34,7 +36,10 @@ TEST(GgxAlbedo, ConductorTableMatchesBruteForce) {
 }
 
 TEST(GgxAlbedo, DielectricTableMatchesBruteForceFromBothSides) {
-  struct P { float mu, roughness, ior; bool inside; };
+  struct P {
+    float mu, roughness, ior;
+    bool inside;
+  };
   for (P p : {P{1.0f, 0.8f, 1.5f, false}, P{0.5f, 0.5f, 1.5f, false}, P{0.7f, 0.8f, 1.5f, true},
               P{0.3f, 0.6f, 1.33f, true}, P{0.9f, 1.0f, 2.4f, false}}) {
     float alpha = p.roughness * p.roughness;
@@ -50,8 +55,11 @@ TEST(GgxAlbedo, DielectricTableMatchesBruteForceFromBothSides) {
 // The coat of coated_diffuse: the rough dielectric's reflection alone, from outside. A black
 // base leaves only the coat lobe in eval().
 TEST(GgxAlbedo, CoatTableMatchesBruteForce) {
-  struct P { float mu, roughness, ior; };
-  for (P p : {P{1.0f, 0.8f, 1.5f}, P{0.5f, 0.5f, 1.5f}, P{0.2f, 0.3f, 1.33f}, P{0.1f, 0.7f, 2.4f}, P{0.7f, 1.0f, 3.0f}}) {
+  struct P {
+    float mu, roughness, ior;
+  };
+  for (P p :
+       {P{1.0f, 0.8f, 1.5f}, P{0.5f, 0.5f, 1.5f}, P{0.2f, 0.3f, 1.33f}, P{0.1f, 0.7f, 2.4f}, P{0.7f, 1.0f, 3.0f}}) {
     Material m;
     m.type = MaterialType::CoatedDiffuse;
     m.roughness = p.roughness, m.ior = p.ior, m.albedo = Vec3(0.0f);

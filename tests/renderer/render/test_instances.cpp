@@ -79,9 +79,10 @@ Pair instanced_and_copied(const Placement& at, bool moving) {
   p.shapes.push_back(sphere({-0.4f, 0.25f, 0.3f}, 0.25f, m_ball));
   s.prototypes.push_back(p);
 
-  const Affine local[3] = {Affine::translate({-1.8f, 0, 0}),
-                           Affine::translate({0, 0.1f, -0.5f}) * Affine::rotate({0, 1, 0}, 35) * Affine::scale(Vec3(1.1f)),
-                           Affine::translate({1.8f, 0, 0.3f}) * Affine::rotate({1, 0, 1}, -12) * Affine::scale(Vec3(0.9f))};
+  const Affine local[3] = {
+      Affine::translate({-1.8f, 0, 0}),
+      Affine::translate({0, 0.1f, -0.5f}) * Affine::rotate({0, 1, 0}, 35) * Affine::scale(Vec3(1.1f)),
+      Affine::translate({1.8f, 0, 0.3f}) * Affine::rotate({1, 0, 1}, -12) * Affine::scale(Vec3(0.9f))};
   for (int i = 0; i < 3; ++i) {
     InstanceDesc in;
     in.prototype = 0;
@@ -121,7 +122,8 @@ Difference difference(const Image& a, const Image& b) {
   double sum = 0;
   const int n = a.width * a.height;
   for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) d.mean += mean_rgb(b, x, y), sum += std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y));
+    for (int x = 0; x < a.width; ++x)
+      d.mean += mean_rgb(b, x, y), sum += std::abs(mean_rgb(a, x, y) - mean_rgb(b, x, y));
   d.mean /= n;
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x)
@@ -130,7 +132,8 @@ Difference difference(const Image& a, const Image& b) {
   return d;
 }
 
-const std::vector<Placement> kPlacements = {{{0, 0, 0}, 1}, {{1e4f, -1e4f, 1e4f}, 1}, {{0, 0, 0}, 1e-3f}, {{10, 5, 3}, 1e-3f}};
+const std::vector<Placement> kPlacements = {
+    {{0, 0, 0}, 1}, {{1e4f, -1e4f, 1e4f}, 1}, {{0, 0, 0}, 1e-3f}, {{10, 5, 3}, 1e-3f}};
 
 // Float spacing at the placement's offset relative to the scene's size: how far a copied
 // vertex (stored in world space) may sit from the instanced one (stored in the prototype's
@@ -216,7 +219,9 @@ TEST(Instances, EmbreeInstanceTransformsFollowPdrtsKeyframeInterpolation) {
     s.prototypes.push_back(p);
     InstanceDesc in;
     Affine upper;  // upper triangular 3x3 when not rotated
-    upper.m = {{{u(0.5f, 2), u(-0.5f, 0.5f), u(-0.5f, 0.5f), u(-3, 3)}, {0, u(0.5f, 2), u(-0.5f, 0.5f), u(-3, 3)}, {0, 0, u(-2, -0.5f), u(-3, 3)}}};
+    upper.m = {{{u(0.5f, 2), u(-0.5f, 0.5f), u(-0.5f, 0.5f), u(-3, 3)},
+                {0, u(0.5f, 2), u(-0.5f, 0.5f), u(-3, 3)},
+                {0, 0, u(-2, -0.5f), u(-3, 3)}}};
     in.transform = rotated ? Affine::rotate({u(-1, 1), u(-1, 1), 1}, u(-170, 170)) * upper : upper;
     for (int k = 0; k < 3; ++k) {
       MotionKey key;
@@ -241,7 +246,8 @@ TEST(Instances, EmbreeInstanceTransformsFollowPdrtsKeyframeInterpolation) {
       const float tol = exact ? 2e-5f : 5e-3f;
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c)
-          EXPECT_NEAR(got.m[r][c], want.m[r][c], tol * (1 + std::abs(want.m[r][c]))) << "trial " << trial << " t " << t << " [" << r << "][" << c << "]";
+          EXPECT_NEAR(got.m[r][c], want.m[r][c], tol * (1 + std::abs(want.m[r][c])))
+              << "trial " << trial << " t " << t << " [" << r << "][" << c << "]";
     }
   }
   EXPECT_GT(exact_cases, 8);

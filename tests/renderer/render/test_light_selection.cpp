@@ -27,8 +27,10 @@ Vec3 random_unit(Rng& rng) {
 SceneDesc many_lights(float scale, Vec3 offset, bool environment) {
   SceneDesc s = base_scene(8, 8, 1);
   auto at = [&](Vec3 p) { return p * scale + offset; };
-  s.shapes.push_back(quad(at({-4, 0, -4}), Vec3(0, 0, 8) * scale, Vec3(8, 0, 0) * scale, add_material(s, diffuse(0.5f))));
-  const int one = add_material(s, emitter(3)), two = add_material(s, emitter(0.5f, true)), hot = add_material(s, emitter(40));
+  s.shapes.push_back(
+      quad(at({-4, 0, -4}), Vec3(0, 0, 8) * scale, Vec3(8, 0, 0) * scale, add_material(s, diffuse(0.5f))));
+  const int one = add_material(s, emitter(3)), two = add_material(s, emitter(0.5f, true)),
+            hot = add_material(s, emitter(40));
   s.shapes.push_back(quad(at({-1, 2, -1}), Vec3(2, 0, 0) * scale, Vec3(0, 0, 2) * scale, one));          // down
   s.shapes.push_back(quad(at({2, 0.5f, 1}), Vec3(0, 0, 1) * scale, Vec3(1, 0, 0) * scale, one));         // up
   s.shapes.push_back(quad(at({-3, 0.2f, 2}), Vec3(0, 1, 0) * scale, Vec3(0, 0, 1) * scale, two));        // sideways
@@ -115,8 +117,10 @@ TEST(LightSelection, PickFrequenciesMatchThePmf) {
       }
       chi2 += (count[l] - e) * (count[l] - e) / e, ++bins;
     }
-    if (pooled_e >= 20) chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / pooled_e, ++bins;
-    else EXPECT_LT(pooled_o, 60) << "lights of pmf ~0 are (almost) never picked";
+    if (pooled_e >= 20)
+      chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / pooled_e, ++bins;
+    else
+      EXPECT_LT(pooled_o, 60) << "lights of pmf ~0 are (almost) never picked";
     ASSERT_GE(bins, 3);
     double pv = chi_square_p_value(chi2, bins - 1);
     EXPECT_GT(pv, 1e-4) << "point " << point << ": chi2 " << chi2 << " over " << bins << " bins";
@@ -128,7 +132,8 @@ TEST(LightSelection, PickFrequenciesMatchThePmf) {
 // global power CDF picks it 1 time in 10^4.) The far light keeps a non-zero probability.
 TEST(LightSelection, NearDimLightGetsMostPicksBesideIt) {
   SceneDesc s = base_scene(8, 8, 1);
-  s.shapes.push_back(quad({-0.1f, 0.3f, -0.1f}, {0.2f, 0, 0}, {0, 0, 0.2f}, add_material(s, emitter(1))));  // 0.04 W/sr-ish
+  s.shapes.push_back(
+      quad({-0.1f, 0.3f, -0.1f}, {0.2f, 0, 0}, {0, 0, 0.2f}, add_material(s, emitter(1))));  // 0.04 W/sr-ish
   s.shapes.push_back(quad({40, 30, -1}, {2, 0, 0}, {0, 0, 2}, add_material(s, emitter(100))));
   EmbreeDevice device;
   EmbreeScene scene(s, device);
@@ -190,7 +195,8 @@ LitPlane lit_plane(const std::vector<QuadLight>& ql, float env, uint64_t seed, i
   s.camera.vfov_deg = 90;
   s.shapes.push_back(quad({-3, 0, -3}, {0, 0, 6}, {6, 0, 0}, add_material(s, diffuse(rho))));
   for (const QuadLight& q : ql)
-    s.shapes.push_back(quad({q.x0, q.h, q.z0}, {q.x1 - q.x0, 0, 0}, {0, 0, q.z1 - q.z0}, add_material(s, emitter(q.radiance))));
+    s.shapes.push_back(
+        quad({q.x0, q.h, q.z0}, {q.x1 - q.x0, 0, 0}, {0, 0, q.z1 - q.z0}, add_material(s, emitter(q.radiance))));
   s.environment.radiance = Vec3(env);
   s.integrator.max_depth = 1;
   Image im = render_quietly(s).image;

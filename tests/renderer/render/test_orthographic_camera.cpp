@@ -109,8 +109,8 @@ TEST(OrthographicCamera, OffFocusPointSpreadsOverItsCircleOfConfusion) {
   s.shapes.push_back(sphere({0.125f, 0, -d}, 0.01f, add_material(s, emitter(1.0f))));
   Image im = render_quietly(s).image;
   double cx, sd = spread_x(im, &cx);
-  const double R = A * std::abs(1 - d / f) * H / height;  // 6.4 px
-  const double point_sd = 0.01 * H / height / 2;           // the sphere's own disk
+  const double R = A * std::abs(1 - d / f) * H / height;                          // 6.4 px
+  const double point_sd = 0.01 * H / height / 2;                                  // the sphere's own disk
   const double expected = std::sqrt(R * R / 4 + point_sd * point_sd + 1.0 / 12);  // + the pixel's box
   EXPECT_NEAR(cx, 32 + 0.125 * H / height, 0.2);
   EXPECT_NEAR(sd, expected, 0.05 * expected) << "R = " << R << " px";

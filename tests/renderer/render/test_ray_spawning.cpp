@@ -15,10 +15,9 @@ using namespace pdrt::test;
 
 namespace {
 
-const std::vector<Placement> kPlacements = {
-    {{0, 0, 0}, 1},        {{10, 0, 0}, 1},       {{1e3f, -1e3f, 0}, 1},  {{1e5f, 0, 0}, 1},
-    {{0, 0, 1e5f}, 1},     {{0, 0, 0}, 1e-3f},    {{0, 0, 0}, 1e3f},      {{1e3f, 0, 1e3f}, 1e3f},
-    {{-10, 5, 3}, 1e-3f}};
+const std::vector<Placement> kPlacements = {{{0, 0, 0}, 1},    {{10, 0, 0}, 1},         {{1e3f, -1e3f, 0}, 1},
+                                            {{1e5f, 0, 0}, 1}, {{0, 0, 1e5f}, 1},       {{0, 0, 0}, 1e-3f},
+                                            {{0, 0, 0}, 1e3f}, {{1e3f, 0, 1e3f}, 1e3f}, {{-10, 5, 3}, 1e-3f}};
 
 // Looking straight down at the plane y = 0 from `height` with a 90° field: pixel (x, y)
 // sees the plane point below its centre.
@@ -70,8 +69,8 @@ TEST(RaySpawning, PlaneUnderSphereLightMatchesTheAnalyticValueAtEveryPlacement) 
   const float rho = 0.5f, Le = 4, r = 0.5f, height = 0.3f;
   for (const Placement& at : kPlacements) {
     SceneDesc s = looking_down(at, W, 256, height);
-    s.shapes.push_back(quad(at.point({-5, 0, -5}), at.vector({0, 0, 10}), at.vector({10, 0, 0}),
-                            add_material(s, diffuse(rho))));
+    s.shapes.push_back(
+        quad(at.point({-5, 0, -5}), at.vector({0, 0, 10}), at.vector({10, 0, 0}), add_material(s, diffuse(rho))));
     s.shapes.push_back(sphere(at.point({0, 1, 0}), r * at.scale, add_material(s, emitter(Le))));
     Image im = render_quietly(s).image;
     double err = 0, total = 0;

@@ -83,8 +83,10 @@ SceneDesc edge_scene(int spp, Reconstruction mode, const char* sampler, uint64_t
 
 double gaussian_mass_left_of(double edge) {
   Filter f{FilterDesc{}};
-  return filter_quadrature(f, [&](double x, double, double v) { return x < edge ? v : 0.0; }, 1200) /
-         filter_quadrature(f, [](double, double, double v) { return v; }, 1200);
+  return filter_quadrature(
+             f, [&](double x, double, double v) { return x < edge ? v : 0.0; }, 1200) /
+         filter_quadrature(
+             f, [](double, double, double v) { return v; }, 1200);
 }
 
 // Mean and standard error of column `x` over rows and seeds.

@@ -56,11 +56,11 @@ SceneDesc caustic_scene(int size, int spp) {
 
 // A GGX alpha below 0.3 doubles within [0.1, 0.3]; rougher lobes are left alone.
 TEST(Regularize, GgxAlphaDoublesWithinPointOneToPointThree) {
-  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Glossy, 0.3f))), 0.18, 1e-6);      // 0.09 -> 0.18
-  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Conductor, 0.2f))), 0.1, 1e-6);    // 0.04 -> 0.1
-  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Dielectric, 0.5f))), 0.3, 1e-6);   // 0.25 -> 0.3
+  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Glossy, 0.3f))), 0.18, 1e-6);     // 0.09 -> 0.18
+  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Conductor, 0.2f))), 0.1, 1e-6);   // 0.04 -> 0.1
+  EXPECT_NEAR(alpha(regularized(of_type(MaterialType::Dielectric, 0.5f))), 0.3, 1e-6);  // 0.25 -> 0.3
   EXPECT_NEAR(alpha(regularized(of_type(MaterialType::CoatedDiffuse, 0.2f))), 0.1, 1e-6);
-  EXPECT_EQ(regularized(of_type(MaterialType::Glossy, 0.6f)).roughness, 0.6f);           // 0.36 stays
+  EXPECT_EQ(regularized(of_type(MaterialType::Glossy, 0.6f)).roughness, 0.6f);  // 0.36 stays
 }
 
 // Delta lobes become rough (alpha 0.1), so that next-event estimation can reach them: a smooth

@@ -151,7 +151,7 @@ TEST(RenderAnalytic, OffFocusPointSpreadsOverCircleOfConfusion) {
   double cx, sd = spread_x(im, &cx);
   double R = A * std::abs(d - f) * H / (2 * d * f * std::tan(10 * M_PI / 180));
   double point_sd = 0.01 * f / d * H / (2 * f * std::tan(10 * M_PI / 180)) / 2;  // the sphere's own size
-  double expected = std::sqrt(R * R / 4 + point_sd * point_sd + 1.0 / 12);  // + the pixel's box
+  double expected = std::sqrt(R * R / 4 + point_sd * point_sd + 1.0 / 12);       // + the pixel's box
   EXPECT_NEAR(cx, 32, 0.2);
   EXPECT_NEAR(sd, expected, 0.05 * expected) << "R = " << R << " px";
 }
@@ -256,8 +256,10 @@ TEST(RenderAnalytic, FurnaceGlossyLobeNeverCreatesEnergy) {
     s.environment.radiance = Vec3(1.0f);
     Material m;
     m.type = MaterialType::Glossy, m.albedo = Vec3(1.0f);
-    if (phong) m.lobe = GlossLobe::Phong, m.exponent = 20;
-    else m.roughness = 0.5f;
+    if (phong)
+      m.lobe = GlossLobe::Phong, m.exponent = 20;
+    else
+      m.roughness = 0.5f;
     s.shapes.push_back(sphere({0, 0, 0}, 1, add_material(s, m)));
     Image im = render_quietly(s).image;
     double sum = 0;

@@ -70,8 +70,8 @@ TEST(RussianRoulette, SmoothGlassSphereInAFurnaceAt1024SppAgreesAcrossSamplers) 
   const double random_rms = compare(render("random", 8))[2];
   for (const char* sampler : {"jitter", "poisson", "sobol"}) {
     const auto [mean, se, rms] = compare(render(sampler, 7));
-    std::printf("furnace 1024 spp: %s %+.2e +- %.1e against random, rms %.2e (random's %.2e)\n", sampler, mean, se,
-                rms, random_rms);
+    std::printf("furnace 1024 spp: %s %+.2e +- %.1e against random, rms %.2e (random's %.2e)\n", sampler, mean, se, rms,
+                random_rms);
     EXPECT_LE(std::abs(mean), 3 * se + 1e-7) << sampler;
     EXPECT_LE(rms, 1.1 * random_rms) << sampler;
   }

@@ -60,7 +60,8 @@ TEST(TexturedEmitters, AHalfBrightLightLightsThePlaneAsItsHalvesFormFactorsSay) 
   for (int y = 0; y < W; ++y)
     for (int x = 0; x < W; ++x) {
       const double cx = (x + 0.5) / W - 0.5, cz = (y + 0.5) / W - 0.5;
-      const double e = rho * (4 * rect_form_factor(cx, cz, -0.5, 0, -0.5, 0.5, h) + 1 * rect_form_factor(cx, cz, 0, 0.5, -0.5, 0.5, h));
+      const double e = rho * (4 * rect_form_factor(cx, cz, -0.5, 0, -0.5, 0.5, h) +
+                              1 * rect_form_factor(cx, cz, 0, 0.5, -0.5, 0.5, h));
       const double v = mean_rgb(im, x, y);
       worst = std::max(worst, std::abs(v / e - 1));
       sum += v, sum_expected += e;
@@ -81,9 +82,13 @@ TEST(TexturedEmitters, AHalfBrightLightHoldsAtEveryScaleAndOffsetWithEverySample
   for (int y = 0; y < W; ++y)
     for (int x = 0; x < W; ++x) {
       const double cx = (x + 0.5) / W - 0.5, cz = (y + 0.5) / W - 0.5;
-      expect[x >= W / 2] += rho * (4 * rect_form_factor(cx, cz, -0.5, 0, -0.5, 0.5, 1) + rect_form_factor(cx, cz, 0, 0.5, -0.5, 0.5, 1));
+      expect[x >= W / 2] +=
+          rho * (4 * rect_form_factor(cx, cz, -0.5, 0, -0.5, 0.5, 1) + rect_form_factor(cx, cz, 0, 0.5, -0.5, 0.5, 1));
     }
-  struct Frame { float scale; Vec3 offset; };
+  struct Frame {
+    float scale;
+    Vec3 offset;
+  };
   for (const Frame& f : {Frame{1e-3f, Vec3(0.0f)}, Frame{1, Vec3(1e4f, -2e3f, 5e3f)}, Frame{1e5f, Vec3(0.0f)}})
     for (const std::string& sampler : sampler_names())
       for (uint64_t seed : {3u, 11u}) {
@@ -93,18 +98,21 @@ TEST(TexturedEmitters, AHalfBrightLightHoldsAtEveryScaleAndOffsetWithEverySample
         s.camera.position = at(0, 0.5f, 0), s.camera.look_at = at(0, 0, 0), s.camera.up = {0, 0, -1};
         s.camera.vfov_deg = 90;
         s.integrator.max_depth = 1;
-        s.shapes.push_back(quad(at(-3, 0, -3), Vec3(0, 0, 6) * f.scale, Vec3(6, 0, 0) * f.scale, add_material(s, diffuse(rho))));
+        s.shapes.push_back(
+            quad(at(-3, 0, -3), Vec3(0, 0, 6) * f.scale, Vec3(6, 0, 0) * f.scale, add_material(s, diffuse(rho))));
         TextureDesc board;
         board.kind = TextureDesc::Kind::Checkerboard;
         board.scale_u = 2, board.scale_v = 1;
         board.color0.value = Vec3(1.0f), board.color1.value = Vec3(0.25f);
         s.textures.push_back(board);
-        s.shapes.push_back(quad(at(-0.5f, 1, -0.5f), Vec3(f.scale, 0, 0), Vec3(0, 0, f.scale), add_material(s, textured_emitter(0, 4))));
+        s.shapes.push_back(quad(at(-0.5f, 1, -0.5f), Vec3(f.scale, 0, 0), Vec3(0, 0, f.scale),
+                                add_material(s, textured_emitter(0, 4))));
         Image im = render_quietly(s).image;
         double got[2] = {0, 0};
         for (int y = 0; y < W; ++y)
           for (int x = 0; x < W; ++x) got[x >= W / 2] += mean_rgb(im, x, y);
-        SCOPED_TRACE(sampler + " seed " + std::to_string(seed) + " scale " + std::to_string(f.scale) + " offset " + std::to_string(f.offset.x));
+        SCOPED_TRACE(sampler + " seed " + std::to_string(seed) + " scale " + std::to_string(f.scale) + " offset " +
+                     std::to_string(f.offset.x));
         EXPECT_NEAR(got[0] / expect[0], 1, 0.03);
         EXPECT_NEAR(got[1] / expect[1], 1, 0.03);
       }
@@ -121,7 +129,8 @@ TEST(TexturedEmitters, AConstantTextureRendersTheConstantEmittersImage) {
       s.camera.position = {0, 2, 4}, s.camera.look_at = {0, 0.5f, 0}, s.camera.vfov_deg = 50;
       s.integrator.max_depth = 3;
       s.shapes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, add_material(s, diffuse(0.6f))));
-      const int light = textured ? add_material(s, textured_emitter(constant_texture(s, 0.5f), 6)) : add_material(s, emitter(3));
+      const int light =
+          textured ? add_material(s, textured_emitter(constant_texture(s, 0.5f), 6)) : add_material(s, emitter(3));
       if (sphere_light) {
         s.shapes.push_back(sphere({0.3f, 1.2f, 0}, 0.4f, light));
       } else {
@@ -142,9 +151,11 @@ TEST(TexturedEmitters, AConstantTextureRendersTheConstantEmittersImage) {
 }
 
 TEST(TexturedEmitters, LoaderBindsARadianceTextureAndItsScale) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("pdrt_temit_" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("pdrt_temit_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const std::string head = R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "film": {"width": 8, "height": 8},
+  const std::string head =
+      R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "film": {"width": 8, "height": 8},
  "textures": {"glow": {"type": "constant", "value": 0.5}},
  "materials": {"lamp": {"type": "emitter", )";
   const std::string tail = R"(}},

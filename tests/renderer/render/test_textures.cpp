@@ -27,7 +27,8 @@ namespace {
 
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / ("pdrt_tex_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("pdrt_tex_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }
@@ -73,7 +74,8 @@ class Textures : public ::testing::Test {
   void TearDown() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::error_code ec;
-    fs::remove_all(fs::temp_directory_path() / ("pdrt_tex_" + std::string(info->name()) + "_" + std::to_string(::getpid())), ec);
+    fs::remove_all(
+        fs::temp_directory_path() / ("pdrt_tex_" + std::string(info->name()) + "_" + std::to_string(::getpid())), ec);
   }
 };
 
@@ -144,7 +146,8 @@ TEST_F(Textures, PointSamplingHonoursEveryWrapModeExactly) {
 TEST_F(Textures, ExtremeCoordinatesGiveFiniteValues) {
   fs::path f = write_image(temp_dir() / "t.exr", "exr", kW, kH, texels(), false);
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
-  for (TextureFilter filter : {TextureFilter::None, TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::Ewa})
+  for (TextureFilter filter :
+       {TextureFilter::None, TextureFilter::Bilinear, TextureFilter::Trilinear, TextureFilter::Ewa})
     for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::Mirror, TextureWrap::Clamp, TextureWrap::Black}) {
       TextureSet ts(with_textures({image_texture(f, filter, wrap)}));
       for (float x : {1e30f, -1e30f, 3e7f, inf, -inf, nan})
@@ -219,13 +222,13 @@ TEST_F(Textures, CheckerboardParityAtKnownUv) {
   board.color1.value = Vec3(0.25f);
   TextureSet ts(with_textures({board, red}));
   auto is_red = [&](float u, float v) { return ts.eval(0, at(u, v)).x == 1.0f; };
-  EXPECT_TRUE(is_red(0.1f, 0.1f));     // (0, 0)
-  EXPECT_FALSE(is_red(0.3f, 0.1f));    // (1, 0)
-  EXPECT_FALSE(is_red(0.1f, 0.6f));    // (0, 1)
-  EXPECT_TRUE(is_red(0.3f, 0.6f));     // (1, 1)
-  EXPECT_FALSE(is_red(-0.1f, 0.1f));   // (-1, 0)
-  EXPECT_TRUE(is_red(-0.1f, -0.1f));   // (-1, -1)
-  EXPECT_TRUE(is_red(2.6f, 0.1f));     // (10, 0)
+  EXPECT_TRUE(is_red(0.1f, 0.1f));    // (0, 0)
+  EXPECT_FALSE(is_red(0.3f, 0.1f));   // (1, 0)
+  EXPECT_FALSE(is_red(0.1f, 0.6f));   // (0, 1)
+  EXPECT_TRUE(is_red(0.3f, 0.6f));    // (1, 1)
+  EXPECT_FALSE(is_red(-0.1f, 0.1f));  // (-1, 0)
+  EXPECT_TRUE(is_red(-0.1f, -0.1f));  // (-1, -1)
+  EXPECT_TRUE(is_red(2.6f, 0.1f));    // (10, 0)
   EXPECT_EQ(ts.eval(0, at(0.3f, 0.1f)).y, 0.25f);
 }
 
@@ -250,8 +253,8 @@ TEST_F(Textures, CheckerboardPlaneMeanConvergesToTheMeanOfItsColours) {
   const Image im = render_quietly(s).image;
   double albedo = 0, radiance = 0;
   for (int k = 0; k < W * W; ++k) albedo += im.albedo[3 * k], radiance += im.rgb[3 * k + 1];
-  std::printf("checkerboard plane: albedo AOV mean %.4f, radiance mean %.4f (both 0.5 in the limit)\n", albedo / (W * W),
-              radiance / (W * W));
+  std::printf("checkerboard plane: albedo AOV mean %.4f, radiance mean %.4f (both 0.5 in the limit)\n",
+              albedo / (W * W), radiance / (W * W));
   EXPECT_NEAR(albedo / (W * W), 0.5, 0.01);
   // Lit by a white environment with one bounce, a diffuse plane shows its albedo (furnace).
   EXPECT_NEAR(radiance / (W * W), 0.5, 0.01);
@@ -268,8 +271,10 @@ TEST_F(Textures, ConstantTextureBuildsTheSameBsdfAsTheConstantValue) {
     MaterialType type;
     bool albedo, roughness;
   };
-  const Case cases[] = {{MaterialType::Diffuse, true, false},  {MaterialType::Glossy, true, true},
-                        {MaterialType::Mirror, true, false},   {MaterialType::Dielectric, true, true},
+  const Case cases[] = {{MaterialType::Diffuse, true, false},
+                        {MaterialType::Glossy, true, true},
+                        {MaterialType::Mirror, true, false},
+                        {MaterialType::Dielectric, true, true},
                         {MaterialType::Conductor, false, true}};
   for (const Case& c : cases) {
     Material constant;
@@ -323,7 +328,8 @@ TEST_F(Textures, ConstantTexturesRenderTheSameImageAsConstantValues) {
       m.roughness = types[i] == MaterialType::Mirror || types[i] == MaterialType::Diffuse ? 0.0f : 0.35f;
       m.eta = Vec3(0.2f, 0.9f, 1.1f), m.k = Vec3(3.0f, 2.5f, 2.2f);
       if (mode) {
-        if (types[i] != MaterialType::Conductor) m.albedo = Vec3(1.0f), m.textures.push_back({MaterialParam::Albedo, 0});
+        if (types[i] != MaterialType::Conductor)
+          m.albedo = Vec3(1.0f), m.textures.push_back({MaterialParam::Albedo, 0});
         if (m.roughness > 0) m.roughness = 0.9f, m.textures.push_back({MaterialParam::Roughness, 1});
       }
       s.shapes.push_back(sphere({-4.0f + 2 * i, 0, 0}, 0.9f, add_material(s, m)));

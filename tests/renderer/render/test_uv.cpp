@@ -29,7 +29,8 @@ class Uv : public ::testing::Test {
     fs::create_directories(dir());
     if (!obj_text.empty()) std::ofstream(dir() / "m.obj") << obj_text;
     std::ofstream(dir() / "s.json") << R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
-      "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "diffuse"}}, "objects": [)" + objects + "]}";
+      "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "diffuse"}}, "objects": [)" +
+                                           objects + "]}";
     return load_scene(dir() / "s.json");
   }
   void TearDown() override {
@@ -55,7 +56,10 @@ TEST_F(Uv, SphereUvAtKnownPoints) {
   EmbreeDevice dev;
   EmbreeScene scene(d, dev);
   const Vec3 c(1, 2, 3);
-  struct Case { Vec3 dir; float u, v; };
+  struct Case {
+    Vec3 dir;
+    float u, v;
+  };
   const float s = std::sqrt(0.5f);
   for (const Case& k : {Case{{1, 0, 0}, 0.0f, 0.5f}, Case{{0, 0, 1}, 0.25f, 0.5f}, Case{{-1, 0, 0}, 0.5f, 0.5f},
                         Case{{0, 0, -1}, 0.75f, 0.5f}, Case{{s, s, 0}, 0.0f, 0.75f}, Case{{0, -s, s}, 0.25f, 0.25f}}) {
@@ -83,11 +87,12 @@ TEST_F(Uv, SphereUvFollowsTheObjectTransform) {
 
 // corner -> (0, 0), corner + edge1 -> (1, 0), corner + edge2 -> (0, 1), linear in between.
 TEST_F(Uv, QuadCornersAndInterior) {
-  SceneDesc d = load(R"({"type": "quad", "corner": [-1, -1, 0], "edge1": [2, 0, 0], "edge2": [0, 4, 0], "material": "m"})");
+  SceneDesc d =
+      load(R"({"type": "quad", "corner": [-1, -1, 0], "edge1": [2, 0, 0], "edge2": [0, 4, 0], "material": "m"})");
   EmbreeDevice dev;
   EmbreeScene scene(d, dev);
-  for (auto [x, y] : {std::pair{-0.99f, -0.99f}, std::pair{0.99f, -0.99f}, std::pair{0.99f, 2.99f}, std::pair{-0.99f, 2.99f},
-                      std::pair{0.2f, 0.5f}}) {
+  for (auto [x, y] : {std::pair{-0.99f, -0.99f}, std::pair{0.99f, -0.99f}, std::pair{0.99f, 2.99f},
+                      std::pair{-0.99f, 2.99f}, std::pair{0.2f, 0.5f}}) {
     SurfaceHit h = shoot(scene, Vec3(x, y, 5), Vec3(x, y, 0));
     EXPECT_NEAR(h.u, (x + 1) / 2, 1e-5f);
     EXPECT_NEAR(h.v, (y + 1) / 4, 1e-5f);
@@ -111,7 +116,8 @@ TEST_F(Uv, InlineMeshUvsInterpolateAtKnownBarycentrics) {
 
 // A mesh without uvs: the barycentrics themselves (vertex 1 -> (1, 0), vertex 2 -> (0, 1)).
 TEST_F(Uv, MeshWithoutUvsGetsBarycentrics) {
-  SceneDesc d = load(R"({"type": "mesh", "vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]], "indices": [0, 1, 2], "material": "m"})");
+  SceneDesc d =
+      load(R"({"type": "mesh", "vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]], "indices": [0, 1, 2], "material": "m"})");
   EmbreeDevice dev;
   EmbreeScene scene(d, dev);
   SurfaceHit h = shoot(scene, Vec3(0.6f, 1.0f, 3), Vec3(0.6f, 1.0f, 0));
@@ -139,13 +145,15 @@ TEST_F(Uv, ObjTexcoordsInterpolateAtKnownBarycentrics) {
 // Head-on view of a plane with uv = position: one pixel spans 2 tan(vfov/2) dist / height in
 // u, scaled by max(1/8, 1/sqrt(spp)) (pbrt-v4 Camera::Approximate_dp_dxy).
 TEST_F(Uv, FootprintOfAPlaneSeenHeadOn) {
-  SceneDesc d = load(R"({"type": "quad", "corner": [-10, -10, 0], "edge1": [20, 0, 0], "edge2": [0, 20, 0], "material": "m"})");
+  SceneDesc d =
+      load(R"({"type": "quad", "corner": [-10, -10, 0], "edge1": [20, 0, 0], "edge2": [0, 20, 0], "material": "m"})");
   EmbreeDevice dev;
   EmbreeScene scene(d, dev);
   SurfaceHit h = shoot(scene, Vec3(0, 0, 5), Vec3(0.0f));
   CameraDesc cam;
   cam.position = {0, 0, 5}, cam.look_at = {0, 0, 0}, cam.vfov_deg = 90;
-  const TextureCoords one = TextureFootprint(cam, 100, 100, 1).at(h), sixteen = TextureFootprint(cam, 100, 100, 16).at(h);
+  const TextureCoords one = TextureFootprint(cam, 100, 100, 1).at(h),
+                      sixteen = TextureFootprint(cam, 100, 100, 16).at(h);
   const float pixel_u = 2 * 1 * 5 / 100.0f / 20;  // world width of a pixel at distance 5, in u (20 units per u)
   EXPECT_NEAR(one.dudx, pixel_u, 1e-4f * pixel_u * 100);
   EXPECT_NEAR(one.dvdy, pixel_u, 1e-4f * pixel_u * 100);

@@ -49,9 +49,11 @@ TEST(EqualAreaOctahedral, EqualAreasOfTheSquareAreEqualSolidAngles) {
     for (double a : {0.3, 1.0, 2.0}) {
       int inside = 0;
       for (int y = 0; y < n; ++y)
-        for (int x = 0; x < n; ++x) inside += dot(equal_area_square_to_sphere((x + 0.5) / n, (y + 0.5) / n), axis) > std::cos(a);
+        for (int x = 0; x < n; ++x)
+          inside += dot(equal_area_square_to_sphere((x + 0.5) / n, (y + 0.5) / n), axis) > std::cos(a);
       const double expect = (1 - std::cos(a)) / 2;
-      EXPECT_NEAR(double(inside) / (n * n), expect, 3e-3) << "cap " << a << " about " << axis.x << " " << axis.y << " " << axis.z;
+      EXPECT_NEAR(double(inside) / (n * n), expect, 3e-3)
+          << "cap " << a << " about " << axis.x << " " << axis.y << " " << axis.z;
     }
 }
 
@@ -77,7 +79,8 @@ TEST(EqualAreaOctahedral, ResamplingGivesTheSameRadianceInTheSameDirection) {
     for (int i = 0; i < eq.width; ++i) {
       const Vec3 w = equirect_direction((i + 0.5) / eq.width, (j + 0.5) / eq.height);
       const Vec3 expect = radiance(to_light(w));
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(eq.rgb[3 * (j * eq.width + i) + c]) - expect[c]));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(double(eq.rgb[3 * (j * eq.width + i) + c]) - expect[c]));
     }
   // A linear function is reproduced up to the texel size (2 / 64) and the fold at the edges.
   EXPECT_LT(worst, 0.05);

@@ -107,7 +107,8 @@ TEST(LoopSubdivision, CommutesWithAffineMapsAndNormalsPointOutward) {
   std::vector<uint32_t> rev = idx;
   for (size_t i = 0; i < rev.size(); i += 3) std::swap(rev[i + 1], rev[i + 2]);
   MeshData r = loop_subdivide(p, rev, 2);
-  for (size_t i = 0; i < r.normals.size(); ++i) EXPECT_LT(dot(r.normals[i], r.positions[i]), -0.5f * length(r.positions[i])) << i;
+  for (size_t i = 0; i < r.normals.size(); ++i)
+    EXPECT_LT(dot(r.normals[i], r.positions[i]), -0.5f * length(r.positions[i])) << i;
 }
 
 TEST(LoopSubdivision, RefusesMoreTrianglesThanTheLimit) {

@@ -49,7 +49,10 @@ TEST_F(MaterialLoading, ThinDielectricAndMixesAreRead) {
   EXPECT_EQ(t.textures[0], (TextureBinding{MaterialParam::Amount, 0}));
   EXPECT_FLOAT_EQ(s.materials[1].amount, 0.5f);  // the default
   EXPECT_FLOAT_EQ(load_scene(scene(R"(  "materials": {"g": {"type": "thin_dielectric"}}
-})")).materials[0].ior, 1.5f);
+})"))
+                      .materials[0]
+                      .ior,
+                  1.5f);
 }
 
 TEST_F(MaterialLoading, MixWithAnUnknownMaterial) {
@@ -57,7 +60,8 @@ TEST_F(MaterialLoading, MixWithAnUnknownMaterial) {
     "m": {"type": "mix", "materials": ["m2", "nope"]},
     "m2": {"type": "diffuse"}
   }
-})"), "s.json:5:46: materials.m.materials[1] unknown material \"nope\"");
+})"),
+               "s.json:5:46: materials.m.materials[1] unknown material \"nope\"");
 }
 
 TEST_F(MaterialLoading, MixCycleIsRefused) {
@@ -66,7 +70,8 @@ TEST_F(MaterialLoading, MixCycleIsRefused) {
     "b": {"type": "mix", "materials": ["d", "a"]},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:6:45: materials.b.materials[1] makes a cycle of mix materials: \"a\" -> \"b\" -> \"a\"");
+})"),
+               "s.json:6:45: materials.b.materials[1] makes a cycle of mix materials: \"a\" -> \"b\" -> \"a\"");
 }
 
 TEST_F(MaterialLoading, MixOfItselfIsACycle) {
@@ -74,7 +79,8 @@ TEST_F(MaterialLoading, MixOfItselfIsACycle) {
     "a": {"type": "mix", "materials": ["a", "d"]},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:40: materials.a.materials[0] makes a cycle of mix materials: \"a\" -> \"a\"");
+})"),
+               "s.json:5:40: materials.a.materials[0] makes a cycle of mix materials: \"a\" -> \"a\"");
 }
 
 TEST_F(MaterialLoading, MixAmountOutsideTheUnitInterval) {
@@ -82,12 +88,14 @@ TEST_F(MaterialLoading, MixAmountOutsideTheUnitInterval) {
     "m": {"type": "mix", "materials": ["d", "d"], "amount": 1.5},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:61: materials.m.amount must be in [0,1], got 1.5");
+})"),
+               "s.json:5:61: materials.m.amount must be in [0,1], got 1.5");
   EXPECT_ERROR(scene(R"(  "materials": {
     "m": {"type": "mix", "materials": ["d", "d"], "amount": -0.1},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:61: materials.m.amount must be in [0,1], got -0.1");
+})"),
+               "s.json:5:61: materials.m.amount must be in [0,1], got -0.1");
 }
 
 TEST_F(MaterialLoading, MixOfAnEmitterIsRefused) {
@@ -96,7 +104,8 @@ TEST_F(MaterialLoading, MixOfAnEmitterIsRefused) {
     "d": {"type": "diffuse"},
     "lamp": {"type": "emitter", "radiance": [4, 4, 4]}
   }
-})"), "s.json:5:45: materials.m.materials[1] names the emitter \"lamp\": a mix's materials must not emit");
+})"),
+               "s.json:5:45: materials.m.materials[1] names the emitter \"lamp\": a mix's materials must not emit");
 }
 
 TEST_F(MaterialLoading, MixNeedsTwoMaterialNames) {
@@ -104,16 +113,19 @@ TEST_F(MaterialLoading, MixNeedsTwoMaterialNames) {
     "m": {"type": "mix", "materials": ["d"]},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:39: materials.m.materials must be [\"first\", \"second\"] (two material names), got [\"d\"]");
+})"),
+               "s.json:5:39: materials.m.materials must be [\"first\", \"second\"] (two material names), got [\"d\"]");
   EXPECT_ERROR(scene(R"(  "materials": {
     "m": {"type": "mix", "materials": ["d", 3]},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:45: materials.m.materials[1]");
+})"),
+               "s.json:5:45: materials.m.materials[1]");
   EXPECT_ERROR(scene(R"(  "materials": {
     "m": {"type": "mix", "amount": 0.5}
   }
-})"), "materials.m");
+})"),
+               "materials.m");
 }
 
 TEST_F(MaterialLoading, MixAndThinDielectricRefuseOtherMaterialsKeys) {
@@ -121,15 +133,18 @@ TEST_F(MaterialLoading, MixAndThinDielectricRefuseOtherMaterialsKeys) {
     "m": {"type": "mix", "materials": ["d", "d"], "albedo": 0.5},
     "d": {"type": "diffuse"}
   }
-})"), "s.json:5:51: materials.m.albedo");
+})"),
+               "s.json:5:51: materials.m.albedo");
   EXPECT_ERROR(scene(R"(  "materials": {
     "g": {"type": "thin_dielectric", "roughness": 0.2}
   }
-})"), "s.json:5:38: materials.g.roughness");
+})"),
+               "s.json:5:38: materials.g.roughness");
   EXPECT_ERROR(scene(R"(  "materials": {
     "g": {"type": "thin_dielectric", "ior": 0}
   }
-})"), "s.json:5:45: materials.g.ior must be > 0, got 0");
+})"),
+               "s.json:5:45: materials.g.ior must be > 0, got 0");
 }
 
 TEST_F(MaterialLoading, ConductorByReflectanceValueOrTexture) {
@@ -149,9 +164,11 @@ TEST_F(MaterialLoading, ConductorByReflectanceValueOrTexture) {
   EXPECT_ERROR(scene(R"(  "materials": {
     "c": {"type": "conductor", "metal": "Au", "reflectance": 0.5}
   }
-})"), "s.json:5:47: materials.c.reflectance cannot be combined with metal, eta or k: give one of them");
+})"),
+               "s.json:5:47: materials.c.reflectance cannot be combined with metal, eta or k: give one of them");
   EXPECT_ERROR(scene(R"(  "materials": {
     "c": {"type": "conductor", "reflectance": [1.5, 0, 0]}
   }
-})"), "s.json:5:47: materials.c.reflectance");
+})"),
+               "s.json:5:47: materials.c.reflectance");
 }

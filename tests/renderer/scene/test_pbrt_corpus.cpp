@@ -55,12 +55,14 @@ std::string relative(std::string s) {
 void match(const json& expected, const json& actual, const std::string& where, std::vector<std::string>* errors) {
   if (expected.is_object() && expected.contains("$length")) {
     if (!actual.is_array() || actual.size() != expected["$length"].get<size_t>())
-      errors->push_back(where + ": expected an array of " + expected["$length"].dump() + " values, got " + actual.dump().substr(0, 80));
+      errors->push_back(where + ": expected an array of " + expected["$length"].dump() + " values, got " +
+                        actual.dump().substr(0, 80));
     return;
   }
   if (expected.is_number() && actual.is_number()) {
     const double e = expected.get<double>(), a = actual.get<double>();
-    if (!(std::abs(e - a) <= 1e-5 * std::max(1.0, std::abs(e)))) errors->push_back(where + ": expected " + expected.dump() + ", got " + actual.dump());
+    if (!(std::abs(e - a) <= 1e-5 * std::max(1.0, std::abs(e))))
+      errors->push_back(where + ": expected " + expected.dump() + ", got " + actual.dump());
     return;
   }
   if (expected.type() != actual.type()) {
@@ -69,15 +71,19 @@ void match(const json& expected, const json& actual, const std::string& where, s
   }
   if (expected.is_object()) {
     for (const auto& [k, v] : expected.items()) {
-      if (!actual.contains(k)) errors->push_back(where + "." + k + ": missing");
-      else match(v, actual[k], where + "." + k, errors);
+      if (!actual.contains(k))
+        errors->push_back(where + "." + k + ": missing");
+      else
+        match(v, actual[k], where + "." + k, errors);
     }
   } else if (expected.is_array()) {
     if (expected.size() != actual.size()) {
-      errors->push_back(where + ": expected " + std::to_string(expected.size()) + " entries, got " + std::to_string(actual.size()));
+      errors->push_back(where + ": expected " + std::to_string(expected.size()) + " entries, got " +
+                        std::to_string(actual.size()));
       return;
     }
-    for (size_t i = 0; i < expected.size(); ++i) match(expected[i], actual[i], where + "[" + std::to_string(i) + "]", errors);
+    for (size_t i = 0; i < expected.size(); ++i)
+      match(expected[i], actual[i], where + "[" + std::to_string(i) + "]", errors);
   } else if (expected != actual) {
     errors->push_back(where + ": expected " + expected.dump() + ", got " + actual.dump());
   }
@@ -156,13 +162,46 @@ TEST(PbrtCorpus, CoversEveryDirectiveAndParameterType) {
   std::string text;
   for (const fs::path& f : files(kCorpus)) text += read(f);
   for (const fs::path& f : files(kCorpus / "errors")) text += read(f);
-  for (const char* d : {"Identity", "Translate", "Scale", "Rotate", "LookAt", "CoordinateSystem", "CoordSysTransform",
-                        "Transform", "ConcatTransform", "TransformBegin", "TransformEnd", "ReverseOrientation",
-                        "ActiveTransform", "TransformTimes", "Camera", "Film", "PixelFilter", "Sampler", "Integrator",
-                        "ColorSpace", "Option", "Accelerator", "WorldBegin", "AttributeBegin", "AttributeEnd",
-                        "Attribute", "Material", "MakeNamedMaterial", "NamedMaterial", "Texture", "AreaLightSource",
-                        "LightSource", "Shape", "ObjectBegin", "ObjectEnd", "ObjectInstance", "MakeNamedMedium",
-                        "MediumInterface", "Include", "Import"})
+  for (const char* d : {"Identity",
+                        "Translate",
+                        "Scale",
+                        "Rotate",
+                        "LookAt",
+                        "CoordinateSystem",
+                        "CoordSysTransform",
+                        "Transform",
+                        "ConcatTransform",
+                        "TransformBegin",
+                        "TransformEnd",
+                        "ReverseOrientation",
+                        "ActiveTransform",
+                        "TransformTimes",
+                        "Camera",
+                        "Film",
+                        "PixelFilter",
+                        "Sampler",
+                        "Integrator",
+                        "ColorSpace",
+                        "Option",
+                        "Accelerator",
+                        "WorldBegin",
+                        "AttributeBegin",
+                        "AttributeEnd",
+                        "Attribute",
+                        "Material",
+                        "MakeNamedMaterial",
+                        "NamedMaterial",
+                        "Texture",
+                        "AreaLightSource",
+                        "LightSource",
+                        "Shape",
+                        "ObjectBegin",
+                        "ObjectEnd",
+                        "ObjectInstance",
+                        "MakeNamedMedium",
+                        "MediumInterface",
+                        "Include",
+                        "Import"})
     EXPECT_TRUE(std::regex_search(text, std::regex(std::string("(^|\n)\\s*") + d + "\\b"))) << "no file uses " << d;
   for (const char* t : {"integer", "float", "point2", "vector2", "point3", "vector3", "normal3", "normal", "point",
                         "vector", "bool", "string", "texture", "rgb", "color", "spectrum", "blackbody"})

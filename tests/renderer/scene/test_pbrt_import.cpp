@@ -97,7 +97,8 @@ void expect_renders_agree(SceneDesc p, SceneDesc j) {
   j.camera.up = p.camera.up;
   p.camera.focus_distance = 0;
   j.camera.focus_distance = 0;
-  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
+  p.camera.look_at = p.camera.position +
+                     normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
   const Image a = render_quietly(p).image, b = render_quietly(j).image;
   double worst = 0, sum = 0;
   for (int y = 0; y < 32; ++y)
@@ -112,8 +113,9 @@ void expect_renders_agree(SceneDesc p, SceneDesc j) {
 }  // namespace
 
 TEST(PbrtImport, LookAtCameraIsMirroredLikePbrtsLeftHandedCamera) {
-  PbrtImport im = import(std::string(kCamera) + "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\n"
-                                                "WorldBegin\nShape \"sphere\"\n");
+  PbrtImport im = import(std::string(kCamera) +
+                         "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\n"
+                         "WorldBegin\nShape \"sphere\"\n");
   const CameraDesc& c = im.scene.camera;
   expect_near(c.position, {0, 0, -5}, 1e-6f, "position");
   expect_near(normalize(c.look_at - c.position), {0, 0, 1}, 1e-6f, "view direction");
@@ -124,8 +126,9 @@ TEST(PbrtImport, LookAtCameraIsMirroredLikePbrtsLeftHandedCamera) {
   EXPECT_EQ(im.scene.film.width, 200);
   EXPECT_EQ(im.scene.film.height, 100);
   // Portrait: fov spans the horizontal side; tan(v/2) = tan(30/2) * 200 / 100.
-  PbrtImport p = import(std::string(kCamera) + "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
-                                               "WorldBegin\nShape \"sphere\"\n");
+  PbrtImport p = import(std::string(kCamera) +
+                        "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
+                        "WorldBegin\nShape \"sphere\"\n");
   EXPECT_NEAR(std::tan(p.scene.camera.vfov_deg * M_PI / 360), std::tan(15 * M_PI / 180) * 2, 1e-6);
   // A mirroring Scale before LookAt (common in exported scenes) makes the camera right-handed.
   PbrtImport s = import("Scale -1 1 1\n" + std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n");
@@ -138,7 +141,7 @@ TEST(PbrtImport, TransformDirectivesComposeLikePbrt) {
                          "Translate 1 2 3\n"
                          "CoordinateSystem \"here\"\n"
                          "AttributeBegin\n"
-                         "  Rotate 90 0 0 1\n"      // (1, 0, 0) -> (0, 1, 0)
+                         "  Rotate 90 0 0 1\n"  // (1, 0, 0) -> (0, 1, 0)
                          "  Scale 2 2 2\n"
                          "  Shape \"sphere\" \"float radius\" 0.5\n"
                          "  Shape \"trianglemesh\" \"point3 P\" [1 0 0  0 1 0  0 0 1]\n"
@@ -182,9 +185,10 @@ TEST(PbrtImport, DecomposeReassemblesTheMatrix) {
   // Scale (with a reflection), rotation and translation: T R S rebuilt within 1e-5.
   Rng rng(5);
   for (int i = 0; i < 50; ++i) {
-    Mat4 m = Mat4::translate(rng.uniform() * 10 - 5, rng.uniform() * 10 - 5, rng.uniform() * 10 - 5) *
-             Mat4::rotate(rng.uniform() * 360, rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
-             Mat4::scale(i % 2 ? -(0.1 + rng.uniform()) : 0.1 + rng.uniform(), 0.1 + rng.uniform(), 0.1 + rng.uniform());
+    Mat4 m =
+        Mat4::translate(rng.uniform() * 10 - 5, rng.uniform() * 10 - 5, rng.uniform() * 10 - 5) *
+        Mat4::rotate(rng.uniform() * 360, rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
+        Mat4::scale(i % 2 ? -(0.1 + rng.uniform()) : 0.1 + rng.uniform(), 0.1 + rng.uniform(), 0.1 + rng.uniform());
     double shear = 1;
     MotionKey k = decompose(m, &shear);
     EXPECT_LT(shear, 1e-9);
@@ -198,9 +202,11 @@ TEST(PbrtImport, MaterialsMapOntoPdrts) {
                          "WorldBegin\n"
                          "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]\n"
                          "Shape \"sphere\"\n"
-                         "Material \"conductor\" \"spectrum eta\" \"metal-Ag-eta\" \"spectrum k\" \"metal-Ag-k\" \"float roughness\" 0.01\n"
+                         "Material \"conductor\" \"spectrum eta\" \"metal-Ag-eta\" \"spectrum k\" \"metal-Ag-k\" "
+                         "\"float roughness\" 0.01\n"
                          "Shape \"sphere\"\n"
-                         "Material \"conductor\" \"rgb reflectance\" [0.9 0.5 0.1] \"bool remaproughness\" false \"float roughness\" 0.25\n"
+                         "Material \"conductor\" \"rgb reflectance\" [0.9 0.5 0.1] \"bool remaproughness\" false "
+                         "\"float roughness\" 0.25\n"
                          "Shape \"sphere\"\n"
                          "MakeNamedMaterial \"glass\" \"string type\" \"dielectric\" \"float eta\" 1.33\n"
                          "NamedMaterial \"glass\"\n"
@@ -229,7 +235,8 @@ TEST(PbrtImport, LightsMapOntoPdrts) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"
                          "LightSource \"point\" \"point3 from\" [1 2 3] \"rgb I\" [1 2 3] \"float scale\" 2\n"
-                         "LightSource \"spot\" \"point3 from\" [0 5 0] \"point3 to\" [0 0 0] \"float coneangle\" 40 \"float conedeltaangle\" 10\n"
+                         "LightSource \"spot\" \"point3 from\" [0 5 0] \"point3 to\" [0 0 0] \"float coneangle\" 40 "
+                         "\"float conedeltaangle\" 10\n"
                          "LightSource \"distant\" \"point3 from\" [0 0 0] \"point3 to\" [0 -1 0] \"rgb L\" [3 3 3]\n"
                          "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
                          "AttributeBegin\n"
@@ -276,19 +283,24 @@ TEST(PbrtImport, NamedIlluminantsConvertFromTheirChromaticities) {
   expect_near(*named_illuminant_rgb("stdillum-D65"), Vec3(1.0f), 2e-3f, "D65");
   expect_near(*named_illuminant_rgb("stdillum-A"), blackbody_rgb(2856), 0, "A");
   const Vec3 d50 = *named_illuminant_rgb("stdillum-D50"), f4 = *named_illuminant_rgb("stdillum-F4");
-  EXPECT_GT(d50.x, d50.z);  // warmer than D65
+  EXPECT_GT(d50.x, d50.z);                // warmer than D65
   EXPECT_GT(f4.x / f4.z, d50.x / d50.z);  // warm white fluorescent, warmer still
   for (const char* n : {"stdillum-F1", "stdillum-F12", "illum-acesD60", "stdillum-D50"})
     EXPECT_NEAR(luminance(*named_illuminant_rgb(n)), 1, 1e-3) << n;
   EXPECT_FALSE(named_illuminant_rgb("stdillum-F13"));
   EXPECT_FALSE(named_illuminant_rgb("metal-Au-eta"));
   // Emission takes them; a reflectance does not (reported, default used).
-  PbrtImport im = import(std::string(kCamera) + "WorldBegin\nAreaLightSource \"diffuse\" \"spectrum L\" \"stdillum-D65\" \"float scale\" 2\n"
-                                                "Shape \"sphere\"\n");
-  expect_near(im.scene.materials[size_t(im.scene.shapes[0].material)].radiance, Vec3(2.0f), 4e-3f, "scaled D65 emitter");
-  PbrtImport r = import(std::string(kCamera) + "WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" \"stdillum-D65\"\nShape \"sphere\"\n");
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\nAreaLightSource \"diffuse\" \"spectrum L\" \"stdillum-D65\" \"float scale\" 2\n"
+                         "Shape \"sphere\"\n");
+  expect_near(im.scene.materials[size_t(im.scene.shapes[0].material)].radiance, Vec3(2.0f), 4e-3f,
+              "scaled D65 emitter");
+  PbrtImport r =
+      import(std::string(kCamera) +
+             "WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" \"stdillum-D65\"\nShape \"sphere\"\n");
   ASSERT_EQ(r.report.size(), 1u);
-  EXPECT_NE(r.report[0].find("named spectrum \"stdillum-D65\" for \"reflectance\" is not supported"), std::string::npos);
+  EXPECT_NE(r.report[0].find("named spectrum \"stdillum-D65\" for \"reflectance\" is not supported"),
+            std::string::npos);
 }
 
 TEST(PbrtImport, WhatPdrtCannotRepresentIsReportedWithItsPosition) {
@@ -310,13 +322,16 @@ TEST(PbrtImport, ContradictoryInputIsRefusedWithItsPosition) {
   EXPECT_EQ(import_error(w + "Camera \"perspective\"\n"), "s.pbrt:4:1: a second Camera");
   EXPECT_EQ(import_error("WorldBegin\nCamera \"perspective\"\n"), "s.pbrt:2:1: Camera must come before WorldBegin");
   EXPECT_EQ(import_error(w + "AttributeEnd\n"), "s.pbrt:4:1: AttributeEnd without a matching AttributeBegin");
-  EXPECT_EQ(import_error(w + "TransformBegin\nAttributeEnd\n"), "s.pbrt:5:1: AttributeEnd closes the TransformBegin at s.pbrt:4:1");
+  EXPECT_EQ(import_error(w + "TransformBegin\nAttributeEnd\n"),
+            "s.pbrt:5:1: AttributeEnd closes the TransformBegin at s.pbrt:4:1");
   EXPECT_EQ(import_error(w + "NamedMaterial \"nope\"\n"), "s.pbrt:4:1: unknown named material \"nope\"");
   EXPECT_EQ(import_error(w + "ObjectInstance \"nope\"\n"), "s.pbrt:4:1: unknown object \"nope\"");
   EXPECT_EQ(import_error(w + "CoordSysTransform \"nope\"\n"), "s.pbrt:4:1: unknown coordinate system \"nope\"");
   EXPECT_EQ(import_error("Integrator \"bdpt\"\n" + w + "Shape \"sphere\"\n"),
-            "s.pbrt:1:1: Integrator \"bdpt\" is not supported: pdrt is a unidirectional path tracer (use \"path\" or \"volpath\")");
-  EXPECT_EQ(import_error(w + "Shape \"sphere\" \"float radius\" -1\n"), "s.pbrt:4:16: \"float radius\" must be > 0, got -1");
+            "s.pbrt:1:1: Integrator \"bdpt\" is not supported: pdrt is a unidirectional path tracer (use \"path\" or "
+            "\"volpath\")");
+  EXPECT_EQ(import_error(w + "Shape \"sphere\" \"float radius\" -1\n"),
+            "s.pbrt:4:16: \"float radius\" must be > 0, got -1");
   EXPECT_EQ(import_error(w + "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]\n"),
             "s.pbrt:4:53: index 3 is out of range [0, 2]");
   EXPECT_EQ(import_error(w + "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 1]\n"),
@@ -350,7 +365,8 @@ TEST(PbrtImport, ObjectInstancesBecomePrototypesAndInstances) {
     const InstanceDesc& in = im.scene.instances[size_t(i)];
     EXPECT_EQ(in.prototype, 0);
     EXPECT_TRUE(in.motion.empty());
-    expect_near((in.transform * ball.transform).point({0, 0, 0}), {5.0f * float(i + 1), 1, 0}, 1e-6f, "instance " + std::to_string(i));
+    expect_near((in.transform * ball.transform).point({0, 0, 0}), {5.0f * float(i + 1), 1, 0}, 1e-6f,
+                "instance " + std::to_string(i));
   }
 }
 
@@ -425,19 +441,19 @@ TEST(PbrtImport, WhatObjectInstancesCannotHoldIsReported) {
 // the scene with the shapes copied instead within the instancing tolerance (test_instances.cpp).
 TEST(PbrtImport, ObjectInstancesRenderTheImageOfTheirJsonEquivalent) {
   PbrtImport im = import(kTwinHeader + kTwinLamp +
-      "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
-      "ObjectBegin \"ball\"\n"
-      "  Translate 0 0.5 0\n"
-      "  Shape \"sphere\" \"float radius\" 0.5\n"
-      "ObjectEnd\n"
-      "AttributeBegin\n"
-      "  Translate -0.8 0 0\n"
-      "  ObjectInstance \"ball\"\n"
-      "AttributeEnd\n"
-      "AttributeBegin\n"
-      "  Translate 0.8 0 0\n"
-      "  ObjectInstance \"ball\"\n"
-      "AttributeEnd\n");
+                         "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+                         "ObjectBegin \"ball\"\n"
+                         "  Translate 0 0.5 0\n"
+                         "  Shape \"sphere\" \"float radius\" 0.5\n"
+                         "ObjectEnd\n"
+                         "AttributeBegin\n"
+                         "  Translate -0.8 0 0\n"
+                         "  ObjectInstance \"ball\"\n"
+                         "AttributeEnd\n"
+                         "AttributeBegin\n"
+                         "  Translate 0.8 0 0\n"
+                         "  ObjectInstance \"ball\"\n"
+                         "AttributeEnd\n");
   SceneDesc j = twin_scene();
   j.camera = im.scene.camera;
   add_twin_lamp(j);
@@ -461,9 +477,9 @@ TEST(PbrtImport, RendersTheImageOfItsJsonEquivalent) {
   // The same small scene written both ways: a pbrt file, and the SceneDesc a JSON file would
   // give. Identical descriptions render identical images (bit for bit: same floats).
   PbrtImport im = import(kTwinHeader + kTwinLamp +
-      "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
-      "Translate 0 0.5 0\n"
-      "Shape \"sphere\" \"float radius\" 0.5\n");
+                         "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+                         "Translate 0 0.5 0\n"
+                         "Shape \"sphere\" \"float radius\" 0.5\n");
   SceneDesc j = twin_scene();
   j.film.filter.type = FilterType::Box;
   j.film.filter.radius = 0.5f;
@@ -484,13 +500,16 @@ namespace {
 
 std::filesystem::path ply_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / ("pdrt_ply_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                              ("pdrt_ply_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
 
-void write_file(const std::filesystem::path& f, const std::string& bytes) { std::ofstream(f, std::ios::binary) << bytes; }
+void write_file(const std::filesystem::path& f, const std::string& bytes) {
+  std::ofstream(f, std::ios::binary) << bytes;
+}
 
 // A unit quad (one face of 4 vertices) with normals and uv, in ASCII.
 const char* kAsciiQuad =
@@ -525,8 +544,9 @@ TEST(PbrtImport, PlyMeshesLoadAsciiAndBinaryWithQuadsAndNormals) {
   const std::filesystem::path dir = ply_dir();
   write_file(dir / "quad.ply", kAsciiQuad);
   write_file(dir / "tris.ply", binary_triangles(5, false));
-  write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"quad.ply\"\n"
-                                                    "Translate 0 0 1\nShape \"plymesh\" \"string filename\" \"tris.ply\"\n");
+  write_file(dir / "s.pbrt", std::string(kCamera) +
+                                 "WorldBegin\nShape \"plymesh\" \"string filename\" \"quad.ply\"\n"
+                                 "Translate 0 0 1\nShape \"plymesh\" \"string filename\" \"tris.ply\"\n");
   PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
   ASSERT_EQ(im.scene.shapes.size(), 2u);
   const MeshData& q = im.scene.shapes[0].mesh;
@@ -536,7 +556,8 @@ TEST(PbrtImport, PlyMeshesLoadAsciiAndBinaryWithQuadsAndNormals) {
   expect_near(q.normals[2], {0, 0, 1}, 0, "normal");
   // Each triangle winds counter-clockwise about the normals' side (+z).
   for (size_t i = 0; i < q.indices.size(); i += 3) {
-    const Vec3 ng = cross(q.positions[q.indices[i + 1]] - q.positions[q.indices[i]], q.positions[q.indices[i + 2]] - q.positions[q.indices[i]]);
+    const Vec3 ng = cross(q.positions[q.indices[i + 1]] - q.positions[q.indices[i]],
+                          q.positions[q.indices[i + 2]] - q.positions[q.indices[i]]);
     EXPECT_GT(ng.z, 0);
   }
   const MeshData& t = im.scene.shapes[1].mesh;
@@ -554,28 +575,39 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
     std::string bytes;
     std::string what;  // after "<s.pbrt>:4:17: <dir>/<name>"
   };
-  const std::string tri = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string tri =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
   const std::string full = binary_triangles(4, false);
   const Case cases[] = {
-      {"keyword.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_heade\n", ":5:1: unknown PLY header keyword \"end_heade\""},
-      {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", ":4:1: the PLY header has no end_header"},
+      {"keyword.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_heade\n",
+       ":5:1: unknown PLY header keyword \"end_heade\""},
+      {"noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n",
+       ":4:1: the PLY header has no end_header"},
       {"magic.ply", "plx\n", ":1:1: not a PLY file (the first line must be \"ply\")"},
-      {"format.ply", "ply\nformat binary 1.0\nend_header\n", ":2:8: unknown PLY format \"binary\" (ascii, binary_little_endian, binary_big_endian)"},
-      {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n", ":4:10: unknown PLY type \"real\""},
+      {"format.ply", "ply\nformat binary 1.0\nend_header\n",
+       ":2:8: unknown PLY format \"binary\" (ascii, binary_little_endian, binary_big_endian)"},
+      {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
+       ":4:10: unknown PLY type \"real\""},
       {"ascii_short.ply", tri + "0 0 0\n1 0 0\n", ":12:1: the body ends at vertex 2 of 3 (truncated)"},
       {"ascii_nan.ply", tri + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", ":11:3: \"x\" is not a number"},
       {"ascii_long.ply", tri + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n", ":13:9: face 0 has more values than its properties"},
-      {"short.ply", binary_triangles(4, true), ": byte " + std::to_string(full.size() - 7) + ": the body ends inside face 3 of 4 (truncated)"},
+      {"short.ply", binary_triangles(4, true),
+       ": byte " + std::to_string(full.size() - 7) + ": the body ends inside face 3 of 4 (truncated)"},
       {"trailing.ply", full + "xyz", ": byte " + std::to_string(full.size()) + ": 3 bytes after the last element"},
   };
   for (const Case& c : cases) {
     write_file(dir / c.name, c.bytes);
-    write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"" + c.name + "\"\n");
-    EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / c.name).string() + c.what) << c.name;
+    write_file(dir / "s.pbrt",
+               std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"" + c.name + "\"\n");
+    EXPECT_EQ(file_import_error(dir / "s.pbrt"),
+              (dir / "s.pbrt").string() + ":4:17: " + (dir / c.name).string() + c.what)
+        << c.name;
   }
-  write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"missing.ply\"\n");
-  EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / "missing.ply").string() + ": cannot open: No such file or directory");
+  write_file(dir / "s.pbrt",
+             std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"missing.ply\"\n");
+  EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / "missing.ply").string() +
+                                                   ": cannot open: No such file or directory");
   std::filesystem::remove_all(dir);
 }
 
@@ -583,9 +615,10 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
 // count that is not a non-negative integer (its conversion to an integer was undefined).
 TEST(PbrtImport, PlyListCountBeyondEveryIntegerIsRefused) {
   const std::filesystem::path dir = ply_dir();
-  write_file(dir / "big.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                              "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
-                              "1e30 0 1 2\n");
+  write_file(dir / "big.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+             "1e30 0 1 2\n");
   write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"big.ply\"\n");
   EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / "big.ply").string() +
                                                    ":13:1: a list count must be a non-negative integer, got \"1e30\"");
@@ -610,7 +643,8 @@ TEST(PbrtImport, PlyTextWithControlCharactersIsRefusedBeforeAssimpReadsIt) {
 // Found by the ctest run of tests/fuzz/fuzz_ply.cpp (the input as found): a face with an empty
 // index list made Assimp 5.2 abort on an assertion; the check refuses it first.
 TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
-  const std::filesystem::path file = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "abort-empty-face.ply";
+  const std::filesystem::path file =
+      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "abort-empty-face.ply";
   try {
     load_ply(file, "abort-empty-face.ply");
     FAIL() << "accepted " << file;
@@ -622,7 +656,8 @@ TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
 TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"
-                         "Material \"coateddiffuse\" \"rgb reflectance\" [0.2 0.4 0.6] \"float roughness\" 0.04 \"float eta\" 1.4 \"float thickness\" 0.1\n"
+                         "Material \"coateddiffuse\" \"rgb reflectance\" [0.2 0.4 0.6] \"float roughness\" 0.04 "
+                         "\"float eta\" 1.4 \"float thickness\" 0.1\n"
                          "Shape \"sphere\"\n"
                          "Material \"coateddiffuse\"\n"
                          "Shape \"sphere\"\n");
@@ -643,17 +678,19 @@ TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
 TEST(PbrtImport, TexturesMapOntoPdrtsAndBindToReflectance) {
   const std::filesystem::path dir = ply_dir();
   write_file(dir / "wood.png", "not read while loading");
-  write_file(dir / "s.pbrt", std::string(kCamera) +
-                                 "WorldBegin\n"
-                                 "Texture \"grain\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"string filter\" \"point\""
-                                 " \"string wrap\" \"clamp\" \"string encoding\" \"linear\" \"float uscale\" 4\n"
-                                 "Texture \"checks\" \"spectrum\" \"checkerboard\" \"texture tex1\" \"grain\" \"rgb tex2\" [0.1 0.2 0.3]"
-                                 " \"float uscale\" 8 \"float vscale\" 2\n"
-                                 "Texture \"noise\" \"float\" \"fbm\"\n"
-                                 "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
-                                 "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n"
-                                 "Material \"coateddiffuse\" \"texture reflectance\" \"noise\"\n"
-                                 "Shape \"sphere\"\n");
+  write_file(
+      dir / "s.pbrt",
+      std::string(kCamera) +
+          "WorldBegin\n"
+          "Texture \"grain\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"string filter\" \"point\""
+          " \"string wrap\" \"clamp\" \"string encoding\" \"linear\" \"float uscale\" 4\n"
+          "Texture \"checks\" \"spectrum\" \"checkerboard\" \"texture tex1\" \"grain\" \"rgb tex2\" [0.1 0.2 0.3]"
+          " \"float uscale\" 8 \"float vscale\" 2\n"
+          "Texture \"noise\" \"float\" \"fbm\"\n"
+          "Material \"diffuse\" \"texture reflectance\" \"checks\"\n"
+          "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n"
+          "Material \"coateddiffuse\" \"texture reflectance\" \"noise\"\n"
+          "Shape \"sphere\"\n");
   PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
   const auto& tx = im.scene.textures;
   ASSERT_EQ(tx.size(), 2u);
@@ -679,7 +716,9 @@ TEST(PbrtImport, TexturesMapOntoPdrtsAndBindToReflectance) {
   EXPECT_NE(im.report[0].find(":6:1: Texture class \"fbm\" is not supported"), std::string::npos) << im.report[0];
   EXPECT_NE(im.report[1].find(":9:26: texture \"noise\" is not supported"), std::string::npos) << im.report[1];
   EXPECT_TRUE(im.scene.materials[im.scene.shapes[1].material].textures.empty());
-  write_file(dir / "t.pbrt", std::string(kCamera) + "WorldBegin\nMaterial \"diffuse\" \"texture reflectance\" \"nope\"\nShape \"sphere\"\n");
+  write_file(
+      dir / "t.pbrt",
+      std::string(kCamera) + "WorldBegin\nMaterial \"diffuse\" \"texture reflectance\" \"nope\"\nShape \"sphere\"\n");
   EXPECT_EQ(file_import_error(dir / "t.pbrt"), (dir / "t.pbrt").string() + ":4:20: unknown texture \"nope\"");
   std::filesystem::remove_all(dir);
 }
@@ -701,7 +740,8 @@ TEST(PbrtImport, ActiveTransformRendersTheStreakOfTheJsonMotionKeys) {
       "AttributeBegin\n"
       "  AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"bool twosided\" true\n"
       "  ActiveTransform EndTime\n  Translate 1 0 0\n  ActiveTransform All\n"
-      "  Shape \"trianglemesh\" \"point3 P\" [-0.3 -0.3 0  0.3 -0.3 0  0.3 0.3 0  -0.3 0.3 0] \"integer indices\" [0 1 2 0 2 3]\n"
+      "  Shape \"trianglemesh\" \"point3 P\" [-0.3 -0.3 0  0.3 -0.3 0  0.3 0.3 0  -0.3 0.3 0] \"integer indices\" [0 1 "
+      "2 0 2 3]\n"
       "AttributeEnd\n";
   auto json_equivalent = [&](const SceneDesc& from) {
     SceneDesc j = base_scene(48, 32, 16);
@@ -730,11 +770,14 @@ TEST(PbrtImport, ActiveTransformRendersTheStreakOfTheJsonMotionKeys) {
   // The camera moves 0.5 along pbrt's camera +x (world +x here) by the end of the shutter.
   SceneDesc pc = import("ActiveTransform EndTime\nTranslate -0.5 0 0\nActiveTransform All\n" + head +
                         "AttributeBegin\n  AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"bool twosided\" true\n"
-                        "  Shape \"trianglemesh\" \"point3 P\" [-0.3 -0.3 0  0.3 -0.3 0  0.3 0.3 0  -0.3 0.3 0] \"integer indices\" [0 1 2 0 2 3]\n"
-                        "AttributeEnd\n").scene;
+                        "  Shape \"trianglemesh\" \"point3 P\" [-0.3 -0.3 0  0.3 -0.3 0  0.3 0.3 0  -0.3 0.3 0] "
+                        "\"integer indices\" [0 1 2 0 2 3]\n"
+                        "AttributeEnd\n")
+                     .scene;
   ASSERT_EQ(pc.camera.motion.size(), 2u);
   expect_near(pc.camera.motion[1].position, {0.5f, 0, -5}, 1e-6f, "camera at the end");
-  expect_near(pc.camera.motion[1].look_at - pc.camera.motion[1].position, {0, 0, 1}, 1e-6f, "view direction at the end");
+  expect_near(pc.camera.motion[1].look_at - pc.camera.motion[1].position, {0, 0, 1}, 1e-6f,
+              "view direction at the end");
   SceneDesc jc = json_equivalent(pc);
   jc.shapes[0].motion.clear();
   jc.camera.motion = {{0, {0, 0, -5}, {0, 0, -4}}, {1, {0.5f, 0, -5}, {0.5f, 0, -4}}};
@@ -747,16 +790,17 @@ TEST(PbrtImport, ActiveTransformRendersTheStreakOfTheJsonMotionKeys) {
 }
 
 TEST(PbrtImport, ThinDielectricAndMixMaterialsMapOntoPdrts) {
-  PbrtImport im = import(std::string(kCamera) +
-                         "WorldBegin\n"
-                         "MakeNamedMaterial \"a\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.2 0.2 0.2]\n"
-                         "MakeNamedMaterial \"b\" \"string type\" \"thindielectric\" \"float eta\" 1.33\n"
-                         "Material \"mix\" \"string materials\" [\"a\" \"b\"] \"float amount\" 0.3\n"
-                         "Shape \"sphere\"\n"
-                         "Texture \"amt\" \"float\" \"constant\" \"float value\" 0.25\n"
-                         "MakeNamedMaterial \"c\" \"string type\" \"mix\" \"string materials\" [\"b\" \"a\"] \"texture amount\" \"amt\"\n"
-                         "Material \"mix\" \"string materials\" [\"c\" \"a\"] \"float amount\" 7\n"
-                         "Shape \"sphere\"\n");
+  PbrtImport im = import(
+      std::string(kCamera) +
+      "WorldBegin\n"
+      "MakeNamedMaterial \"a\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.2 0.2 0.2]\n"
+      "MakeNamedMaterial \"b\" \"string type\" \"thindielectric\" \"float eta\" 1.33\n"
+      "Material \"mix\" \"string materials\" [\"a\" \"b\"] \"float amount\" 0.3\n"
+      "Shape \"sphere\"\n"
+      "Texture \"amt\" \"float\" \"constant\" \"float value\" 0.25\n"
+      "MakeNamedMaterial \"c\" \"string type\" \"mix\" \"string materials\" [\"b\" \"a\"] \"texture amount\" \"amt\"\n"
+      "Material \"mix\" \"string materials\" [\"c\" \"a\"] \"float amount\" 7\n"
+      "Shape \"sphere\"\n");
   EXPECT_TRUE(im.report.empty()) << im.report[0];
   const auto& ms = im.scene.materials;
   EXPECT_EQ(ms[1].type, MaterialType::ThinDielectric);
@@ -822,18 +866,21 @@ TEST(PbrtImport, RoughnessAndReflectanceTexturesBindThroughTheRemap) {
 TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {
   const std::filesystem::path dir = ply_dir();
   write_file(dir / "wood.png", "not read while loading");
-  write_file(dir / "s.pbrt", std::string(kCamera) +
-                                 "WorldBegin\n"
-                                 "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.1 0.2 0.3]\n"
-                                 "Texture \"f\" \"float\" \"constant\" \"float value\" 0.4\n"
-                                 "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 2\n"
-                                 "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"s\" \"rgb tex2\" [1 1 1] \"texture amount\" \"f\"\n"
-                                 "Texture \"img\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"float scale\" 0.5 \"bool invert\" true\n"
-                                 "Texture \"inv\" \"float\" \"imagemap\" \"string filename\" \"wood.png\" \"bool invert\" true\n"
-                                 "Material \"diffuse\" \"texture reflectance\" \"m\"\n"
-                                 "Shape \"sphere\"\n"
-                                 "Material \"diffuse\" \"texture reflectance\" \"img\"\n"
-                                 "Shape \"sphere\"\n");
+  write_file(
+      dir / "s.pbrt",
+      std::string(kCamera) +
+          "WorldBegin\n"
+          "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.1 0.2 0.3]\n"
+          "Texture \"f\" \"float\" \"constant\" \"float value\" 0.4\n"
+          "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 2\n"
+          "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"s\" \"rgb tex2\" [1 1 1] \"texture amount\" \"f\"\n"
+          "Texture \"img\" \"spectrum\" \"imagemap\" \"string filename\" \"wood.png\" \"float scale\" 0.5 \"bool "
+          "invert\" true\n"
+          "Texture \"inv\" \"float\" \"imagemap\" \"string filename\" \"wood.png\" \"bool invert\" true\n"
+          "Material \"diffuse\" \"texture reflectance\" \"m\"\n"
+          "Shape \"sphere\"\n"
+          "Material \"diffuse\" \"texture reflectance\" \"img\"\n"
+          "Shape \"sphere\"\n");
   PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
   EXPECT_TRUE(im.report.empty()) << im.report[0];
   const auto& tx = im.scene.textures;
@@ -856,7 +903,9 @@ TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {
   EXPECT_EQ(tx[8].tex.texture, 7);
   EXPECT_EQ(im.scene.materials[im.scene.shapes[0].material].textures[0].texture, 3);
   EXPECT_EQ(im.scene.materials[im.scene.shapes[1].material].textures[0].texture, 6);
-  write_file(dir / "t.pbrt", std::string(kCamera) + "WorldBegin\nTexture \"s\" \"float\" \"scale\" \"float scale\" -1\nShape \"sphere\"\n");
+  write_file(
+      dir / "t.pbrt",
+      std::string(kCamera) + "WorldBegin\nTexture \"s\" \"float\" \"scale\" \"float scale\" -1\nShape \"sphere\"\n");
   EXPECT_EQ(file_import_error(dir / "t.pbrt"), (dir / "t.pbrt").string() + ":4:29: \"scale\" must be >= 0, got -1");
   std::filesystem::remove_all(dir);
 }
@@ -865,17 +914,18 @@ TEST(PbrtImport, ScaleAndMixTexturesAndImagemapScaleAndInvert) {
 // sphere of a mix of diffuse and thin dielectric, a floor of a conductor with a texture
 // roughness (pbrt 0.04, remapped: pdrt roughness 0.04^(1/4)) and a texture reflectance.
 TEST(PbrtImport, MixThinDielectricAndRoughnessTexturesRenderTheirJsonEquivalent) {
-  PbrtImport im = import(kTwinHeader +
-      "MakeNamedMaterial \"d\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
-      "MakeNamedMaterial \"t\" \"string type\" \"thindielectric\" \"float eta\" 1.5\n"
-      "Texture \"r\" \"float\" \"constant\" \"float value\" 0.04\n"
-      "Texture \"f0\" \"spectrum\" \"constant\" \"rgb value\" [0.9 0.6 0.3]\n"
-      + kTwinLamp +
-      "Material \"conductor\" \"texture roughness\" \"r\" \"texture reflectance\" \"f0\"\n"
-      "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3  3 0 -3  3 0 3  -3 0 3] \"integer indices\" [0 2 1 0 3 2]\n"
-      "Material \"mix\" \"string materials\" [\"d\" \"t\"] \"float amount\" 0.3\n"
-      "Translate 0 0.5 0\n"
-      "Shape \"sphere\" \"float radius\" 0.5\n");
+  PbrtImport im =
+      import(kTwinHeader +
+             "MakeNamedMaterial \"d\" \"string type\" \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
+             "MakeNamedMaterial \"t\" \"string type\" \"thindielectric\" \"float eta\" 1.5\n"
+             "Texture \"r\" \"float\" \"constant\" \"float value\" 0.04\n"
+             "Texture \"f0\" \"spectrum\" \"constant\" \"rgb value\" [0.9 0.6 0.3]\n" +
+             kTwinLamp +
+             "Material \"conductor\" \"texture roughness\" \"r\" \"texture reflectance\" \"f0\"\n"
+             "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3  3 0 -3  3 0 3  -3 0 3] \"integer indices\" [0 2 1 0 3 2]\n"
+             "Material \"mix\" \"string materials\" [\"d\" \"t\"] \"float amount\" 0.3\n"
+             "Translate 0 0.5 0\n"
+             "Shape \"sphere\" \"float radius\" 0.5\n");
   SceneDesc j = twin_scene();
   // Materials in the importer's order (a mix's choice hashes its index): d, t, light, floor, mix.
   Material d = diffuse(0);
@@ -929,7 +979,8 @@ void expect_window(const CameraDesc& c, std::array<float, 4> w, const std::strin
 // which is pdrt's ortho_height 2 on a landscape film and 2 height / width on a portrait one;
 // lensradius and focaldistance are the thin lens's.
 TEST(PbrtImport, OrthographicCameraMapsOntoPdrts) {
-  const std::string cam = std::string(kLookAt) + "Camera \"orthographic\" \"float lensradius\" 0.1 \"float focaldistance\" 4\n";
+  const std::string cam =
+      std::string(kLookAt) + "Camera \"orthographic\" \"float lensradius\" 0.1 \"float focaldistance\" 4\n";
   PbrtImport im = import(cam + film(200, 100) + "WorldBegin\nShape \"sphere\"\n");
   const CameraDesc& c = im.scene.camera;
   EXPECT_EQ(c.projection, CameraDesc::Projection::Orthographic);
@@ -941,7 +992,9 @@ TEST(PbrtImport, OrthographicCameraMapsOntoPdrts) {
   // pbrt-v4 starts every lens ray at the lens offset from the camera's centre (mmp/pbrt-v3#315);
   // pdrt moves each film point's own origin, and says so.
   ASSERT_EQ(im.report.size(), 1u);
-  EXPECT_NE(im.report[0].find("s.pbrt:2:23: orthographic depth of field moves each ray's own origin"), std::string::npos) << im.report[0];
+  EXPECT_NE(im.report[0].find("s.pbrt:2:23: orthographic depth of field moves each ray's own origin"),
+            std::string::npos)
+      << im.report[0];
   PbrtImport p = import(cam + film(100, 200) + "WorldBegin\nShape \"sphere\"\n");
   EXPECT_FLOAT_EQ(p.scene.camera.ortho_height, 4);
   // A uniformly scaled camera space scales the window: Scale 3 before LookAt makes camera
@@ -960,19 +1013,22 @@ TEST(PbrtImport, ScreenWindowAndFrameAspectRatioMapOntoPdrtsWindow) {
   const std::string world = "WorldBegin\nShape \"sphere\"\n";
   expect_window(import(persp + "\"float screenwindow\" [-0.5 1 -1 0.25]\n" + film(64, 64) + world).scene.camera,
                 {-0.5f * t, t, -t, 0.25f * t}, "perspective screenwindow");
-  expect_window(import(persp + "\"float frameaspectratio\" 2\n" + film(64, 64) + world).scene.camera, {-2 * t, 2 * t, -t, t},
-                "perspective frameaspectratio 2");
+  expect_window(import(persp + "\"float frameaspectratio\" 2\n" + film(64, 64) + world).scene.camera,
+                {-2 * t, 2 * t, -t, t}, "perspective frameaspectratio 2");
   expect_window(import(persp + "\"float frameaspectratio\" 0.5\n" + film(64, 64) + world).scene.camera,
                 {-t, t, -2 * t, 2 * t}, "perspective frameaspectratio 0.5");
   expect_window(import(ortho + "\"float screenwindow\" [0 2 -0.5 0.5]\n" + film(64, 32) + world).scene.camera,
                 {0, 2, -0.5f, 0.5f}, "orthographic screenwindow");
-  expect_window(import(ortho + "\"float frameaspectratio\" 0.25\n" + film(64, 32) + world).scene.camera,
-                {-1, 1, -4, 4}, "orthographic frameaspectratio");
+  expect_window(import(ortho + "\"float frameaspectratio\" 0.25\n" + film(64, 32) + world).scene.camera, {-1, 1, -4, 4},
+                "orthographic frameaspectratio");
   // Without either the window stays implicit: the fov conversion (vfov) covers it.
   EXPECT_FALSE(import(persp + "\n" + film(64, 32) + world).scene.camera.has_screen_window);
-  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [-1 1 -1]\n" + world), "s.pbrt:2:37: \"float screenwindow\" needs 4 values [x0 x1 y0 y1], got 3");
-  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [1 -1 -1 1]\n" + world), "s.pbrt:2:37: \"float screenwindow\" must have x0 < x1 and y0 < y1");
-  EXPECT_EQ(import_error(persp + "\"float frameaspectratio\" 0\n" + world), "s.pbrt:2:37: \"float frameaspectratio\" must be > 0, got 0");
+  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [-1 1 -1]\n" + world),
+            "s.pbrt:2:37: \"float screenwindow\" needs 4 values [x0 x1 y0 y1], got 3");
+  EXPECT_EQ(import_error(persp + "\"float screenwindow\" [1 -1 -1 1]\n" + world),
+            "s.pbrt:2:37: \"float screenwindow\" must have x0 < x1 and y0 < y1");
+  EXPECT_EQ(import_error(persp + "\"float frameaspectratio\" 0\n" + world),
+            "s.pbrt:2:37: \"float frameaspectratio\" must be > 0, got 0");
 }
 
 // pbrt-v4's cropwindow (each pair sorted, clamped to [0, 1]) and pixelbounds (pixels, each
@@ -990,10 +1046,12 @@ TEST(PbrtImport, CropWindowAndPixelBoundsMapOntoPdrtsCropWindow) {
   EXPECT_EQ(r.x1, 20);
   EXPECT_EQ(r.y0, 5);
   EXPECT_EQ(r.y1, 15);
-  r = crop_pixels(import(head + film(200, 100, "\"integer pixelbounds\" [20 10 15 5]") + world).scene.film.crop_window, 200, 100);
+  r = crop_pixels(import(head + film(200, 100, "\"integer pixelbounds\" [20 10 15 5]") + world).scene.film.crop_window,
+                  200, 100);
   EXPECT_EQ(r.x0, 10);
   EXPECT_EQ(r.y1, 15);
-  PbrtImport both = import(head + film(200, 100, "\"integer pixelbounds\" [10 20 5 15] \"float cropwindow\" [0 0.5 0 1]") + world);
+  PbrtImport both =
+      import(head + film(200, 100, "\"integer pixelbounds\" [10 20 5 15] \"float cropwindow\" [0 0.5 0 1]") + world);
   EXPECT_EQ(both.scene.film.crop_window, (std::array<float, 4>{0, 0.5f, 0, 1}));
   ASSERT_EQ(both.report.size(), 1u);
   EXPECT_EQ(both.report[0], "s.pbrt:3:64: both \"cropwindow\" and \"pixelbounds\" (the crop window used, as pbrt-v4)");
@@ -1012,10 +1070,11 @@ TEST(PbrtImport, CropWindowAndPixelBoundsMapOntoPdrtsCropWindow) {
 // in [0, 2], so an emitter at world (1.5, 0.25) images at pixel (48, 8): right of centre and
 // in the upper half, as in pbrt.
 TEST(PbrtImport, OrthographicOffCentreWindowPutsAnOffAxisObjectOnPbrtsSide) {
-  PbrtImport im = import(std::string(kLookAt) + "Camera \"orthographic\" \"float screenwindow\" [0 2 -0.5 0.5]\n" + film(64, 32) +
-                         "Sampler \"independent\" \"integer pixelsamples\" 16\nPixelFilter \"box\"\n"
-                         "WorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
-                         "Translate 1.5 0.25 0\nShape \"sphere\" \"float radius\" 0.1\nAttributeEnd\n");
+  PbrtImport im =
+      import(std::string(kLookAt) + "Camera \"orthographic\" \"float screenwindow\" [0 2 -0.5 0.5]\n" + film(64, 32) +
+             "Sampler \"independent\" \"integer pixelsamples\" 16\nPixelFilter \"box\"\n"
+             "WorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 1 1]\n"
+             "Translate 1.5 0.25 0\nShape \"sphere\" \"float radius\" 0.1\nAttributeEnd\n");
   auto p = ThinLensCamera(im.scene.camera, 64, 32).project({1.5f, 0.25f, 0});
   EXPECT_NEAR(p[0], 48, 1e-4);
   EXPECT_NEAR(p[1], 8, 1e-4);
@@ -1036,13 +1095,14 @@ TEST(PbrtImport, OrthographicOffCentreWindowPutsAnOffAxisObjectOnPbrtsSide) {
 TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
   PbrtImport im = import(
       "LookAt 0 1 -6  0 0.5 0  0 1 0\n"
-      "Camera \"orthographic\" \"float screenwindow\" [-1.2 1.8 -1 1] \"float lensradius\" 0.05 \"float focaldistance\" 6\n"
+      "Camera \"orthographic\" \"float screenwindow\" [-1.2 1.8 -1 1] \"float lensradius\" 0.05 \"float "
+      "focaldistance\" 6\n"
       "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 32 \"float cropwindow\" [0.3 0.8 0.2 0.9]\n"
       "Sampler \"independent\" \"integer pixelsamples\" 8\n"
       "Integrator \"path\" \"integer maxdepth\" 4\n"
       "PixelFilter \"box\"\n"
-      "WorldBegin\n"
-      + kTwinLamp +
+      "WorldBegin\n" +
+      kTwinLamp +
       "Material \"diffuse\" \"rgb reflectance\" [0.6 0.5 0.4]\n"
       "Translate 0.4 0.5 0\n"
       "Shape \"sphere\" \"float radius\" 0.5\n");
@@ -1065,9 +1125,10 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
 
   SceneDesc& p = im.scene;
   j.camera.up = p.camera.up;  // orthogonalised to the view by the importer (see above)
-  p.camera.look_at = p.camera.position + normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
+  p.camera.look_at = p.camera.position +
+                     normalize(p.camera.look_at - p.camera.position) * length(j.camera.look_at - j.camera.position);
   Image a = render_quietly(p).image, b = render_quietly(j).image;
-  ASSERT_EQ(a.width, 24);  // ceil(48 0.3) = 15 .. ceil(48 0.8) = 39
+  ASSERT_EQ(a.width, 24);   // ceil(48 0.3) = 15 .. ceil(48 0.8) = 39
   ASSERT_EQ(a.height, 22);  // ceil(32 0.2) = 7 .. ceil(32 0.9) = 29
   ASSERT_EQ(b.width, a.width);
   ASSERT_EQ(b.height, a.height);
@@ -1085,7 +1146,8 @@ TEST(PbrtImport, OrthographicCroppedSceneRendersTheImageOfItsJsonEquivalent) {
 // before their product, which overflowed (undefined behaviour) for two large ones.
 TEST(PbrtImport, StratifiedSampleCountsTooLargeToMultiplyAreRefused) {
   EXPECT_EQ(import_error("Sampler \"stratified\" \"integer xsamples\" [9000000000000000] \"integer ysamples\" "
-                         "[9000000000000000]\n" + std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n"),
+                         "[9000000000000000]\n" +
+                         std::string(kCamera) + "WorldBegin\nShape \"sphere\"\n"),
             "s.pbrt:1:1: \"integer xsamples\" and \"integer ysamples\" must be in [1, 2^24], got 9000000000000000 and "
             "9000000000000000");
 }
@@ -1105,7 +1167,8 @@ double worst_patch_error(const MeshData& m, const Vec3 corners[4], int* triangle
   *triangles = int(m.indices.size() / 3);
   if (m.uvs.size() != m.positions.size()) return INFINITY;  // the patch's uv must be there
   for (size_t t = 0; t < m.indices.size(); t += 3)
-    for (auto [b1, b2] : std::vector<std::pair<float, float>>{{1.f / 3, 1.f / 3}, {0.5f, 0.5f}, {0.5f, 0}, {0.1f, 0.7f}}) {
+    for (auto [b1, b2] :
+         std::vector<std::pair<float, float>>{{1.f / 3, 1.f / 3}, {0.5f, 0.5f}, {0.5f, 0}, {0.1f, 0.7f}}) {
       const float b0 = 1 - b1 - b2;
       const uint32_t i0 = m.indices[t], i1 = m.indices[t + 1], i2 = m.indices[t + 2];
       const Vec3 q = m.positions[i0] * b0 + m.positions[i1] * b1 + m.positions[i2] * b2;
@@ -1121,7 +1184,8 @@ double worst_patch_error(const MeshData& m, const Vec3 corners[4], int* triangle
 TEST(PbrtImport, TwistedBilinearPatchIsTessellatedWithinItsToleranceWithBilinearUv) {
   // A saddle: two triangles would miss its centre by 0.25; pbrt-v4 intersects the patch.
   const Vec3 corners[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1}};
-  PbrtImport im = import(std::string(kCamera) + "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0  1 1 1]\n");
+  PbrtImport im =
+      import(std::string(kCamera) + "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0  1 1 1]\n");
   ASSERT_EQ(im.scene.shapes.size(), 1u);
   int triangles = 0;
   EXPECT_LT(worst_patch_error(im.scene.shapes[0].mesh, corners, &triangles), 1e-4 * std::sqrt(2.0));

@@ -31,7 +31,8 @@ std::string error_of(const std::string& text) {
 
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / ("pdrt_pbrt_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("pdrt_pbrt_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -62,23 +63,43 @@ TEST(PbrtTokenizer, SplitsWordsStringsAndBracketsAndSkipsComments) {
 TEST(PbrtParser, TypesEveryDirectiveByItsName) {
   using K = PbrtDirectiveKind;
   const std::vector<std::pair<std::string, K>> expected = {
-      {"Identity", K::Identity}, {"Translate 1 2 3", K::Translate}, {"Scale 1 2 3", K::Scale},
-      {"Rotate 90 0 0 1", K::Rotate}, {"LookAt 0 0 0 0 0 1 0 1 0", K::LookAt},
+      {"Identity", K::Identity},
+      {"Translate 1 2 3", K::Translate},
+      {"Scale 1 2 3", K::Scale},
+      {"Rotate 90 0 0 1", K::Rotate},
+      {"LookAt 0 0 0 0 0 1 0 1 0", K::LookAt},
       {"Transform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]", K::Transform},
       {"ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]", K::ConcatTransform},
-      {"CoordinateSystem \"c\"", K::CoordinateSystem}, {"CoordSysTransform \"c\"", K::CoordSysTransform},
-      {"ActiveTransform All", K::ActiveTransform}, {"TransformTimes 0 1", K::TransformTimes},
-      {"ReverseOrientation", K::ReverseOrientation}, {"WorldBegin", K::WorldBegin}, {"WorldEnd", K::WorldEnd},
-      {"AttributeBegin", K::AttributeBegin}, {"AttributeEnd", K::AttributeEnd}, {"TransformBegin", K::TransformBegin},
-      {"TransformEnd", K::TransformEnd}, {"Attribute \"shape\" \"float radius\" 2", K::Attribute},
-      {"ObjectBegin \"o\"", K::ObjectBegin}, {"ObjectEnd", K::ObjectEnd}, {"ObjectInstance \"o\"", K::ObjectInstance},
-      {"Camera \"perspective\"", K::Camera}, {"Film \"rgb\"", K::Film}, {"PixelFilter \"box\"", K::PixelFilter},
-      {"Sampler \"halton\"", K::Sampler}, {"Integrator \"path\"", K::Integrator}, {"Accelerator \"bvh\"", K::Accelerator},
-      {"ColorSpace \"srgb\"", K::ColorSpace}, {"Option \"bool wavefront\" true", K::Option},
-      {"Texture \"t\" \"float\" \"constant\"", K::Texture}, {"Material \"diffuse\"", K::Material},
+      {"CoordinateSystem \"c\"", K::CoordinateSystem},
+      {"CoordSysTransform \"c\"", K::CoordSysTransform},
+      {"ActiveTransform All", K::ActiveTransform},
+      {"TransformTimes 0 1", K::TransformTimes},
+      {"ReverseOrientation", K::ReverseOrientation},
+      {"WorldBegin", K::WorldBegin},
+      {"WorldEnd", K::WorldEnd},
+      {"AttributeBegin", K::AttributeBegin},
+      {"AttributeEnd", K::AttributeEnd},
+      {"TransformBegin", K::TransformBegin},
+      {"TransformEnd", K::TransformEnd},
+      {"Attribute \"shape\" \"float radius\" 2", K::Attribute},
+      {"ObjectBegin \"o\"", K::ObjectBegin},
+      {"ObjectEnd", K::ObjectEnd},
+      {"ObjectInstance \"o\"", K::ObjectInstance},
+      {"Camera \"perspective\"", K::Camera},
+      {"Film \"rgb\"", K::Film},
+      {"PixelFilter \"box\"", K::PixelFilter},
+      {"Sampler \"halton\"", K::Sampler},
+      {"Integrator \"path\"", K::Integrator},
+      {"Accelerator \"bvh\"", K::Accelerator},
+      {"ColorSpace \"srgb\"", K::ColorSpace},
+      {"Option \"bool wavefront\" true", K::Option},
+      {"Texture \"t\" \"float\" \"constant\"", K::Texture},
+      {"Material \"diffuse\"", K::Material},
       {"MakeNamedMaterial \"m\" \"string type\" \"diffuse\"", K::MakeNamedMaterial},
-      {"NamedMaterial \"m\"", K::NamedMaterial}, {"LightSource \"point\"", K::LightSource},
-      {"AreaLightSource \"diffuse\"", K::AreaLightSource}, {"Shape \"sphere\"", K::Shape},
+      {"NamedMaterial \"m\"", K::NamedMaterial},
+      {"LightSource \"point\"", K::LightSource},
+      {"AreaLightSource \"diffuse\"", K::AreaLightSource},
+      {"Shape \"sphere\"", K::Shape},
       {"MakeNamedMedium \"m\" \"string type\" \"homogeneous\"", K::MakeNamedMedium},
       {"MediumInterface \"m\"", K::MediumInterface},
   };
@@ -100,7 +121,8 @@ TEST(PbrtParser, ReadsDirectiveArgumentsAndTypedParameters) {
       "ConcatTransform 1 0 0 0 0 1 0 0 0 0 1 0 1 2 3 1\n"
       "ActiveTransform EndTime\n"
       "Texture \"checks\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"texture tex2\" \"other\"\n"
-      "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2] \"bool x\" true \"bool y\" \"false\"\n"
+      "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2] \"bool x\" true \"bool y\" "
+      "\"false\"\n"
       "MediumInterface \"a\" \"b\"\n"
       "Option \"bool disablepixeljitter\" true\n");
   ASSERT_EQ(ds.size(), 9u);
@@ -166,14 +188,15 @@ TEST(PbrtParser, RefusesIncludeCyclesAndMissingTargetsAtTheInclude) {
     parse_pbrt_file(dir / "a.pbrt");
     ADD_FAILURE() << "cycle accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "b.pbrt").string() + ":1:1: \"" + (dir / "a.pbrt").string() + "\" includes itself (an Include cycle)");
+    EXPECT_EQ(std::string(e.what()), (dir / "b.pbrt").string() + ":1:1: \"" + (dir / "a.pbrt").string() +
+                                         "\" includes itself (an Include cycle)");
   }
   try {
     parse_pbrt_file(dir / "c.pbrt");
     ADD_FAILURE() << "missing include accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "c.pbrt").string() + ":1:1: cannot open \"" + (dir / "missing.pbrt").string() +
-                                         "\": No such file or directory");
+    EXPECT_EQ(std::string(e.what()), (dir / "c.pbrt").string() + ":1:1: cannot open \"" +
+                                         (dir / "missing.pbrt").string() + "\": No such file or directory");
   }
   fs::remove_all(dir);
 }
@@ -185,8 +208,10 @@ TEST(PbrtParser, RefusesMalformedFilesWithTheirPosition) {
   };
   const Case cases[] = {
       {"Shape \"sphere\n", "s.pbrt:1:7: string is not closed on its line (missing '\"')"},
-      {"Shape \"sphere\" \"float radius\" [1 2", "s.pbrt:1:31: '[' of \"radius\" is not closed (found the end of the file at s.pbrt:1:35)"},
-      {"Shape \"sphere\" \"float radius\" [1 \"point p\" [0 0 0]", "s.pbrt:1:31: '[' of \"radius\" is not closed (found '[' at s.pbrt:1:44)"},
+      {"Shape \"sphere\" \"float radius\" [1 2",
+       "s.pbrt:1:31: '[' of \"radius\" is not closed (found the end of the file at s.pbrt:1:35)"},
+      {"Shape \"sphere\" \"float radius\" [1 \"point p\" [0 0 0]",
+       "s.pbrt:1:31: '[' of \"radius\" is not closed (found '[' at s.pbrt:1:44)"},
       {"Frobnicate 1", "s.pbrt:1:1: unknown directive \"Frobnicate\""},
       {"  \"sphere\"", "s.pbrt:1:3: expected a directive, got the string \"sphere\""},
       {"Translate 1 x 3", "s.pbrt:1:13: Translate argument 2 must be a number, got \"x\""},
@@ -197,12 +222,15 @@ TEST(PbrtParser, RefusesMalformedFilesWithTheirPosition) {
       {"Shape sphere", "s.pbrt:1:7: Shape needs a quoted string, got \"sphere\""},
       {"Shape \"sphere\" \"float\" 1", "s.pbrt:1:16: a parameter is declared as \"type name\", got \"float\""},
       {"Shape \"sphere\" \"real radius\" 1", "s.pbrt:1:16: unknown parameter type \"real\" (of \"radius\")"},
-      {"Shape \"sphere\" \"float radius\" \"one\"", "s.pbrt:1:31: a value of \"float radius\" must be a number, got the string \"one\""},
-      {"Shape \"sphere\" \"float radius\" nan", "s.pbrt:1:31: a value of \"float radius\" must be a number, got \"nan\""},
+      {"Shape \"sphere\" \"float radius\" \"one\"",
+       "s.pbrt:1:31: a value of \"float radius\" must be a number, got the string \"one\""},
+      {"Shape \"sphere\" \"float radius\" nan",
+       "s.pbrt:1:31: a value of \"float radius\" must be a number, got \"nan\""},
       {"Shape \"sphere\" \"float radius\" []", "s.pbrt:1:16: \"float radius\" has no values"},
       {"Shape \"sphere\" \"bool x\" 1", "s.pbrt:1:25: a value of \"bool x\" must be true or false, got \"1\""},
       {"Shape \"sphere\" \"string x\" [a]", "s.pbrt:1:28: a value of \"string x\" must be a quoted string, got \"a\""},
-      {"Shape \"sphere\" \"float r\" 1 \"float r\" 2", "s.pbrt:1:28: parameter \"r\" is given twice (first at s.pbrt:1:16)"},
+      {"Shape \"sphere\" \"float r\" 1 \"float r\" 2",
+       "s.pbrt:1:28: parameter \"r\" is given twice (first at s.pbrt:1:16)"},
       {"Shape \"sphere\" \"float r\" ]", "s.pbrt:1:26: \"float r\" needs a value, got ']'"},
       {"Shape \"a\\qb\"", "s.pbrt:1:9: unknown escape '\\q' in a string"},
       {"Shape \"sphere\" \x01", "s.pbrt:1:16: unexpected control character (byte 1)"},

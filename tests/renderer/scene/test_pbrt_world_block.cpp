@@ -68,12 +68,12 @@ TEST(PbrtWorldBlock, AttributeSetsDefaultsForLaterDirectivesOfItsKind) {
                          "AttributeBegin\n"
                          "  Attribute \"shape\" \"float radius\" 0.25\n"
                          "  Shape \"sphere\"\n"
-                         "  Shape \"sphere\" \"float radius\" 2\n"          // its own value wins
+                         "  Shape \"sphere\" \"float radius\" 2\n"  // its own value wins
                          "  Attribute \"material\" \"rgb reflectance\" [0.1 0.2 0.3]\n"
                          "  Material \"diffuse\"\n"
                          "  Shape \"sphere\"\n"
                          "AttributeEnd\n"
-                         "Shape \"sphere\"\n");                              // out of scope again
+                         "Shape \"sphere\"\n");  // out of scope again
   ASSERT_EQ(im.scene.shapes.size(), 4u);
   EXPECT_EQ(im.scene.shapes[0].radius, 0.25f);
   EXPECT_EQ(im.scene.shapes[1].radius, 2.0f);
@@ -86,19 +86,23 @@ TEST(PbrtWorldBlock, AttributeSetsDefaultsForLaterDirectivesOfItsKind) {
   ASSERT_EQ(r.report.size(), 1u);
   EXPECT_EQ(r.report[0], "s.pbrt:5:16: \"float yyy\" is not used by pdrt (ignored)");
   // A later Attribute replaces an earlier value of the same name.
-  PbrtImport l = import(kWorld + "Attribute \"shape\" \"float radius\" 3\nAttribute \"shape\" \"float radius\" 4\nShape \"sphere\"\n");
+  PbrtImport l = import(
+      kWorld + "Attribute \"shape\" \"float radius\" 3\nAttribute \"shape\" \"float radius\" 4\nShape \"sphere\"\n");
   EXPECT_EQ(l.scene.shapes[0].radius, 4.0f);
   // Light attributes reach area lights too.
-  PbrtImport a = import(kWorld + "Attribute \"light\" \"float scale\" 3\nAreaLightSource \"diffuse\"\nShape \"sphere\"\n");
+  PbrtImport a =
+      import(kWorld + "Attribute \"light\" \"float scale\" 3\nAreaLightSource \"diffuse\"\nShape \"sphere\"\n");
   expect_vec(a.scene.materials[size_t(a.scene.shapes[0].material)].radiance, Vec3(3.0f));
 }
 
 TEST(PbrtWorldBlock, AttributeTargetsAreCheckedAndMediumIsReported) {
   EXPECT_EQ(import_error(kWorld + "Attribute \"camera\" \"float fov\" 3\n"),
-            "s.pbrt:4:1: Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got \"camera\"");
+            "s.pbrt:4:1: Attribute target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\", got "
+            "\"camera\"");
   PbrtImport m = import(kWorld + "Attribute \"medium\" \"rgb sigma_a\" [1 1 1]\nShape \"sphere\"\n");
   ASSERT_EQ(m.report.size(), 1u);
-  EXPECT_EQ(m.report[0], "s.pbrt:4:1: Attribute \"medium\" is not supported: pdrt has no participating media (ignored)");
+  EXPECT_EQ(m.report[0],
+            "s.pbrt:4:1: Attribute \"medium\" is not supported: pdrt has no participating media (ignored)");
 }
 
 TEST(PbrtWorldBlock, LoopSubdivRefinesToTheRequestedLevelWithLimitNormals) {
@@ -109,7 +113,7 @@ TEST(PbrtWorldBlock, LoopSubdivRefinesToTheRequestedLevelWithLimitNormals) {
   ASSERT_EQ(im.scene.shapes.size(), 2u);
   EXPECT_TRUE(im.report.empty()) << im.report[0];
   const MeshData& m = im.scene.shapes[0].mesh;
-  EXPECT_EQ(m.indices.size(), 3u * 4 * 16);                  // 4 faces x 4^2
+  EXPECT_EQ(m.indices.size(), 3u * 4 * 16);                        // 4 faces x 4^2
   EXPECT_EQ(im.scene.shapes[1].mesh.indices.size(), 3u * 4 * 64);  // pbrt-v4's default: 3 levels
   ASSERT_EQ(m.normals.size(), m.positions.size());
   // The control faces wind outward, so do the normals and the refined faces.
@@ -120,7 +124,8 @@ TEST(PbrtWorldBlock, LoopSubdivRefinesToTheRequestedLevelWithLimitNormals) {
   }
   // The limit surface lies inside the control hull: every point strictly within |x|,|y|,|z| < 1.
   for (const Vec3& p : m.positions) EXPECT_LT(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}), 1.0f);
-  EXPECT_EQ(import_error(kWorld + tetra + " \"integer levels\" -1\n"), "s.pbrt:4:113: \"integer levels\" must be in [0, 12], got -1");
+  EXPECT_EQ(import_error(kWorld + tetra + " \"integer levels\" -1\n"),
+            "s.pbrt:4:113: \"integer levels\" must be in [0, 12], got -1");
 }
 
 TEST(PbrtWorldBlock, InfiniteLightImageBecomesTheEquirectangularEnvironment) {
@@ -144,8 +149,9 @@ TEST(PbrtWorldBlock, InfiniteLightImageBecomesTheEquirectangularEnvironment) {
   }
   // illuminance: a sky of luminance lum over the upper hemisphere gives E = pi lum, so asking
   // for E = pi scales by 1 / lum. (The luminance of (2, 1, 0.5) in linear sRGB.)
-  std::ofstream(dir / "e.pbrt") << kWorld << "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float illuminance\" 3.14159265\n"
-                                << "Shape \"sphere\"\n";
+  std::ofstream(dir / "e.pbrt")
+      << kWorld << "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float illuminance\" 3.14159265\n"
+      << "Shape \"sphere\"\n";
   const double lum = 0.2126 * 2 + 0.7152 * 1 + 0.0722 * 0.5;
   EXPECT_NEAR(load_pbrt_scene(dir / "e.pbrt", false).scene.environment.scale.x, 1 / lum, 5e-3 / lum);
 }
@@ -162,7 +168,8 @@ TEST(PbrtWorldBlock, InfiniteLightImageErrorsNameTheParameter) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error("\"wide.exr\""), ":4:24: \"wide.exr\" is 4 x 2: pbrt-v4's environment images are square (equal-area octahedral)");
+  EXPECT_EQ(error("\"wide.exr\""),
+            ":4:24: \"wide.exr\" is 4 x 2: pbrt-v4's environment images are square (equal-area octahedral)");
   EXPECT_EQ(error("\"none.exr\"").substr(0, 31), ":4:24: cannot read \"none.exr\": ");
   EXPECT_EQ(error("\"wide.exr\" \"rgb L\" [1 1 1]"), ":4:53: an infinite light takes \"L\" or \"filename\", not both");
 }
@@ -170,7 +177,8 @@ TEST(PbrtWorldBlock, InfiniteLightImageErrorsNameTheParameter) {
 TEST(PbrtWorldBlock, ConvertWritesTheResampledEnvironmentBesideTheScene) {
   const auto dir = scratch("pbrt_envmap_convert");
   write_octahedral(dir / "sky.exr", 16, sky);
-  std::ofstream(dir / "s.pbrt") << kWorld << "LightSource \"infinite\" \"string filename\" \"sky.exr\"\nShape \"sphere\"\n";
+  std::ofstream(dir / "s.pbrt") << kWorld
+                                << "LightSource \"infinite\" \"string filename\" \"sky.exr\"\nShape \"sphere\"\n";
   PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
   write_scene_json(im.scene, dir / "out.json");
   ASSERT_TRUE(std::filesystem::exists(dir / "out.environment.exr"));
@@ -189,10 +197,14 @@ TEST(PbrtWorldBlock, SphereUvFollowPbrtsPoleAndAzimuth) {
     EmbreeDevice dev;
     EmbreeScene scene(im.scene, dev);
     const Vec3 c(1, 2, 3);
-    struct Case { Vec3 dir; float u, v; };
+    struct Case {
+      Vec3 dir;
+      float u, v;
+    };
     const float h = std::sqrt(0.5f);
-    for (const Case& k : {Case{{1, 0, 0}, 0.0f, 0.5f}, Case{{0, 1, 0}, 0.25f, 0.5f}, Case{{-1, 0, 0}, 0.5f, 0.5f},
-                          Case{{0, -1, 0}, 0.75f, 0.5f}, Case{{h, 0, h}, 0.0f, 0.75f}, Case{{0, h, -h}, 0.25f, 0.25f}}) {
+    for (const Case& k :
+         {Case{{1, 0, 0}, 0.0f, 0.5f}, Case{{0, 1, 0}, 0.25f, 0.5f}, Case{{-1, 0, 0}, 0.5f, 0.5f},
+          Case{{0, -1, 0}, 0.75f, 0.5f}, Case{{h, 0, h}, 0.0f, 0.75f}, Case{{0, h, -h}, 0.25f, 0.25f}}) {
       Ray r;
       r.org = c + k.dir * 10, r.dir = -k.dir, r.time = 0;
       SurfaceHit hit;

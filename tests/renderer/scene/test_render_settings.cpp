@@ -45,7 +45,8 @@ void expect_round_trip(const NamedValue<E> (&table)[N]) {
 
 fs::path temp_file(const std::string& name, const std::string& text) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / ("pdrt_settings_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("pdrt_settings_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / name, std::ios::binary) << text;
   return dir / name;
@@ -61,7 +62,8 @@ std::string input_error(const std::function<void()>& f) {
   return "";
 }
 
-const std::string kSplitRefusal = "adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"";
+const std::string kSplitRefusal =
+    "adaptive decision \"split\" needs reconstruction \"importance\" or \"splat\", not \"rank\"";
 
 }  // namespace
 
@@ -118,7 +120,8 @@ TEST(RenderSettings, EachRuleNamesItsSetting) {
   p = render_settings_problem(c);
   ASSERT_TRUE(p);
   EXPECT_EQ(p->setting, SettingsProblem::Setting::CropWindow);
-  EXPECT_EQ(p->message, "film.crop_window covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8))");
+  EXPECT_EQ(p->message,
+            "film.crop_window covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8))");
 }
 
 // The same refusal, in the same words, from a JSON scene file, from the renderer (a pbrt scene
@@ -150,12 +153,14 @@ TEST(RenderSettings, EmptyCropIsRefusedAlikeByBothLoadersAndTheRenderer) {
   "film": {"width": 8, "height": 8, "crop_window": [0.51, 0.6, 0, 1]}
 })");
   EXPECT_NE(input_error([&] { load_scene(json); }).find("film.crop_window " + words), std::string::npos);
-  const fs::path pbrt = temp_file("s.pbrt", "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\n"
-                                            "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8 "
-                                            "\"float cropwindow\" [0.51 0.6 0 1]\nWorldBegin\n");
+  const fs::path pbrt = temp_file("s.pbrt",
+                                  "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\n"
+                                  "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8 "
+                                  "\"float cropwindow\" [0.51 0.6 0 1]\nWorldBegin\n");
   EXPECT_NE(input_error([&] { load_scene(pbrt); }).find("\"float cropwindow\" " + words), std::string::npos);
   SceneDesc s = test::base_scene(8, 8, 4);
   s.film.crop_window = {0.51f, 0.6f, 0, 1};
   auto sampler = make_scene_sampler(s.sampler, s.film);
-  EXPECT_EQ(input_error([&] { render(s, *sampler, RenderOptions{}); }), s.film.size_where + ": film.crop_window " + words);
+  EXPECT_EQ(input_error([&] { render(s, *sampler, RenderOptions{}); }),
+            s.film.size_where + ": film.crop_window " + words);
 }

@@ -27,7 +27,8 @@ const fs::path kScenes = PDRT_SCENES_DIR;
 // A fresh directory per test and process (the ASan and plain suites may run side by side).
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -86,7 +87,8 @@ class SceneLoader : public ::testing::Test {
   void TearDown() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::error_code ec;
-    fs::remove_all(fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid())), ec);
+    fs::remove_all(
+        fs::temp_directory_path() / ("pdrt_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid())), ec);
   }
 };
 
@@ -279,17 +281,17 @@ TEST_F(SceneLoader, RegularizeMustBeABoolean) {
 }
 
 TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {
-  SceneDesc s = load_scene(scene(
-      "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
-      " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"box\"}}}"));
+  SceneDesc s =
+      load_scene(scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+                       " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"box\"}}}"));
   EXPECT_EQ(s.film.filter.type, FilterType::Box);
   EXPECT_FLOAT_EQ(s.film.filter.radius, 0.5f);
 }
 
 TEST_F(SceneLoader, GaussianSigmaSelectsPbrtsSeparableGaussianAndOnlyForGaussians) {
-  SceneDesc s = load_scene(scene(
-      "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
-      " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"gaussian\", \"sigma\": 0.5}}}"));
+  SceneDesc s = load_scene(
+      scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+            " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"gaussian\", \"sigma\": 0.5}}}"));
   EXPECT_FLOAT_EQ(s.film.filter.sigma, 0.5f);
   EXPECT_ERROR(scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
                      " \"film\": {\"width\": 8, \"height\": 8, \"filter\": {\"type\": \"box\", \"sigma\": 0.5}}}"),
@@ -347,7 +349,8 @@ TEST_F(SceneLoader, UnknownAdaptiveDecision) {
 
 std::string film_with_filter(const std::string& filter) {
   return "{\n  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-         "  \"film\": {\"width\": 8, \"height\": 8, \"filter\": " + filter + "}";
+         "  \"film\": {\"width\": 8, \"height\": 8, \"filter\": " +
+         filter + "}";
 }
 
 TEST_F(SceneLoader, FilterReconstructionModes) {
@@ -366,15 +369,17 @@ TEST_F(SceneLoader, UnknownReconstruction) {
 
 TEST_F(SceneLoader, OldSelectionKeyNamesItsReplacement) {
   fs::path f = scene(film_with_filter("{\"selection\": \"rank\"}") + "\n}\n");
-  EXPECT_ERROR(f, "s.json:3:48: film.filter.selection was replaced by \"reconstruction\": \"importance\" (default), "
-                  "\"splat\" or \"rank\"");
+  EXPECT_ERROR(f,
+               "s.json:3:48: film.filter.selection was replaced by \"reconstruction\": \"importance\" (default), "
+               "\"splat\" or \"rank\"");
 }
 
 TEST_F(SceneLoader, SplitDecisionWithRankReconstructionIsRefused) {
   fs::path f = scene(film_with_filter("{\"reconstruction\": \"rank\"}") +
                      ",\n  \"sampler\": {\"adaptive\": {\"decision\": \"split\"}}\n}\n");
-  EXPECT_ERROR(f, "s.json:4:40: sampler.adaptive.decision \"split\" needs reconstruction \"importance\" or "
-                  "\"splat\", not \"rank\"");
+  EXPECT_ERROR(f,
+               "s.json:4:40: sampler.adaptive.decision \"split\" needs reconstruction \"importance\" or "
+               "\"splat\", not \"rank\"");
 }
 
 TEST_F(SceneLoader, QuadIsTwoCounterClockwiseTriangles) {
@@ -578,7 +583,9 @@ TEST_F(SceneLoader, MovingSphereLightRefusesNonUniformScale) {
   fs::path f = scene(kHead + R"(  "lights": [{"type": "sphere", "radius": 0.5, "radiance": [1, 1, 1],
               "motion": [{"time": 0}, {"time": 1, "scale": [1, 2, 1]}]}]
 })");
-  EXPECT_ERROR(f, "s.json:5:60: lights[0].motion[1].scale must be uniform for a sphere (one number); use a mesh for an ellipsoid, got [1,2,1]");
+  EXPECT_ERROR(f,
+               "s.json:5:60: lights[0].motion[1].scale must be uniform for a sphere (one number); use a mesh for an "
+               "ellipsoid, got [1,2,1]");
 }
 
 TEST_F(SceneLoader, MovingSphereObjectAcceptsUniformScaleOnly) {
@@ -591,7 +598,9 @@ TEST_F(SceneLoader, MovingSphereObjectAcceptsUniformScaleOnly) {
   "objects": [{"type": "sphere", "material": "grey", "radius": 1,
                "motion": [{"time": 0, "scale": [1, 1, 0.5]}, {"time": 1}]}]
 })");
-  EXPECT_ERROR(bad, "s.json:6:48: objects[0].motion[0].scale must be uniform for a sphere (one number); use a mesh for an ellipsoid, got [1,1,0.5]");
+  EXPECT_ERROR(bad,
+               "s.json:6:48: objects[0].motion[0].scale must be uniform for a sphere (one number); use a mesh for an "
+               "ellipsoid, got [1,1,0.5]");
 }
 
 TEST_F(SceneLoader, CameraMotionOutsideShutter) {
@@ -763,10 +772,12 @@ TEST_F(SceneLoader, CoatedDiffuseRefusesBadValuesByName) {
   auto with = [&](const std::string& keys) {
     return scene(kHead + "  \"materials\": {\n    \"m\": {\"type\": \"coated_diffuse\", " + keys + "}\n  }\n}\n");
   };
-  EXPECT_ERROR(with(R"("ior": 0.5)"), "s.json:5:44: materials.m.ior must be in [1,3] (the coat's index relative to the outside), got 0.5");
+  EXPECT_ERROR(with(R"("ior": 0.5)"),
+               "s.json:5:44: materials.m.ior must be in [1,3] (the coat's index relative to the outside), got 0.5");
   EXPECT_ERROR(with(R"("ior": 3.5)"), "s.json:5:44: materials.m.ior must be in [1,3]");
   EXPECT_ERROR(with(R"("ior": "glass")"), "s.json:5:44: materials.m.ior must be a number, got \"glass\"");
-  EXPECT_ERROR(with(R"("coat_color": [1.2, 0, 0])"), "s.json:5:51: materials.m.coat_color must have components in [0,1], got [1.2,0,0]");
+  EXPECT_ERROR(with(R"("coat_color": [1.2, 0, 0])"),
+               "s.json:5:51: materials.m.coat_color must have components in [0,1], got [1.2,0,0]");
   EXPECT_ERROR(with(R"("coat_color": 0.5)"), "materials.m.coat_color must be an array of 3 numbers");
   EXPECT_ERROR(with(R"("coat_thickness": -1)"), "s.json:5:55: materials.m.coat_thickness must be >= 0, got -1");
   EXPECT_ERROR(with(R"("coat_thickness": 1e39)"), "is too large for a float");
@@ -780,8 +791,9 @@ TEST_F(SceneLoader, CoatedDiffuseRefusesOtherMaterialsKeys) {
   };
   EXPECT_ERROR(with(R"("energy_compensation": true)"), "s.json:5:37: materials.m.energy_compensation unknown key");
   EXPECT_ERROR(with(R"("eta": [1, 1, 1])"), "materials.m.eta unknown key");
-  EXPECT_ERROR(with(R"("thickness": 1)"),
-               "materials.m.thickness unknown key (expected one of: type, albedo, roughness, ior, coat_color, coat_thickness)");
+  EXPECT_ERROR(
+      with(R"("thickness": 1)"),
+      "materials.m.thickness unknown key (expected one of: type, albedo, roughness, ior, coat_color, coat_thickness)");
 }
 
 TEST_F(SceneLoader, AlbedoOutOfRange) {
@@ -804,15 +816,17 @@ TEST_F(SceneLoader, DeltaLightsRefuseBadValuesByName) {
   // Every light is on line 4, after `  "lights": [`.
   EXPECT_ERROR(lights(R"({"type": "point", "intensity": [1, -1, 1]})"),
                "s.json:4:45: lights[0].intensity must have components >= 0, got [1,-1,1]");
-  EXPECT_ERROR(lights(R"({"type": "point", "position": [0, 0, 0]})"), "s.json:4:14: lights[0] missing required key \"intensity\"");
+  EXPECT_ERROR(lights(R"({"type": "point", "position": [0, 0, 0]})"),
+               "s.json:4:14: lights[0] missing required key \"intensity\"");
   EXPECT_ERROR(lights(R"({"type": "point", "intensity": [1, 1, 1], "radiance": [1, 1, 1]})"),
                "s.json:4:56: lights[0].radiance unknown key");
   EXPECT_ERROR(lights(R"({"type": "distant", "direction": [0, 0, 0], "irradiance": [1, 1, 1]})"),
                "s.json:4:47: lights[0].direction must be non-zero, got [0,0,0]");
   EXPECT_ERROR(lights(R"({"type": "distant", "direction": [1e-30, 0, 0], "irradiance": [1, 1, 1]})"),
                "s.json:4:47: lights[0].direction is a direction that cannot be normalised in float");
-  EXPECT_ERROR(lights(R"({"type": "distant", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "position": [0, 1, 0]})"),
-               "lights[0].position unknown key");
+  EXPECT_ERROR(
+      lights(R"({"type": "distant", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "position": [0, 1, 0]})"),
+      "lights[0].position unknown key");
   const std::string spot = R"({"type": "spot", "intensity": [1, 1, 1], "direction": [0, -1, 0], )";
   EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 0})"), "s.json:4:98: lights[0].cone_angle_deg must be in (0, 180]");
   EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 180.5})"), "lights[0].cone_angle_deg must be in (0, 180]");
@@ -820,7 +834,8 @@ TEST_F(SceneLoader, DeltaLightsRefuseBadValuesByName) {
   EXPECT_ERROR(lights(spot + R"("cone_angle_deg": 20, "falloff_start_deg": 25})"),
                "lights[0].falloff_start_deg must be in [0, cone_angle_deg] = [0, 20], got 25");
   EXPECT_ERROR(lights(spot + R"("look_at": [0, 0, 0]})"), "lights[0].look_at cannot be combined with direction");
-  EXPECT_ERROR(lights(R"({"type": "spot", "intensity": [1, 1, 1]})"), "s.json:4:14: lights[0] needs \"direction\" or \"look_at\"");
+  EXPECT_ERROR(lights(R"({"type": "spot", "intensity": [1, 1, 1]})"),
+               "s.json:4:14: lights[0] needs \"direction\" or \"look_at\"");
   EXPECT_ERROR(lights(R"({"type": "spot", "intensity": [1, 1, 1], "position": [1, 2, 3], "look_at": [1, 2, 3]})"),
                "lights[0].look_at must differ from the position");
   EXPECT_ERROR(lights(spot + R"("transform": {"translate": [3e38, 0, 0]}, "position": [3e38, 0, 0]})"),
@@ -885,12 +900,14 @@ TEST_F(SceneLoader, MissingObjFile) {
 }
 
 TEST_F(SceneLoader, ObjFaceIndexOutOfRange) {
-  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"bad-index.obj\"}]\n}\n", {"bad-index.obj"});
+  fs::path f =
+      scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"bad-index.obj\"}]\n}\n", {"bad-index.obj"});
   EXPECT_ERROR(f, "bad-index.obj:7: face index 9 out of range (4 vertices)");
 }
 
 TEST_F(SceneLoader, ObjMissingMtl) {
-  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"missing-mtl.obj\"}]\n}\n", {"missing-mtl.obj"});
+  fs::path f =
+      scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"missing-mtl.obj\"}]\n}\n", {"missing-mtl.obj"});
   EXPECT_ERROR(f, "missing-mtl.obj:2: mtllib cannot open \"no-such.mtl\": No such file or directory");
 }
 
@@ -932,8 +949,7 @@ TEST_F(SceneLoader, ObjFacesWithoutMaterialGetDefaultDiffuse) {
 TEST_F(SceneLoader, ObjRelativeIndicesAndNormals) {
   // A quad through negative (relative) indices with per-corner normals: triangulated, normals kept.
   fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
-  write(f.parent_path() / "q.obj",
-        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1 -1//-1\n");
+  write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf -4//-1 -3//-1 -2//-1 -1//-1\n");
   SceneDesc s = load_scene(f);
   ASSERT_EQ(s.shapes.size(), 1u);
   const MeshData& m = s.shapes[0].mesh;
@@ -956,8 +972,9 @@ TEST_F(SceneLoader, ObjMalformedFaceVertex) {
 }
 
 TEST_F(SceneLoader, ByteOrderMarkIgnored) {
-  fs::path f = scene("\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
-                     " \"film\": {\"width\": 8, \"height\": 0}}");
+  fs::path f = scene(
+      "\xEF\xBB\xBF{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},\n"
+      " \"film\": {\"width\": 8, \"height\": 0}}");
   EXPECT_ERROR(f, "s.json:2:33: film.height must be an integer in [1, 65536], got 0");
 }
 
@@ -1060,7 +1077,9 @@ TEST_F(SceneLoader, EmptyObjIsNamedAndCalledEmpty) {
 
 TEST_F(SceneLoader, BinaryObjIsNamedAndCalledNotText) {
   fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"b.obj\"}]\n}\n");
-  write(f.parent_path() / "b.obj", std::string("v 0 0 0\n\x7F" "ELF\x02\x01\x01\0\0\0", 16));
+  write(f.parent_path() / "b.obj", std::string("v 0 0 0\n\x7F"
+                                               "ELF\x02\x01\x01\0\0\0",
+                                               16));
   std::string m = load_error(f);
   EXPECT_NE(m.find("b.obj:2: not a text file (control byte 0x7F)"), std::string::npos) << m;
 }
@@ -1217,8 +1236,9 @@ namespace {
 
 // A scene whose camera (line 2) or film (line 3) object ends with `extra`.
 std::string projection_scene(const std::string& camera_extra, const std::string& film_extra) {
-  return "{\n  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]" + (camera_extra.empty() ? "" : ", " + camera_extra) +
-         "},\n  \"film\": {\"width\": 8, \"height\": 8" + (film_extra.empty() ? "" : ", " + film_extra) + "}\n}";
+  return "{\n  \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]" +
+         (camera_extra.empty() ? "" : ", " + camera_extra) + "},\n  \"film\": {\"width\": 8, \"height\": 8" +
+         (film_extra.empty() ? "" : ", " + film_extra) + "}\n}";
 }
 
 }  // namespace
@@ -1240,7 +1260,8 @@ TEST_F(SceneLoader, ProjectionDefaultsArePerspectiveWithoutWindows) {
   EXPECT_FALSE(s.camera.has_screen_window);
   EXPECT_FLOAT_EQ(s.camera.ortho_height, 2);
   EXPECT_EQ(s.film.crop_window, (std::array<float, 4>{0, 1, 0, 1}));
-  s = load_scene(scene(projection_scene("\"type\": \"orthographic\", \"screen_window\": [-1, 3, 0, 2]", "\"crop_window\": [0, 0.25, 0.5, 1]")));
+  s = load_scene(scene(projection_scene("\"type\": \"orthographic\", \"screen_window\": [-1, 3, 0, 2]",
+                                        "\"crop_window\": [0, 0.25, 0.5, 1]")));
   EXPECT_EQ(s.camera.projection, CameraDesc::Projection::Orthographic);
   EXPECT_EQ(s.camera.screen_window, (std::array<float, 4>{-1, 3, 0, 2}));
   EXPECT_EQ(s.film.crop_window, (std::array<float, 4>{0, 0.25f, 0.5f, 1}));
@@ -1256,10 +1277,13 @@ TEST_F(SceneLoader, BadProjectionScreenOrCropWindow) {
       {"\"screen_window\": [-1, 1, -1]", "s.json:2:76: camera.screen_window must be [x0, x1, y0, y1], got [-1,1,-1]"},
       {"\"screen_window\": \"wide\"", "s.json:2:76: camera.screen_window must be [x0, x1, y0, y1], got \"wide\""},
       {"\"screen_window\": [1, -1, -1, 1]", "s.json:2:76: camera.screen_window must have x0 < x1, got [1,-1,-1,1]"},
-      {"\"screen_window\": [-1, 1, 0.5, 0.5]", "s.json:2:76: camera.screen_window must have y0 < y1, got [-1,1,0.5,0.5]"},
-      {"\"screen_window\": [-1, 1e999, -1, 1]", "s.json:2:81: camera.screen_window[1] must be a finite number, got 1e999"},
+      {"\"screen_window\": [-1, 1, 0.5, 0.5]",
+       "s.json:2:76: camera.screen_window must have y0 < y1, got [-1,1,0.5,0.5]"},
+      {"\"screen_window\": [-1, 1e999, -1, 1]",
+       "s.json:2:81: camera.screen_window[1] must be a finite number, got 1e999"},
       {"\"screen_window\": [-1, \"a\", -1, 1]", "s.json:2:81: camera.screen_window[1] must be a number"},
-      {"\"screen_window\": [-1, 1, -1, 2e6]", "s.json:2:76: camera.screen_window must have every bound within [-1e6, 1e6], got [-1,1,-1,2000000.0]"},
+      {"\"screen_window\": [-1, 1, -1, 2e6]",
+       "s.json:2:76: camera.screen_window must have every bound within [-1e6, 1e6], got [-1,1,-1,2000000.0]"},
   };
   for (const auto& [extra, message] : camera_cases) {
     write(f, projection_scene(extra, ""));
@@ -1269,9 +1293,12 @@ TEST_F(SceneLoader, BadProjectionScreenOrCropWindow) {
       {"\"crop_window\": [0, 1, 0]", "s.json:3:52: film.crop_window must be [x0, x1, y0, y1], got [0,1,0]"},
       {"\"crop_window\": [0.5, 0.2, 0, 1]", "s.json:3:52: film.crop_window must have x0 < x1, got [0.5,0.2,0,1]"},
       {"\"crop_window\": [0, 1, 0.7, 0.7]", "s.json:3:52: film.crop_window must have y0 < y1, got [0,1,0.7,0.7]"},
-      {"\"crop_window\": [-0.1, 1, 0, 1]", "s.json:3:52: film.crop_window must lie within [0, 1] (fractions of the film, y down), got [-0.1,1,0,1]"},
+      {"\"crop_window\": [-0.1, 1, 0, 1]",
+       "s.json:3:52: film.crop_window must lie within [0, 1] (fractions of the film, y down), got [-0.1,1,0,1]"},
       {"\"crop_window\": [0, 1.5, 0, 1]", "s.json:3:52: film.crop_window must lie within [0, 1]"},
-      {"\"crop_window\": [0.51, 0.6, 0, 1]", "s.json:3:52: film.crop_window covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8)), got [0.51,0.6,0,1]"},
+      {"\"crop_window\": [0.51, 0.6, 0, 1]",
+       "s.json:3:52: film.crop_window covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8)), "
+       "got [0.51,0.6,0,1]"},
       {"\"crop_window\": [0, 1, 0, 1e999]", "s.json:3:62: film.crop_window[3] must be a finite number, got 1e999"},
   };
   for (const auto& [extra, message] : film_cases) {
@@ -1296,7 +1323,8 @@ std::string with_prototype(const std::string& rest) {
 }  // namespace
 
 TEST_F(SceneLoader, PrototypesAndInstancesLoad) {
-  fs::path f = scene(with_prototype(R"(  "objects": [{"type": "instance", "prototype": "tree", "transform": {"translate": [5, 0, 0]}},
+  fs::path f = scene(
+      with_prototype(R"(  "objects": [{"type": "instance", "prototype": "tree", "transform": {"translate": [5, 0, 0]}},
               {"type": "sphere", "material": "grey", "radius": 0.5},
               {"type": "instance", "prototype": "tree",
                "motion": [{"time": 0}, {"time": 1, "translate": [0, 0, 1], "scale": [1, 2, 1]}]}]
@@ -1346,8 +1374,10 @@ TEST_F(SceneLoader, UnknownPrototypeIsRefusedNamingTheKnownOnes) {
 }
 
 TEST_F(SceneLoader, InstanceNeedsAPrototypeAndKnowsItsKeys) {
-  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\"}]\n}")), "s.json:7:15: objects[0] missing required key \"prototype\"");
-  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": \"tree\", \"material\": \"grey\"}]\n}")),
+  EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\"}]\n}")),
+               "s.json:7:15: objects[0] missing required key \"prototype\"");
+  EXPECT_ERROR(scene(with_prototype(
+                   "  \"objects\": [{\"type\": \"instance\", \"prototype\": \"tree\", \"material\": \"grey\"}]\n}")),
                "objects[0].material");
   EXPECT_ERROR(scene(with_prototype("  \"objects\": [{\"type\": \"instance\", \"prototype\": 3}]\n}")),
                "s.json:7:49: objects[0].prototype must be a string, got 3");
@@ -1358,9 +1388,11 @@ TEST_F(SceneLoader, EmptyPrototypeIsRefused) {
                "s.json:4:26: prototypes.tree must hold at least one object");
   EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"tree\": {}},\n  \"objects\": []\n}"),
                "s.json:4:26: prototypes.tree must be an array of objects, got {}");
-  EXPECT_ERROR(scene(kHead + "  \"prototypes\": [],\n  \"objects\": []\n}"), "s.json:4:17: prototypes must be an object");
-  EXPECT_ERROR(scene(kHead + "  \"prototypes\": {\"\": [{\"type\": \"sphere\", \"radius\": 1}]},\n  \"objects\": []\n}"),
-               "s.json:4:18: prototypes[\"\"] prototype name must not be empty");
+  EXPECT_ERROR(scene(kHead + "  \"prototypes\": [],\n  \"objects\": []\n}"),
+               "s.json:4:17: prototypes must be an object");
+  EXPECT_ERROR(
+      scene(kHead + "  \"prototypes\": {\"\": [{\"type\": \"sphere\", \"radius\": 1}]},\n  \"objects\": []\n}"),
+      "s.json:4:18: prototypes[\"\"] prototype name must not be empty");
 }
 
 TEST_F(SceneLoader, InstanceInsideAPrototypeIsRefused) {
@@ -1369,7 +1401,9 @@ TEST_F(SceneLoader, InstanceInsideAPrototypeIsRefused) {
                  "tree": [{"type": "sphere", "material": "grey", "radius": 1}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:5:38: prototypes.forest[0].type is not allowed inside a prototype (instances do not nest), got \"instance\"");
+  EXPECT_ERROR(f,
+               "s.json:5:38: prototypes.forest[0].type is not allowed inside a prototype (instances do not nest), got "
+               "\"instance\"");
 }
 
 TEST_F(SceneLoader, MotionInsideAPrototypeIsRefused) {
@@ -1377,7 +1411,8 @@ TEST_F(SceneLoader, MotionInsideAPrototypeIsRefused) {
   "prototypes": {"tree": [{"type": "sphere", "material": "grey", "radius": 1, "motion": [{"time": 0}]}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:5:79: prototypes.tree[0].motion is not allowed inside a prototype (give the instance a motion)");
+  EXPECT_ERROR(f,
+               "s.json:5:79: prototypes.tree[0].motion is not allowed inside a prototype (give the instance a motion)");
 }
 
 TEST_F(SceneLoader, EmitterInsideAPrototypeIsRefused) {
@@ -1385,13 +1420,17 @@ TEST_F(SceneLoader, EmitterInsideAPrototypeIsRefused) {
   "prototypes": {"tree": [{"type": "sphere", "material": "lamp", "radius": 1}]},
   "objects": []
 })");
-  EXPECT_ERROR(f, "s.json:5:58: prototypes.tree[0].material is an emitter; emitters cannot be inside a prototype (instanced area lights are not supported), got \"lamp\"");
+  EXPECT_ERROR(f,
+               "s.json:5:58: prototypes.tree[0].material is an emitter; emitters cannot be inside a prototype "
+               "(instanced area lights are not supported), got \"lamp\"");
   fs::path obj = scene(kHead + R"(  "prototypes": {"tree": [{"type": "obj", "file": "lamp.obj"}]},
   "objects": []
 })");
   write(obj.parent_path() / "lamp.obj", "mtllib lamp.mtl\nusemtl glow\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write(obj.parent_path() / "lamp.mtl", "newmtl glow\nKe 1 1 1\n");
-  EXPECT_ERROR(obj, "s.json:4:51: prototypes.tree[0].file \"lamp.obj\" has an emitting material (Ke) \"lamp/glow\"; emitters cannot be inside a prototype");
+  EXPECT_ERROR(obj,
+               "s.json:4:51: prototypes.tree[0].file \"lamp.obj\" has an emitting material (Ke) \"lamp/glow\"; "
+               "emitters cannot be inside a prototype");
 }
 
 TEST_F(SceneLoader, ExamplePrototypesAndInstances) {

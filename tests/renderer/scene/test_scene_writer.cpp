@@ -21,7 +21,8 @@ namespace {
 
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / ("pdrt_writer_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("pdrt_writer_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -71,20 +72,22 @@ TEST(SceneWriter, TheCompleteExampleRoundTripsToTheSameImage) {
 
 TEST(SceneWriter, AnImportedPbrtSceneRoundTripsToTheSameImage) {
   const fs::path dir = temp_dir();
-  std::ofstream(dir / "s.pbrt") << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
-                                   "Camera \"perspective\" \"float fov\" 40\n"
-                                   "WorldBegin\n"
-                                   "LightSource \"infinite\" \"rgb L\" [0.3 0.3 0.35]\n"
-                                   "LightSource \"spot\" \"point3 from\" [0 4 0] \"point3 to\" [0 0 0] \"rgb I\" [20 20 20]\n"
-                                   "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8\n"
-                                   "Material \"coateddiffuse\" \"texture reflectance\" \"checks\" \"float roughness\" 0.1\n"
-                                   "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3 3 0 -3 3 0 3 -3 0 3] \"integer indices\" [0 1 2 0 2 3]"
-                                   " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
-                                   "AttributeBegin\n"
-                                   "  Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" 0.05\n"
-                                   "  ActiveTransform EndTime\n  Translate 0.5 0 0\n  ActiveTransform All\n"
-                                   "  Translate 0 0.5 0\n  Shape \"sphere\" \"float radius\" 0.5\n"
-                                   "AttributeEnd\n";
+  std::ofstream(dir / "s.pbrt")
+      << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
+         "Camera \"perspective\" \"float fov\" 40\n"
+         "WorldBegin\n"
+         "LightSource \"infinite\" \"rgb L\" [0.3 0.3 0.35]\n"
+         "LightSource \"spot\" \"point3 from\" [0 4 0] \"point3 to\" [0 0 0] \"rgb I\" [20 20 20]\n"
+         "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8\n"
+         "Material \"coateddiffuse\" \"texture reflectance\" \"checks\" \"float roughness\" 0.1\n"
+         "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3 3 0 -3 3 0 3 -3 0 3] \"integer indices\" [0 1 2 0 2 3]"
+         " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
+         "AttributeBegin\n"
+         "  Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\" \"float roughness\" "
+         "0.05\n"
+         "  ActiveTransform EndTime\n  Translate 0.5 0 0\n  ActiveTransform All\n"
+         "  Translate 0 0.5 0\n  Shape \"sphere\" \"float radius\" 0.5\n"
+         "AttributeEnd\n";
   SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
   write_scene_json(s, dir / "s.json");
   EXPECT_TRUE(fs::exists(dir / "s.meshes" / "shape0.obj"));
@@ -97,20 +100,21 @@ TEST(SceneWriter, AnImportedPbrtSceneRoundTripsToTheSameImage) {
 // each prototype mesh once, however many instances place it.
 TEST(SceneWriter, PrototypesAndInstancesRoundTripWithEachMeshWrittenOnce) {
   const fs::path dir = temp_dir();
-  std::ofstream(dir / "s.pbrt") << "LookAt 0 2 -6  0 0.5 0  0 1 0\n"
-                                   "Camera \"perspective\" \"float fov\" 40\n"
-                                   "WorldBegin\n"
-                                   "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
-                                   "ObjectBegin \"tile\"\n"
-                                   "  Rotate 20 0 1 0\n"
-                                   "  Shape \"trianglemesh\" \"point3 P\" [-1 0 -1 1 0 -1 1 0 1 -1 0 1] \"integer indices\" [0 1 2 0 2 3]\n"
-                                   "  Translate 0 0.4 0\n"
-                                   "  Shape \"sphere\" \"float radius\" 0.4\n"
-                                   "ObjectEnd\n"
-                                   "AttributeBegin\n  Translate -1.2 0 0\n  ObjectInstance \"tile\"\nAttributeEnd\n"
-                                   "AttributeBegin\n  Translate 1.2 0 0\n  Scale 0.8 0.8 0.8\n  ObjectInstance \"tile\"\nAttributeEnd\n"
-                                   "AttributeBegin\n  ActiveTransform EndTime\n  Translate 0.4 0 0\n  ActiveTransform All\n"
-                                   "  Translate 0 0 2\n  ObjectInstance \"tile\"\nAttributeEnd\n";
+  std::ofstream(dir / "s.pbrt")
+      << "LookAt 0 2 -6  0 0.5 0  0 1 0\n"
+         "Camera \"perspective\" \"float fov\" 40\n"
+         "WorldBegin\n"
+         "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
+         "ObjectBegin \"tile\"\n"
+         "  Rotate 20 0 1 0\n"
+         "  Shape \"trianglemesh\" \"point3 P\" [-1 0 -1 1 0 -1 1 0 1 -1 0 1] \"integer indices\" [0 1 2 0 2 3]\n"
+         "  Translate 0 0.4 0\n"
+         "  Shape \"sphere\" \"float radius\" 0.4\n"
+         "ObjectEnd\n"
+         "AttributeBegin\n  Translate -1.2 0 0\n  ObjectInstance \"tile\"\nAttributeEnd\n"
+         "AttributeBegin\n  Translate 1.2 0 0\n  Scale 0.8 0.8 0.8\n  ObjectInstance \"tile\"\nAttributeEnd\n"
+         "AttributeBegin\n  ActiveTransform EndTime\n  Translate 0.4 0 0\n  ActiveTransform All\n"
+         "  Translate 0 0 2\n  ObjectInstance \"tile\"\nAttributeEnd\n";
   SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
   ASSERT_EQ(s.instances.size(), 3u);
   write_scene_json(s, dir / "s.json");
@@ -131,30 +135,35 @@ TEST(SceneWriter, PrototypesAndInstancesRoundTripWithEachMeshWrittenOnce) {
 // conductor of textured reflectance and roughness), scale, mix, invert and power textures.
 TEST(SceneWriter, MixThinDielectricAndCombinedTexturesRoundTripToTheSameImage) {
   const fs::path dir = temp_dir();
-  std::ofstream(dir / "s.pbrt") << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
-                                   "Camera \"perspective\" \"float fov\" 40\n"
-                                   "WorldBegin\n"
-                                   "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.55]\n"
-                                   "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8\n"
-                                   "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"checks\" \"float scale\" 0.5\n"
-                                   "Texture \"f0\" \"spectrum\" \"mix\" \"texture tex1\" \"half\" \"rgb tex2\" [0.9 0.6 0.2] \"float amount\" 0.25\n"
-                                   "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.01 \"float tex2\" 0.2 \"float uscale\" 4\n"
-                                   "MakeNamedMaterial \"sheet\" \"string type\" \"thindielectric\" \"float eta\" 1.4\n"
-                                   "MakeNamedMaterial \"metal\" \"string type\" \"conductor\" \"texture reflectance\" \"f0\" \"texture roughness\" \"r\"\n"
-                                   "MakeNamedMaterial \"paint\" \"string type\" \"diffuse\" \"texture reflectance\" \"checks\"\n"
-                                   "MakeNamedMaterial \"inner\" \"string type\" \"mix\" \"string materials\" [\"sheet\" \"metal\"] \"float amount\" 0.6\n"
-                                   "Material \"mix\" \"string materials\" [\"paint\" \"inner\"] \"texture amount\" \"r\"\n"
-                                   "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3 3 0 -3 3 0 3 -3 0 3] \"integer indices\" [0 1 2 0 2 3]"
-                                   " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
-                                   "NamedMaterial \"inner\"\n"
-                                   "Translate 0 0.5 0\nShape \"sphere\" \"float radius\" 0.5\n";
+  std::ofstream(dir / "s.pbrt")
+      << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
+         "Camera \"perspective\" \"float fov\" 40\n"
+         "WorldBegin\n"
+         "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.55]\n"
+         "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" 8 \"float vscale\" 8\n"
+         "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"checks\" \"float scale\" 0.5\n"
+         "Texture \"f0\" \"spectrum\" \"mix\" \"texture tex1\" \"half\" \"rgb tex2\" [0.9 0.6 0.2] \"float amount\" "
+         "0.25\n"
+         "Texture \"r\" \"float\" \"checkerboard\" \"float tex1\" 0.01 \"float tex2\" 0.2 \"float uscale\" 4\n"
+         "MakeNamedMaterial \"sheet\" \"string type\" \"thindielectric\" \"float eta\" 1.4\n"
+         "MakeNamedMaterial \"metal\" \"string type\" \"conductor\" \"texture reflectance\" \"f0\" \"texture "
+         "roughness\" \"r\"\n"
+         "MakeNamedMaterial \"paint\" \"string type\" \"diffuse\" \"texture reflectance\" \"checks\"\n"
+         "MakeNamedMaterial \"inner\" \"string type\" \"mix\" \"string materials\" [\"sheet\" \"metal\"] \"float "
+         "amount\" 0.6\n"
+         "Material \"mix\" \"string materials\" [\"paint\" \"inner\"] \"texture amount\" \"r\"\n"
+         "Shape \"trianglemesh\" \"point3 P\" [-3 0 -3 3 0 -3 3 0 3 -3 0 3] \"integer indices\" [0 1 2 0 2 3]"
+         " \"point2 uv\" [0 0 1 0 1 1 0 1]\n"
+         "NamedMaterial \"inner\"\n"
+         "Translate 0 0.5 0\nShape \"sphere\" \"float radius\" 0.5\n";
   SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
   write_scene_json(s, dir / "s.json");
   SceneDesc back = load_scene(dir / "s.json");
   ASSERT_EQ(back.materials.size(), s.materials.size());
   ASSERT_EQ(back.textures.size(), s.textures.size());
   int mixes = 0, thin = 0;
-  for (const Material& m : back.materials) mixes += m.type == MaterialType::Mix, thin += m.type == MaterialType::ThinDielectric;
+  for (const Material& m : back.materials)
+    mixes += m.type == MaterialType::Mix, thin += m.type == MaterialType::ThinDielectric;
   EXPECT_EQ(mixes, 2);
   EXPECT_EQ(thin, 1);
   EXPECT_LT(image_difference(s, back), 1e-3);
@@ -163,7 +172,8 @@ TEST(SceneWriter, MixThinDielectricAndCombinedTexturesRoundTripToTheSameImage) {
 
 TEST(SceneWriter, ConvertRefusesAnOutputThatIsNotJson) {
   const fs::path dir = temp_dir();
-  CliResult r = run_pdrt("convert '" + (fs::path(PDRT_EXAMPLES_DIR) / "all-features.json").string() + "' -o '" + (dir / "x.obj").string() + "'");
+  CliResult r = run_pdrt("convert '" + (fs::path(PDRT_EXAMPLES_DIR) / "all-features.json").string() + "' -o '" +
+                         (dir / "x.obj").string() + "'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--out: the converted scene is JSON"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "x.obj"));

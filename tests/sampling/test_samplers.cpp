@@ -5,6 +5,8 @@
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/core/rng.h"
 
+#include "tests/support/sampler_points.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -251,16 +253,6 @@ TEST(PoissonSampler, TimeSamplesIntegrateAStepFarBetterThanRandomAtEveryCount) {
 namespace pdrt {
 namespace {
 
-PointSet stream_points(const Sampler& s, int px, int py, Family f, int bounce, int n) {
-  PointSet ps;
-  for (int i = 0; i < n; ++i) {
-    const Vec2 v = s.get_2d(px, py, i, f, bounce);
-    ps.coords.push_back(v[0]);
-    ps.coords.push_back(v[1]);
-  }
-  return ps;
-}
-
 // poisson randomises by symmetries and digital (xor) shifts, which map elementary intervals
 // onto elementary intervals: every power-of-two prefix of every stream a render reads stays a
 // (0,m,2)-net, and every 2^k prefix of a time stream one point per 1/2^k stratum. (A
@@ -273,7 +265,7 @@ TEST(PoissonSampler, EveryStreamKeepsItsStrata) {
     for (auto [px, py] : {std::pair{0, 0}, std::pair{-7, 123}, std::pair{40000, 3}})
       for (auto [f, bounce] : {std::pair{Family::Pixel, 0}, std::pair{Family::Lens, 0}, std::pair{Family::Light, 5},
                                std::pair{Family::Gloss, 15}}) {
-        const PointSet ps = stream_points(*smp, px, py, f, bounce, 1024);
+        const PointSet ps = test::stream_points(*smp, {{px, py}}, 1024, f, bounce);
         for (std::size_t n = 1; n <= 1024; n *= 2)
           ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " pixel " << px << "," << py << " n " << n;
       }

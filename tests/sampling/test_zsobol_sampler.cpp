@@ -4,6 +4,7 @@
 
 #include "sampling/core/errors.h"
 #include "sampling/measures/elementary_intervals.h"
+#include "tests/support/sampler_points.h"
 
 #include <gtest/gtest.h>
 
@@ -16,15 +17,7 @@ namespace pdrt {
 namespace {
 
 PointSet points_of(const Sampler& s, const std::vector<std::array<int, 2>>& pixels, int n, Family f, int bounce) {
-  PointSet p;
-  p.dim = 2;
-  for (auto [x, y] : pixels)
-    for (int i = 0; i < n; ++i) {
-      const Vec2 v = s.get_2d(x, y, i, f, bounce);
-      p.coords.push_back(v[0]);
-      p.coords.push_back(v[1]);
-    }
-  return p;
+  return test::stream_points(s, pixels, n, f, bounce);
 }
 
 TEST(ZSobolSampler, EveryPixelsBlockIsANet) {

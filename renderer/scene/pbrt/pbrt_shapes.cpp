@@ -71,6 +71,18 @@ void check_indices(PbrtBuild& b, const PbrtDirective& d, const std::vector<int64
              "index " + std::to_string(i) + " is out of range [0, " + std::to_string(points - 1) + "]");
 }
 
+// "N" and "uv", when given, have one value per point of P.
+void check_normal_count(PbrtBuild& b, const PbrtDirective& d, const MeshInput& m) {
+  if (!m.N.empty() && m.N.size() != m.P.size())
+    b.fail(d.params.find("N") ? d.params.find("N")->at : d.at,
+           "\"N\" needs one normal per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.N.size()));
+}
+void check_uv_count(PbrtBuild& b, const PbrtDirective& d, const MeshInput& m) {
+  if (!m.uvs.empty() && m.uvs.size() != m.P.size())
+    b.fail(d.params.find("uv") ? d.params.find("uv")->at : d.at,
+           "\"uv\" needs one per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.uvs.size()));
+}
+
 // Shape "bilinearmesh": vertices p00 p10 p01 p11 per patch, p(u, v) and uv(u, v) bilinear
 // in the patch's (u, v) (uv defaults to (u, v) itself, as pbrt-v4's BilinearPatch). Each patch
 // becomes an N x N grid of triangle pairs, N chosen so that position (relative to the patch's
@@ -83,12 +95,8 @@ void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput
   if (idx.empty() && m.P.size() == 4) idx = {0, 1, 2, 3};
   if (idx.size() % 4) b.fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
   check_indices(b, d, idx, m.P.size());
-  if (!m.uvs.empty() && m.uvs.size() != m.P.size())
-    b.fail(ps.find("uv")->at,
-           "\"uv\" needs one per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.uvs.size()));
-  if (!m.N.empty() && m.N.size() != m.P.size())
-    b.fail(ps.find("N")->at,
-           "\"N\" needs one normal per point (" + std::to_string(m.P.size()) + "), got " + std::to_string(m.N.size()));
+  check_normal_count(b, d, m);
+  check_uv_count(b, d, m);
   constexpr int kMaxGrid = 64;
   constexpr double kTolerance = 1e-4;
   auto grid_for = [&](double twist, double tol) {
@@ -200,14 +208,10 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
   if (t == "loopsubdiv") subdivide(b, d, m);
   const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
-  if (!m.N.empty() && m.N.size() != P.size())
-    b.fail(n_at,
-           "\"N\" needs one normal per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.N.size()));
+  check_normal_count(b, d, m);
   for (Vec3& n : m.N)
     if (!(length(n) > 0) || !is_finite(n)) b.fail(n_at, "\"N\" holds a zero or non-finite normal");
-  if (!m.uvs.empty() && m.uvs.size() != P.size())
-    b.fail(ps.find("uv") ? ps.find("uv")->at : d.at,
-           "\"uv\" needs one per point (" + std::to_string(P.size()) + "), got " + std::to_string(m.uvs.size()));
+  check_uv_count(b, d, m);
   for (const char* k : {"S", "faceIndices"})
     if (const PbrtParam* p = ps.find(k)) p->used = true;
   s.mesh.positions = std::move(P);

@@ -3,6 +3,7 @@
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
 #include "sampling/core/errors.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pdrt {
@@ -14,10 +15,30 @@ void PbrtBuild::report_unused(const std::vector<PbrtParam>& params) {
     if (!p.used) note(p.at, p.quoted() + " is not used by pdrt (ignored)");
 }
 
-void PbrtBuild::note(const PbrtLocation& at, const std::string& what) {
+void PbrtBuild::note(const PbrtLocation& at, const std::string& what, const std::string& kind) {
   std::string line = at.str() + ": " + what;
   if (strict) throw InputError(line + " [--strict]");
-  out.report.push_back(line);
+  auto [it, first] = note_kinds.try_emplace(kind.empty() ? what : kind, NoteKind{out.report.size(), 0, at});
+  if (first) {
+    out.report.push_back(line);
+  } else {
+    ++it->second.more;
+    it->second.last = at;
+  }
+}
+
+void PbrtBuild::finish_report() {
+  for (const auto& [kind, k] : note_kinds)
+    if (k.more > 0)
+      out.report[k.line] += " (and " + std::to_string(k.more) + " more like it, the last at " + k.last.str() + ")";
+}
+
+void PbrtBuild::note_rgb(const PbrtLocation& at, const std::string& what) {
+  note(at,
+       what +
+           ": pdrt multiplies colours per RGB channel where pbrt-v4 works per wavelength, so light it "
+           "reflects differs in colour (by a few % for saturated colours; grey is exact)",
+       "rgb");
 }
 
 void PbrtBuild::place(const PbrtLocation& at, Affine* transform, std::vector<MotionKey>* motion) {
@@ -45,18 +66,26 @@ Vec3 PbrtBuild::color(const PbrtParams& ps, const std::string& name, Vec3 fallba
   if (!p) return fallback;
   const std::string type = pbrt_canonical_type(p->type);
   p->used = true;
+  // Emission of any colour renders as pbrt-v4's on grey surfaces; a colour that reflects does not.
+  auto reflected = [&](Vec3 c) {
+    const float hi = std::max({c.x, c.y, c.z}), lo = std::min({c.x, c.y, c.z});
+    if (!emission && hi - lo > 1e-3f * hi)
+      note_rgb(p->at, p->quoted() + " (" + pbrt_number(c.x) + ", " + pbrt_number(c.y) + ", " + pbrt_number(c.z) +
+                          " in linear sRGB) is not grey");
+    return c;
+  };
   if (type == "rgb") {
     if (p->numbers.size() != 3) fail(p->at, p->quoted() + " needs 3 values, got " + std::to_string(p->numbers.size()));
     Vec3 c{float(p->numbers[0]), float(p->numbers[1]), float(p->numbers[2])};
     for (int i = 0; i < 3; ++i)
       if (!(c[i] >= 0))
         fail(p->at, "\"" + p->type + " " + name + "\" must have components >= 0, got " + pbrt_number(c[i]));
-    return c;
+    return reflected(c);
   }
   if (type == "blackbody") {
     if (p->numbers.size() != 1 || !(p->numbers[0] > 0))
       fail(p->at, "\"blackbody " + name + "\" takes one temperature > 0 (kelvin)");
-    return blackbody_rgb(p->numbers[0]);
+    return reflected(blackbody_rgb(p->numbers[0]));
   }
   if (type == "spectrum") {
     if (!p->strings.empty()) {
@@ -67,7 +96,7 @@ Vec3 PbrtBuild::color(const PbrtParams& ps, const std::string& name, Vec3 fallba
     }
     if (p->numbers.size() < 2 || p->numbers.size() % 2)
       fail(p->at, "\"spectrum " + name + "\" needs (wavelength, value) pairs");
-    return sampled_spectrum_to_rgb(p->numbers, emission);
+    return reflected(sampled_spectrum_to_rgb(p->numbers, emission));
   }
   if (type == "float" && p->numbers.size() == 1) return Vec3(float(p->numbers[0]));
   if (type == "texture") {

@@ -41,14 +41,25 @@ struct PbrtBuild {
   PbrtGraphicsState gs;
   PbrtCameraState camera;
   std::optional<PbrtLocation> last;  // the latest directive
+  struct NoteKind {
+    std::size_t line;  // index into out.report
+    int more = 0;
+    PbrtLocation last;
+  };
+  std::map<std::string, NoteKind> note_kinds;
   int default_material = -1;
   std::vector<long long> texture_cost;             // per scene texture: texture_node_cost
   std::map<std::string, int> textures;             // "float:name" / "spectrum:name" -> index, -1 unsupported
   std::vector<TextureBinding>* bind_to = nullptr;  // where color() binds a texture parameter
   MaterialParam bind_param = MaterialParam::Albedo;
 
-  // ---- reporting: "file:line:col: what", an error under --strict
-  void note(const PbrtLocation& at, const std::string& what);
+  // ---- reporting: "file:line:col: what", an error under --strict. One line per kind (the
+  // message itself unless `kind` names a family of messages); later ones of a kind are counted
+  // on its first line by finish_report.
+  void note(const PbrtLocation& at, const std::string& what, const std::string& kind = "");
+  void finish_report();
+  // A colour pdrt multiplies per RGB channel where pbrt-v4 works per wavelength (reported).
+  void note_rgb(const PbrtLocation& at, const std::string& what);
   void report_unused(const std::vector<PbrtParam>& params);
   [[noreturn]] static void fail(const PbrtLocation& at, const std::string& what);
 

@@ -76,16 +76,22 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
 }
 
 // A conductor's eta or k: rgb, or pbrt-v4's named metal spectra for the metals pdrt has.
-Vec3 metal_param(PbrtBuild& b, const PbrtParams& ps, const std::string& name, bool eta) {
+// The metals' spectra become RGB values (reported: pbrt-v4's Fresnel term is per wavelength).
+Vec3 metal_param(PbrtBuild& b, const PbrtLocation& at, const PbrtParams& ps, const std::string& name, bool eta) {
   const PbrtParam* p = ps.find(name);
   const NamedMetal* cu = find_named_metal("Cu");  // pbrt-v4's default conductor is copper
-  if (!p) return eta ? cu->eta : cu->k;
+  if (!p) {
+    b.note_rgb(at, "the conductor's default \"" + name + "\" (pbrt-v4's copper spectrum) as three RGB values");
+    return eta ? cu->eta : cu->k;
+  }
   p->used = true;
   if (pbrt_canonical_type(p->type) == "spectrum" && !p->strings.empty()) {
     const std::string& s = p->strings[0];
     for (const char* metal : {"Au", "Ag", "Cu", "Al"})
-      if (s == std::string("metal-") + metal + (eta ? "-eta" : "-k"))
+      if (s == std::string("metal-") + metal + (eta ? "-eta" : "-k")) {
+        b.note_rgb(p->at, "named spectrum \"" + s + "\" as three RGB values");
         return eta ? find_named_metal(metal)->eta : find_named_metal(metal)->k;
+      }
     b.note(p->at, "named spectrum \"" + s + "\" is not supported (copper used)");
     return eta ? cu->eta : cu->k;
   }
@@ -153,8 +159,8 @@ int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, cons
       b.bind_to = nullptr;
       conductor_from_reflectance(r, &m);
     } else {
-      m.eta = metal_param(b, ps, pre + "eta", true);
-      m.k = metal_param(b, ps, pre + "k", false);
+      m.eta = metal_param(b, d.at, ps, pre + "eta", true);
+      m.k = metal_param(b, d.at, ps, pre + "k", false);
     }
   } else if (type == "coateddiffuse") {
     // pbrt-v4's random-walk layers as pdrt's analytic coat: the same base reflectance, coat

@@ -30,6 +30,7 @@ class Builder {
     finish_pbrt_camera(b_);
     if (!b_.gs.stack.empty()) b_.note(b_.gs.stack.back().first, "AttributeBegin is never closed (ignored)");
     drop_empty_prototypes();
+    b_.finish_report();
     const SceneDesc& s = b_.out.scene;
     if (s.shapes.empty() && s.instances.empty() && s.delta_lights.empty() && is_black(s.environment.radiance) &&
         !s.environment.has_map())

@@ -90,7 +90,6 @@ void check_uv_count(PbrtBuild& b, const PbrtDirective& d, const MeshInput& m) {
 // from its linear interpolation on a grid of step 1/N by at most |t| / (4 N^2). Patches that
 // are parallelograms in position and uv are exact at N = 1 (two triangles).
 void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput& m) {
-  const PbrtParams& ps = d.params;
   std::vector<int64_t>& idx = m.idx;
   if (idx.empty() && m.P.size() == 4) idx = {0, 1, 2, 3};
   if (idx.size() % 4) b.fail(d.at, "\"integer indices\" of a bilinearmesh needs a multiple of 4 values");
@@ -283,6 +282,19 @@ double emitter_area(PbrtBuild& b, const PbrtDirective& d, const ShapeDesc& s) {
   return n ? sum / double(n) : 0;
 }
 
+// pbrt-v4's area light shapes also reflect with their material; pdrt's emitters only emit.
+void note_emitter_material(PbrtBuild& b, const PbrtDirective& d) {
+  if (b.gs.cur.interface) return;  // no surface
+  const int i = b.gs.cur.material;
+  const Material* m = i >= 0 ? &b.out.scene.materials[size_t(i)] : nullptr;
+  if (m && m->type == MaterialType::Diffuse && is_black(m->albedo) && m->textures.empty()) return;
+  b.note(d.at,
+         "an area light's shape only emits in pdrt; in pbrt-v4 its material (" +
+             (m ? "\"" + m->name + "\"" : std::string("the default diffuse 0.5")) +
+             ") also reflects the scene's light, so pbrt-v4's emitter is brighter by that",
+         "emitter material");
+}
+
 // The current area light as an emitter material of its own, else the current material.
 void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
   const PbrtAttributes& cur = b.gs.cur;
@@ -298,6 +310,7 @@ void attach_material(PbrtBuild& b, const PbrtDirective& d, ShapeDesc& s) {
       m.radiance = k > 0 ? m.radiance * float(*cur.area->power / k) : Vec3(0.0f);
     }
     m.two_sided = cur.area->two_sided;
+    note_emitter_material(b, d);
     b.out.scene.materials.push_back(m);
     s.material = int(b.out.scene.materials.size()) - 1;
   } else {

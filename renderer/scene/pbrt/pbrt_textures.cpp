@@ -126,6 +126,8 @@ void translate_pbrt_texture(PbrtBuild& b, const PbrtDirective& d) {
     t.color1 = b.texture_input(ps, "tex2", 0, kind);
   } else if (cls == "imagemap") {
     image_texture(b, d, t);
+    if (kind == "spectrum")
+      b.note_rgb(d.at, "spectrum image texture \"" + t.name + "\" where its colours are not grey");
   } else {
     b.note(d.at, "Texture class \"" + cls + "\" is not supported (materials using it get their default value)");
     supported = false;

@@ -216,7 +216,15 @@ TEST(PbrtCorpus, EquivalentScenesRenderTheImageOfTheirJsonTwin) {
   ASSERT_GE(all.size(), 3u);
   for (const fs::path& f : all) {
     SCOPED_TRACE(f.filename().string());
-    const SceneDesc p = load_scene(f, true), j = load_scene(fs::path(f).replace_extension(".json"));
+    // pbrt-v4 differs from both twins only where pdrt renders in RGB and emitters only emit:
+    // nothing else may be reported.
+    const PbrtImport im = load_pbrt_scene(f, false);
+    for (const std::string& line : im.report)
+      EXPECT_TRUE(line.find("per wavelength") != std::string::npos || line.find("only emits") != std::string::npos)
+          << line;
+    SceneDesc p = im.scene;
+    p.file = f;
+    const SceneDesc j = load_scene(fs::path(f).replace_extension(".json"));
     const Image a = test::render_quietly(p).image, b = test::render_quietly(j).image;
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);

@@ -38,8 +38,10 @@ bool usable(const LayerSample& s) { return !is_black(s.f) && s.pdf > 0 && s.wi.z
 
 }  // namespace
 
-LayeredBxdf::LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers)
-    : top_(top),
+LayeredBxdf::LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers,
+                         ExitMis exit_mis)
+    : exit_mis_(exit_mis),
+      top_(top),
       bottom_(bottom),
       thickness_(std::max(layers.thickness, FLT_MIN)),
       albedo_(clamp01(layers.albedo)),
@@ -59,6 +61,12 @@ LayeredBxdf LayeredBxdf::coated_conductor(const Material& m) {
   const float eta = m.ior > 0 ? m.ior : 1.0f;
   const LayerBase base = LayerBase::conductor(m.eta / eta, m.k / eta, m.base_roughness * m.base_roughness);
   return LayeredBxdf(CoatInterface(eta, m.roughness * m.roughness), base, m.layers);
+}
+
+float LayeredBxdf::exit_mis_pdf(const Vec3& w, const Vec3& wi) const {
+  // pbrt-v4 weighs with the pdf of wi given the inner direction (outside measure); the
+  // virtual light path samples the inner direction given wi (inside measure).
+  return exit_mis_ == ExitMis::Pbrt ? top_.pdf(-w, wi, kLayerTransmit) : top_.pdf(wi, -w, kLayerTransmit);
 }
 
 float LayeredBxdf::tr(float dz, const Vec3& w) const {
@@ -116,7 +124,7 @@ Vec3 LayeredBxdf::walk_eval(const Vec3& wi, const LayerSample& wos, const LayerS
         if (w.z > 0 && !top_.specular()) {
           const float fexit = top_.f(-w, wi, Transport::Radiance);
           if (fexit > 0) {
-            float exit_pdf = top_.pdf(-w, wi, kLayerTransmit);
+            float exit_pdf = exit_mis_pdf(w, wi);
             f += beta * (tr(zp - exit_z, w) * fexit * power_heuristic(ppdf, exit_pdf));
           }
         }
@@ -145,7 +153,7 @@ Vec3 LayeredBxdf::walk_eval(const Vec3& wi, const LayerSample& wos, const LayerS
       // The base's sample leaving through the top toward wi.
       const float fexit = top_.f(-w, wi, Transport::Radiance);
       if (fexit > 0) {
-        float wt = bottom_.specular() ? 1.0f : power_heuristic(bs.pdf, top_.pdf(-w, wi, kLayerTransmit));
+        float wt = bottom_.specular() ? 1.0f : power_heuristic(bs.pdf, exit_mis_pdf(w, wi));
         f += beta * (tr(thickness_, bs.wi) * fexit * wt);
       }
     }

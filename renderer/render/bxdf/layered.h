@@ -37,7 +37,18 @@ class LayeredBxdf {
   static constexpr bool kDelta = false;  // delta() decides at run time
   static constexpr bool kKeyed = true;   // eval, pdf and sample take the random-walk key
   LayeredBxdf() = default;
-  LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers);
+  // How f() weighs a walk's direction leaving through the top against the virtual light path
+  // (tests/renderer/render/test_layered_bxdf.cpp measures both):
+  //   Pbrt        as pbrt-v4 (bxdfs.h): with the top's pdf of wi given the inner direction, a
+  //               density over outside directions where the light path's is over inside ones,
+  //               so the two weights need not sum to one; f() of a rough coat comes out above
+  //               Sample_f()'s mean (pbrt-v4 issue #187: "f() and PDF() ... different result
+  //               than using Sample() directly"). The default: pbrt-v4's images.
+  //   Consistent  with the light path's own density of that inner direction: f() and
+  //               Sample_f() then agree.
+  enum class ExitMis { Pbrt, Consistent };
+  LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers,
+              ExitMis exit_mis = ExitMis::Pbrt);
   // coated_diffuse with "model": "layered", and coated_conductor, as pbrt-v4's materials.cpp
   // builds them (the conductor's eta and k relative to the coat: divided by its index).
   static LayeredBxdf coated_diffuse(const Material& m);
@@ -53,7 +64,10 @@ class LayeredBxdf {
  private:
   Vec3 walk_eval(const Vec3& wi, const LayerSample& wos, const LayerSample& wis, Rng& rng) const;
   bool walk_sample(const LayerSample& entered, Rng& rng, BsdfSample* out) const;
-  float tr(float dz, const Vec3& w) const;  // transmittance of a straight segment of height dz
+  float tr(float dz, const Vec3& w) const;
+  float exit_mis_pdf(const Vec3& w, const Vec3& wi) const;  // w: the inner direction toward the top
+
+  ExitMis exit_mis_ = ExitMis::Pbrt;  // transmittance of a straight segment of height dz
 
   CoatInterface top_;
   LayerBase bottom_ = LayerBase::diffuse(Vec3(0.0f));

@@ -43,6 +43,9 @@ struct CoatLayers {
   float g = 0.0f;           // Henyey-Greenstein asymmetry of the medium's phase function
   int max_depth = 10;       // events of one random walk
   int samples = 1;          // random walks per evaluation
+  // f()'s exit weighted consistently (LayeredBxdf::ExitMis::Consistent) instead of as pbrt-v4
+  // does; for tests that measure the difference, not in the scene format.
+  bool consistent_exit = false;
 };
 
 struct Material {

@@ -40,7 +40,7 @@ bool usable(const LayerSample& s) { return !is_black(s.f) && s.pdf > 0 && s.wi.z
 
 LayeredBxdf::LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers,
                          ExitMis exit_mis)
-    : exit_mis_(exit_mis),
+    : exit_mis_(layers.consistent_exit ? ExitMis::Consistent : exit_mis),
       top_(top),
       bottom_(bottom),
       thickness_(std::max(layers.thickness, FLT_MIN)),

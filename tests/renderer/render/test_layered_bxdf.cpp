@@ -321,7 +321,9 @@ TEST(LayeredBxdf, WhiteFurnaceMatchesAnAnalogSimulationOfTheSlab) {
 
 // (b) sample() against f(), bin by bin: the mean of weight x [wi in bin] and the integral of
 // f cos over the bin (cosine-weighted directions) agree within their standard errors; a
-// chi-square over 8 x 8 (cos theta, phi) bins stays below dof + 5 sqrt(2 dof).
+// chi-square over 8 x 8 (cos theta, phi) bins stays below dof + 5 sqrt(2 dof). With f()'s exit
+// weighted consistently; pbrt-v4's weighting gives 714 (coated diffuse, pbrt roughness 0.15)
+// and 263 (coated gold, 0.5), its f() being brighter than its Sample_f().
 TEST(LayeredBxdf, SampledWeightsMatchEvalBinByBin) {
   constexpr int kC = 8, kP = 8, kBins = kC * kP;
   auto bin = [&](const Vec3& w) {
@@ -330,7 +332,7 @@ TEST(LayeredBxdf, SampledWeightsMatchEvalBinByBin) {
     return std::clamp(int(w.z * kC), 0, kC - 1) * kP + std::clamp(int(phi / (2 * M_PI) * kP), 0, kP - 1);
   };
   for (const Material& m : {coated_diffuse(0.15f, Vec3(0.6f)), coated_gold(0.5f), coated_diffuse(0.0f, Vec3(0.8f))}) {
-    Bsdf bsdf(m);
+    const LayeredBxdf bsdf = consistent_lobe(m);
     const Vec3 wo = at_mu(0.5);
     const int n = 300000;
     std::vector<double> a(kBins, 0), a2(kBins, 0), b(kBins, 0), b2(kBins, 0);
@@ -338,7 +340,7 @@ TEST(LayeredBxdf, SampledWeightsMatchEvalBinByBin) {
     for (int i = 0; i < n; ++i) {
       BsdfSample s;
       float u1 = uniform_float(rng), u2 = uniform_float(rng), uc = uniform_float(rng);
-      if (bsdf.sample(wo, u1, u2, uc, &s, uint64_t(i)) && !s.delta) {
+      if (bsdf.sample(wo, u1, u2, uc, uint64_t(i), &s) && !s.delta) {
         int j = bin(s.wi);
         a[j] += s.weight[1], a2[j] += double(s.weight[1]) * s.weight[1];
       }
@@ -390,13 +392,15 @@ TEST(LayeredBxdf, PdfIsPbrtsMixtureWithAUniformLobe) {
 }
 
 // (c) Reciprocity in expectation: the mean of f(wo, wi) over 40000 keys equals that of
-// f(wi, wo) within 4 standard errors and 1 %; and no case reflects more than it receives.
+// f(wi, wo) within 4 standard errors and 1 % (with f()'s exit weighted consistently; pbrt-v4's
+// weighting breaks it by up to 6 % at pbrt roughness 0.15); and no case reflects more than it
+// receives.
 TEST(LayeredBxdf, IsReciprocalAndConservesEnergyOnAverage) {
   const Vec3 pairs[][2] = {{at_mu(0.3, 0.2), at_mu(0.8, 2.0)}, {at_mu(0.9, 1.0), at_mu(0.5, 4.0)},
                            {at_mu(0.4, 0.0), at_mu(0.45, 3.0)}};
   for (const Material& m : {coated_diffuse(0.15f, Vec3(0.2f, 0.5f, 0.8f)), coated_diffuse(0.5f, Vec3(0.9f)),
                             coated_gold(0.15f), coated_diffuse(0.0f, Vec3(0.7f))}) {
-    Bsdf bsdf(m);
+    const LayeredBxdf bsdf = consistent_lobe(m);
     for (const auto& p : pairs) {
       Mean ab = average(40000, [&](int i) { return bsdf.eval(p[0], p[1], uint64_t(i)); });
       Mean ba = average(40000, [&](int i) { return bsdf.eval(p[1], p[0], uint64_t(i) + 777777); });
@@ -426,23 +430,29 @@ double mu_at(const ThinLensCamera& cam, float fx, float fy, const Vec3& centre) 
 
 // (d) A rendered sphere of coated_diffuse (reflectance 0.8, pbrt-v4 roughness 0, 0.15, 0.5)
 // in a white environment: the mean of the pixels inside 0.8 of the silhouette equals the
-// analog particle's albedo averaged over the same pixels' viewing angles, within 1 %.
+// analog particle's albedo averaged over the same pixels' viewing angles, within 1 %, with
+// f()'s exit weighted consistently. As pbrt-v4 weighs it (the default) the render is brighter
+// where light sampling carries the estimate: printed, +1.0 % and +1.8 % at roughness 0.15 and
+// 0.5 when this was written, below 3 %.
 TEST(LayeredBxdf, RenderedFurnaceSphereMatchesTheAnalogExpectation) {
   for (float r : {0.0f, 0.15f, 0.5f}) {
     const Vec3 centre(2, -1, 10);
-    const Material m = coated_diffuse(r, Vec3(0.8f));
-    SceneDesc s = furnace_sphere(24, 24, 64, centre, m);
+    Material m = coated_diffuse(r, Vec3(0.8f));
+    SceneDesc pbrt = furnace_sphere(24, 24, 256, centre, m);
+    pbrt.integrator.max_depth = 8;
+    m.layers.consistent_exit = true;
+    SceneDesc s = furnace_sphere(24, 24, 256, centre, m);
     s.integrator.max_depth = 8;
-    Image im = render_quietly(s).image;
+    Image im = render_quietly(s).image, im_pbrt = render_quietly(pbrt).image;
     ThinLensCamera cam(s.camera, s.film.width, s.film.height);
     const Slab slab = slab_of(m);
     Rng rng(41);
-    double sum = 0, expect = 0;
+    double sum = 0, sum_pbrt = 0, expect = 0;
     const auto px = pixels_inside_silhouette(s, centre, 0.8);
     ASSERT_GT(px.size(), 60u);
     for (auto [x, y] : px) {
-      sum += mean_rgb(im, x, y);
-      const int k = 4000;
+      sum += mean_rgb(im, x, y), sum_pbrt += mean_rgb(im_pbrt, x, y);
+      const int k = 8000;
       double e = 0;
       for (int i = 0; i < k; ++i) {
         double mu = mu_at(cam, float(x + rng.uniform()), float(y + rng.uniform()), centre);
@@ -450,9 +460,11 @@ TEST(LayeredBxdf, RenderedFurnaceSphereMatchesTheAnalogExpectation) {
       }
       expect += e / k;
     }
-    sum /= double(px.size()), expect /= double(px.size());
-    std::printf("coated_diffuse layered, pbrt roughness %.2f: rendered %.4f, analog %.4f\n", r, sum, expect);
+    sum /= double(px.size()), sum_pbrt /= double(px.size()), expect /= double(px.size());
+    std::printf("coated_diffuse layered, pbrt roughness %.2f: rendered %.4f (pbrt-v4's weighting %.4f), analog %.4f\n",
+                r, sum, sum_pbrt, expect);
     EXPECT_NEAR(sum, expect, 0.01 * expect) << "pbrt roughness " << r;
+    EXPECT_NEAR(sum_pbrt, expect, 0.03 * expect) << "pbrt roughness " << r;
   }
 }
 

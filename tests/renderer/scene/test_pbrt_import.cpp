@@ -723,18 +723,18 @@ TEST(PbrtImport, CoatedConductorMapsOntoTheLayeredModel) {
 TEST(PbrtImport, BadLayeredParametersAreRefusedWithTheirPosition) {
   const std::string w = std::string(kCamera) + "WorldBegin\n";
   EXPECT_EQ(import_error(w + "Material \"coateddiffuse\" \"float thickness\" -1\n"),
-            "s.pbrt:3:26: \"float thickness\" must be >= 0, got -1");
+            "s.pbrt:4:26: \"float thickness\" must be >= 0, got -1");
   EXPECT_EQ(import_error(w + "Material \"coateddiffuse\" \"integer maxdepth\" -2\n"),
-            "s.pbrt:3:26: \"integer maxdepth\" must be in [0, 1000], got -2");
+            "s.pbrt:4:26: \"integer maxdepth\" must be in [0, 1000], got -2");
   EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"integer nsamples\" 0\n"),
-            "s.pbrt:3:28: \"integer nsamples\" must be in [1, 256], got 0");
+            "s.pbrt:4:28: \"integer nsamples\" must be in [1, 256], got 0");
   EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"float interface.eta\" 0\n"),
-            "s.pbrt:3:28: \"float interface.eta\" must be > 0, got 0");
+            "s.pbrt:4:28: \"float interface.eta\" must be > 0, got 0");
   EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"float conductor.roughness\" -0.5\n"),
-            "s.pbrt:3:28: \"float conductor.roughness\" must be >= 0, got -0.5");
+            "s.pbrt:4:28: \"float conductor.roughness\" must be >= 0, got -0.5");
   EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"rgb reflectance\" [0.5 0.5 0.5] "
                              "\"rgb conductor.eta\" [1 1 1]\n"),
-            "s.pbrt:3:28: \"reflectance\" cannot be given with \"conductor.eta\" (pbrt-v4 refuses both)");
+            "s.pbrt:4:28: \"reflectance\" cannot be given with \"conductor.eta\" (pbrt-v4 refuses both)");
 }
 
 TEST(PbrtImport, TexturesMapOntoPdrtsAndBindToReflectance) {

@@ -123,7 +123,7 @@ TEST(SceneWriter, LayeredMaterialsRoundTripWithTheirSlab) {
     EXPECT_EQ(a.base_roughness, b.base_roughness);
     EXPECT_EQ(a.ior, b.ior);
     EXPECT_EQ(a.layers.thickness, b.layers.thickness);
-    EXPECT_TRUE(a.layers.albedo == b.layers.albedo);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a.layers.albedo[c], b.layers.albedo[c]);
     EXPECT_EQ(a.layers.g, b.layers.g);
     EXPECT_EQ(a.layers.max_depth, b.layers.max_depth);
     EXPECT_EQ(a.layers.samples, b.layers.samples);

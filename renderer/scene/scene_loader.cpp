@@ -553,8 +553,8 @@ void SceneParser::materials(const JsonNode& n) {
       auto model = o.get("model");
       m.layered = model && model->choice({"analytic", "layered"}) == "layered";
       if (m.layered) {
-        o.allow({"type", "model", "albedo", "roughness", "ior", "thickness", "medium_albedo", "g", "max_depth",
-                 "samples"});
+        o.allow(
+            {"type", "model", "albedo", "roughness", "ior", "thickness", "medium_albedo", "g", "max_depth", "samples"});
         coat_layers(o, m);
       } else {
         o.allow({"type", "model", "albedo", "roughness", "ior", "coat_color", "coat_thickness"});

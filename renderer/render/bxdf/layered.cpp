@@ -38,8 +38,7 @@ bool usable(const LayerSample& s) { return !is_black(s.f) && s.pdf > 0 && s.wi.z
 
 }  // namespace
 
-LayeredBxdf::LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers,
-                         ExitMis exit_mis)
+LayeredBxdf::LayeredBxdf(const CoatInterface& top, const LayerBase& bottom, const CoatLayers& layers, ExitMis exit_mis)
     : exit_mis_(layers.consistent_exit ? ExitMis::Consistent : exit_mis),
       top_(top),
       bottom_(bottom),
@@ -194,7 +193,7 @@ float LayeredBxdf::pdf(Vec3 wo, Vec3 wi, uint64_t key) const {
   return 0.1f / (4.0f * kPi) + 0.9f * sum / float(samples_);
 }
 
-bool LayeredBxdf::sample(Vec3 wo, float u1, float u2, float uc, uint64_t key, BsdfSample* out) const {
+bool LayeredBxdf::sample(Vec3 wo, float u1, float u2, float uc, BsdfSample* out, uint64_t key) const {
   *out = BsdfSample{};
   const Vec3 wo_given = wo;
   const bool flip = wo.z < 0;
@@ -251,7 +250,8 @@ bool LayeredBxdf::walk_sample(const LayerSample& entered, Rng& rng, BsdfSample* 
     }
     LayerSample s;
     float uc = next(rng), u1 = next(rng), u2 = next(rng);
-    bool ok = z == 0 ? bottom_.sample(-w, u1, u2, &s) : top_.sample(-w, uc, u1, u2, Transport::Radiance, kLayerBoth, &s);
+    bool ok =
+        z == 0 ? bottom_.sample(-w, u1, u2, &s) : top_.sample(-w, uc, u1, u2, Transport::Radiance, kLayerBoth, &s);
     if (!ok || !usable(s)) return false;
     f *= s.f;
     pdf *= s.pdf;

@@ -56,7 +56,7 @@ class LayeredBxdf {
 
   Vec3 eval(Vec3 wo, Vec3 wi, uint64_t key) const;
   float pdf(Vec3 wo, Vec3 wi, uint64_t key) const;
-  bool sample(Vec3 wo, float u1, float u2, float uc, uint64_t key, BsdfSample* out) const;
+  bool sample(Vec3 wo, float u1, float u2, float uc, BsdfSample* out, uint64_t key) const;
   // Every path is specular (smooth coat over a smooth conductor, no scattering medium): no
   // light sampling, as pbrt-v4's flags without Diffuse or Glossy.
   bool delta() const { return top_.specular() && bottom_.specular() && !scatters_; }

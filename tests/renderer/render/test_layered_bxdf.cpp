@@ -68,10 +68,10 @@ Vec3 cosine_direction(Rng& rng) {
 // per channel where the loss is coloured (the base's reflectance or Fresnel).
 
 struct Slab {
-  double eta = 1.5, alpha = 0;      // the coat
-  bool conductor = false;           // the base
-  Vec3 reflectance{0.0f};           // Lambertian base
-  Vec3 ceta{1.0f}, ck{0.0f};        // conductor base, relative to the coat
+  double eta = 1.5, alpha = 0;  // the coat
+  bool conductor = false;       // the base
+  Vec3 reflectance{0.0f};       // Lambertian base
+  Vec3 ceta{1.0f}, ck{0.0f};    // conductor base, relative to the coat
   double base_alpha = 0;
   CoatLayers layers;
 };
@@ -94,7 +94,8 @@ Slab slab_of(const Material& m) {
 // survival probability G2 / G1.
 bool cross_interface(Vec3 v, double eta, double alpha, Rng& rng, Vec3* out) {
   Vec3 m{0, 0, 1};
-  if (alpha >= kEffectivelySmoothAlpha) m = MicrofacetGgx(float(alpha)).sample_visible(v, float(rng.uniform()), float(rng.uniform()));
+  if (alpha >= kEffectivelySmoothAlpha)
+    m = MicrofacetGgx(float(alpha)).sample_visible(v, float(rng.uniform()), float(rng.uniform()));
   double c = dot(v, m);
   if (c <= 0) return false;
   double s2 = (1 - c * c) / (eta * eta);
@@ -172,7 +173,7 @@ Vec3 analog_particle(const Slab& s, const Vec3& wo, Rng& rng, bool free_exit = f
   const bool scatters = !is_black(s.layers.albedo);
   double z = h;
   for (int depth = 0; depth < s.layers.max_depth + (free_exit ? 1 : 0); ++depth) {
-    const bool last = depth == s.layers.max_depth;  // only the exit may happen here
+    const bool last = depth == s.layers.max_depth;             // only the exit may happen here
     double dz = -std::log(1 - rng.uniform()) * std::abs(w.z);  // free path, extinction 1
     double zn = w.z > 0 ? z + dz : z - dz;
     if (zn > 0 && zn < h) {
@@ -304,8 +305,8 @@ TEST(LayeredBxdf, WhiteFurnaceMatchesAnAnalogSimulationOfTheSlab) {
       Mean smp = furnace_of_sample(bsdf, wo, 23, 200000);
       Mean pbrt = delta ? ref : furnace_of_eval(bsdf, fc.m, wo, 37, 200000);
       Mean cons = delta ? ref : furnace_of_consistent_eval(fc.m, wo, 37, 200000);
-      std::printf("%-30s %5.2f %8.4f %8.4f %8.4f %8.4f %8.4f %7.4f\n", fc.name.c_str(), mu, ref.mean[1],
-                  ref_f.mean[1], smp.mean[1], cons.mean[1], pbrt.mean[1], pbrt.mean[1] / ref_f.mean[1]);
+      std::printf("%-30s %5.2f %8.4f %8.4f %8.4f %8.4f %8.4f %7.4f\n", fc.name.c_str(), mu, ref.mean[1], ref_f.mean[1],
+                  smp.mean[1], cons.mean[1], pbrt.mean[1], pbrt.mean[1] / ref_f.mean[1]);
       for (int k = 0; k < 3; ++k) {
         const double tol = 0.01 * ref.mean[k] + 1e-4;
         EXPECT_NEAR(smp.mean[k], ref.mean[k], tol) << fc.name << " mu " << mu << " channel " << k;
@@ -340,7 +341,7 @@ TEST(LayeredBxdf, SampledWeightsMatchEvalBinByBin) {
     for (int i = 0; i < n; ++i) {
       BsdfSample s;
       float u1 = uniform_float(rng), u2 = uniform_float(rng), uc = uniform_float(rng);
-      if (bsdf.sample(wo, u1, u2, uc, uint64_t(i), &s) && !s.delta) {
+      if (bsdf.sample(wo, u1, u2, uc, &s, uint64_t(i)) && !s.delta) {
         int j = bin(s.wi);
         a[j] += s.weight[1], a2[j] += double(s.weight[1]) * s.weight[1];
       }
@@ -396,8 +397,8 @@ TEST(LayeredBxdf, PdfIsPbrtsMixtureWithAUniformLobe) {
 // weighting breaks it by up to 6 % at pbrt roughness 0.15); and no case reflects more than it
 // receives.
 TEST(LayeredBxdf, IsReciprocalAndConservesEnergyOnAverage) {
-  const Vec3 pairs[][2] = {{at_mu(0.3, 0.2), at_mu(0.8, 2.0)}, {at_mu(0.9, 1.0), at_mu(0.5, 4.0)},
-                           {at_mu(0.4, 0.0), at_mu(0.45, 3.0)}};
+  const Vec3 pairs[][2] = {
+      {at_mu(0.3, 0.2), at_mu(0.8, 2.0)}, {at_mu(0.9, 1.0), at_mu(0.5, 4.0)}, {at_mu(0.4, 0.0), at_mu(0.45, 3.0)}};
   for (const Material& m : {coated_diffuse(0.15f, Vec3(0.2f, 0.5f, 0.8f)), coated_diffuse(0.5f, Vec3(0.9f)),
                             coated_gold(0.15f), coated_diffuse(0.0f, Vec3(0.7f))}) {
     const LayeredBxdf bsdf = consistent_lobe(m);

@@ -710,7 +710,7 @@ TEST(PbrtImport, CoatedConductorMapsOntoTheLayeredModel) {
   const Material& b = im.scene.materials[im.scene.shapes[1].material];
   expect_near(b.eta, Vec3(1.0f), 0, "reflectance: eta 1");
   EXPECT_NEAR(b.k[0], 2 * std::sqrt(0.9) / std::sqrt(0.1), 1e-4);
-  EXPECT_NEAR(b.base_roughness, 0.5, 1e-6);  // alpha 0.25 unremapped
+  EXPECT_NEAR(b.base_roughness, 0.5, 1e-6);                             // alpha 0.25 unremapped
   const Material& c = im.scene.materials[im.scene.shapes[2].material];  // pbrt-v4's defaults: copper
   expect_near(c.eta, find_named_metal("Cu")->eta, 0, "copper's eta");
   EXPECT_EQ(c.roughness, 0);

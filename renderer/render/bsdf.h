@@ -101,7 +101,6 @@ class Bsdf {
   }
   bool scatters() const { return !std::holds_alternative<BlackBxdf>(bxdf_); }  // false for emitters
   Vec3 albedo() const { return albedo_; }                                      // for the albedo AOV
-
 };
 
 // Path regularisation (IntegratorDesc::regularize; Kaplanyan & Dachsbacher 2013, as pbrt-v4's

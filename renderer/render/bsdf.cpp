@@ -41,7 +41,14 @@ Bsdf::Bsdf(const Material& m) : albedo_(m.albedo) {
       bxdf_ = ThinDielectricBxdf{m.albedo, m.ior};
       break;
     case MaterialType::CoatedDiffuse:
-      bxdf_ = CoatedDiffuse(m);
+      if (m.layered)
+        bxdf_ = LayeredBxdf::coated_diffuse(m);
+      else
+        bxdf_ = CoatedDiffuse(m);
+      break;
+    case MaterialType::CoatedConductor:
+      albedo_ = fresnel_conductor(1.0f, m.eta, m.k);  // the albedo AOV: the bare base's normal-incidence reflectance
+      bxdf_ = LayeredBxdf::coated_conductor(m);
       break;
     case MaterialType::Dielectric:
       // Index-matched: the interface is invisible, a pure pass-through (delta).
@@ -78,6 +85,11 @@ Material regularized(const Material& m) {
     case MaterialType::Dielectric:
     case MaterialType::CoatedDiffuse:
       r.roughness = roughen(m.roughness);
+      break;
+    case MaterialType::CoatedConductor:
+      // pbrt-v4's LayeredBxDF::Regularize: both interfaces.
+      r.roughness = roughen(m.roughness);
+      r.base_roughness = roughen(m.base_roughness);
       break;
     case MaterialType::Mirror:
       r.type = MaterialType::Glossy;

@@ -16,14 +16,19 @@
 //   CoatedDiffuse   CoatedDiffuse (coated_diffuse.h): a smooth coat is one delta lobe beside a
 //                   non-delta one: is_delta() is false, eval() and pdf() give the non-delta
 //                   part, sample() flags the delta reflection
+//                   With "layered" (Material::layered): LayeredBxdf (layered.h)
+//   CoatedConductor LayeredBxdf (layered.h), pbrt-v4's CoatedConductorBxDF
 //   Emitter, Mix    BlackBxdf (a Mix is resolved to a component per hit before, mix_material.h)
 // A new lobe is a struct with kDelta, eval, pdf and sample in its own file, one alternative in
-// BxdfVariant and the case of its material in Bsdf::Bsdf (bsdf.cpp).
+// BxdfVariant and the case of its material in Bsdf::Bsdf (bsdf.cpp). A stochastic lobe
+// (LayeredBxdf) sets kKeyed and takes the caller's key as the last argument of eval, pdf and
+// sample (after out); a lobe whose deltas depend on its parameters has delta().
 #include "renderer/render/bxdf/black.h"
 #include "renderer/render/bxdf/bsdf_sample.h"
 #include "renderer/render/bxdf/coated_diffuse.h"
 #include "renderer/render/bxdf/ggx_reflection.h"
 #include "renderer/render/bxdf/lambert.h"
+#include "renderer/render/bxdf/layered.h"
 #include "renderer/render/bxdf/phong.h"
 #include "renderer/render/bxdf/rough_dielectric.h"
 #include "renderer/render/bxdf/smooth_dielectric.h"
@@ -32,41 +37,70 @@
 #include "renderer/scene/material.h"
 #include "renderer/scene/vec3.h"
 
+#include <cstdint>
 #include <variant>
 
 namespace pdrt {
 
 using BxdfVariant =
     std::variant<BlackBxdf, LambertBxdf, GgxReflectionBxdf, PhongBxdf, SchlickMirrorBxdf, SmoothConductorBxdf,
-                 SmoothDielectricBxdf, RoughDielectricBxdf, CoatedDiffuse, ThinDielectricBxdf>;
+                 SmoothDielectricBxdf, RoughDielectricBxdf, CoatedDiffuse, ThinDielectricBxdf, LayeredBxdf>;
+
+// Lobes whose eval, pdf and sample are random estimates take a key (LayeredBxdf).
+template <class B>
+concept KeyedBxdf = B::kKeyed;
 
 class Bsdf {
+  BxdfVariant bxdf_;
+  Vec3 albedo_{0.0f};
+
+  // f(lobe, key) for a keyed lobe, f(lobe) for the others.
+  template <class F>
+  auto with_key(uint64_t key, F&& f) const {
+    return std::visit(
+        [&](const auto& b) {
+          if constexpr (KeyedBxdf<std::decay_t<decltype(b)>>)
+            return f(b, key);
+          else
+            return f(b);
+        },
+        bxdf_);
+  }
+
  public:
   explicit Bsdf(const Material& m);  // Emitter (and unresolved Mix) material -> a black, non-scattering BSDF
 
-  Vec3 eval(const Vec3& wo, const Vec3& wi) const {  // f(wo, wi), without the cosine; 0 for delta lobes
-    return std::visit([&](const auto& b) { return b.eval(wo, wi); }, bxdf_);
+  // `key` seeds the random walks of a stochastic lobe (PixelSampleState::walk_key: a hash of
+  // seed, pixel, sample index and vertex); the other lobes ignore it.
+  // f(wo, wi), without the cosine; 0 for delta lobes.
+  Vec3 eval(const Vec3& wo, const Vec3& wi, uint64_t key = 0) const {
+    return with_key(key, [&](const auto& b, auto... k) { return b.eval(wo, wi, k...); });
   }
-  float pdf(const Vec3& wo, const Vec3& wi) const {  // solid-angle pdf that sample() produces wi (non-delta part)
-    return std::visit([&](const auto& b) { return b.pdf(wo, wi); }, bxdf_);
+  // Solid-angle pdf that sample() produces wi (non-delta part); a stochastic lobe's estimate for MIS.
+  float pdf(const Vec3& wo, const Vec3& wi, uint64_t key = 0) const {
+    return with_key(key, [&](const auto& b, auto... k) { return b.pdf(wo, wi, k...); });
   }
   // u1, u2 in [0, 1) choose the direction, uc in [0, 1) the lobe (Fresnel reflect vs transmit).
   // False when no direction is produced (below the horizon, wo grazing, non-scattering).
-  bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const {
+  bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out, uint64_t key = 0) const {
     *out = BsdfSample{};
-    return std::visit([&](const auto& b) { return b.sample(wo, u1, u2, uc, out); }, bxdf_);
+    return with_key(key, [&](const auto& b, auto... k) { return b.sample(wo, u1, u2, uc, out, k...); });
   }
 
-  // Every lobe is a delta (mirror, conductor or dielectric with roughness 0, thin dielectric).
+  // Every lobe is a delta (mirror, conductor or dielectric with roughness 0, thin dielectric,
+  // a layered lobe of smooth layers only).
   bool is_delta() const {
-    return std::visit([](const auto& b) { return std::decay_t<decltype(b)>::kDelta; }, bxdf_);
+    return std::visit(
+        [](const auto& b) {
+          if constexpr (requires { b.delta(); })
+            return b.delta();
+          else
+            return std::decay_t<decltype(b)>::kDelta;
+        },
+        bxdf_);
   }
   bool scatters() const { return !std::holds_alternative<BlackBxdf>(bxdf_); }  // false for emitters
   Vec3 albedo() const { return albedo_; }                                      // for the albedo AOV
-
- private:
-  BxdfVariant bxdf_;
-  Vec3 albedo_{0.0f};
 };
 
 // Path regularisation (IntegratorDesc::regularize; Kaplanyan & Dachsbacher 2013, as pbrt-v4's

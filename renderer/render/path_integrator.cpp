@@ -83,6 +83,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     if (!dielectric && !hit.front) ns = -ns, ng = -ng;
     Frame frame(ns);
     Vec3 wo = frame.to_local(wo_world);
+    const uint64_t key = ps.walk_key(depth);  // a stochastic BSDF's random walks at this vertex
 
     // Next-event estimation (not for delta lobes: a light sample has zero BSDF value).
     if (!bsdf.is_delta() && !lights_.empty()) {
@@ -91,7 +92,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, salt_light_point(depth)), &ls) &&
           !is_black(ls.radiance)) {
         Vec3 wi = frame.to_local(ls.wi);
-        Vec3 f = bsdf.eval(wo, wi);
+        Vec3 f = bsdf.eval(wo, wi, key);
         // Light leaking through the geometric surface is rejected (shading normals).
         bool same_side = dielectric || dot(ls.wi, ng) > 0;
         if (!is_black(f) && same_side) {
@@ -101,7 +102,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
           ++res.rays;
           if (!scene_.occluded(shadow)) {
             // A delta light (point, spot, distant) cannot be hit by BSDF sampling: weight 1.
-            float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
+            float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, bsdf.pdf(wo, wi, key));
             res.radiance += beta * f * ls.radiance * (std::abs(wi.z) * w / ls.pdf);
           }
         }
@@ -112,7 +113,7 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     BsdfSample bs;
     float uc = float(ps.get_1d(Family::Time, salt_lobe(depth)));
     auto u = ps.get_2d(Family::Gloss, salt_bsdf_direction(depth));
-    if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs)) break;
+    if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs, key)) break;
     Vec3 wi_world = frame.to_world(bs.wi);
     // Reflection must leave on the front of the geometric surface, transmission behind it
     // (a thin dielectric's straight-through transmission; a dielectric's side is its own).

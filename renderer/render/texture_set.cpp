@@ -163,6 +163,9 @@ Material TextureSet::apply(Material out, const std::vector<TextureBinding>& bind
       case MaterialParam::Reflectance:
         conductor_from_reflectance(Vec3(unit(x.x), unit(x.y), unit(x.z)), &out);
         break;
+      case MaterialParam::BaseRoughness:
+        out.base_roughness = unit(x.x);
+        break;
     }
   }
   return out;

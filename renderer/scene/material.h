@@ -8,7 +8,18 @@
 
 namespace pdrt {
 
-enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Conductor, CoatedDiffuse, ThinDielectric, Mix };
+enum class MaterialType {
+  Diffuse,
+  Glossy,
+  Mirror,
+  Dielectric,
+  Emitter,
+  Conductor,
+  CoatedDiffuse,
+  ThinDielectric,
+  Mix,
+  CoatedConductor
+};
 enum class GlossLobe { GGX, Phong };
 
 // The material parameters a texture may drive (render/texture_set.h writes them per hit).
@@ -16,11 +27,25 @@ enum class GlossLobe { GGX, Phong };
 // entry here, one case in TextureSet::apply and one textured_* call in the loader.
 // Amount: a mix's probability of its second material. Reflectance: a conductor's normal-incidence
 // reflectance, which sets eta = 1 and k from it (pbrt-v4's ConductorMaterial "reflectance").
-enum class MaterialParam { Albedo, Roughness, CoatColor, Radiance, Amount, Reflectance };
+// BaseRoughness: the roughness of a coated_conductor's conductor under its coat.
+enum class MaterialParam { Albedo, Roughness, CoatColor, Radiance, Amount, Reflectance, BaseRoughness };
 struct TextureBinding {
   MaterialParam param;
   int texture;  // index into SceneDesc::textures
   bool operator==(const TextureBinding&) const = default;
+};
+
+// The slab between a layered material's coat and base (pbrt-v4's LayeredBxDF parameters and
+// defaults, render/bxdf/layered.h): coated_diffuse with "model": "layered", and coated_conductor.
+struct CoatLayers {
+  float thickness = 0.01f;  // of the medium, whose extinction is 1 per unit: exp(-thickness / |cos|) a crossing
+  Vec3 albedo{0.0f};        // the medium's single-scattering albedo; black: it only absorbs
+  float g = 0.0f;           // Henyey-Greenstein asymmetry of the medium's phase function
+  int max_depth = 10;       // events of one random walk
+  int samples = 1;          // random walks per evaluation
+  // f()'s exit weighted consistently (LayeredBxdf::ExitMis::Consistent) instead of as pbrt-v4
+  // does; for tests that measure the difference, not in the scene format.
+  bool consistent_exit = false;
 };
 
 struct Material {
@@ -36,6 +61,11 @@ struct Material {
   Vec3 k{0.0f};                 // conductor: imaginary part (extinction) per RGB channel (>= 0)
   Vec3 coat_color{1.0f};        // coated_diffuse: coat transmittance of one pass at normal incidence (thickness 1)
   float coat_thickness = 1.0f;  // coated_diffuse: scales the coat's optical depth, >= 0
+  // coated_diffuse: pbrt-v4's stochastic layered model (the slab `layers`) instead of the
+  // analytic one (coat_color, coat_thickness); coated_conductor is always layered.
+  bool layered = false;
+  CoatLayers layers;
+  float base_roughness = 0.0f;  // coated_conductor: the conductor's roughness under the coat (eta, k: its index)
   Vec3 radiance{0.0f};          // emitted radiance (Emitter)
   bool two_sided = false;       // emitters: emit from both faces (default: front face only)
   bool energy_compensation =

@@ -18,4 +18,9 @@ inline constexpr IntRange kSppRange{1, uint64_t(1) << 24};
 // sampler.seed, --seed: any 64-bit value.
 inline constexpr IntRange kSeedRange{0, UINT64_MAX};
 
+// A layered material's max_depth and samples (pbrt-v4's maxdepth, nsamples) in the scene file
+// and the pbrt importer: bounds on the work of one BSDF evaluation (samples x max_depth events).
+inline constexpr long long kMaxLayerDepth = 1000;
+inline constexpr long long kMaxLayerSamples = 256;
+
 }  // namespace pdrt

@@ -51,6 +51,8 @@ class SceneParser {
   void textured_color(const JsonNode& n, Material& m, MaterialParam p, Vec3& field) const;
   void textured_unit(const JsonNode& n, Material& m, MaterialParam p, float& field) const;
   void materials(const JsonNode& n);
+  void conductor_index(const JsonNode& mn, const JsonObject& o, Material& m) const;
+  void coat_layers(const JsonObject& o, Material& m) const;
   // `prototype` >= 0: the objects of that prototype (no instances, motion or emitters).
   void objects(const JsonNode& n, int prototype = -1);
   void prototypes(const JsonNode& n);
@@ -482,7 +484,7 @@ void SceneParser::materials(const JsonNode& n) {
     Material m;
     m.name = it.key();
     std::string type = o.require("type").choice({"diffuse", "glossy", "mirror", "dielectric", "emitter", "conductor",
-                                                 "coated_diffuse", "thin_dielectric", "mix"});
+                                                 "coated_diffuse", "coated_conductor", "thin_dielectric", "mix"});
     if (type == "diffuse") {
       o.allow({"type", "albedo"});
       m.type = MaterialType::Diffuse;
@@ -542,42 +544,39 @@ void SceneParser::materials(const JsonNode& n) {
       o.allow({"type", "eta", "k", "metal", "reflectance", "roughness", "energy_compensation"});
       m.type = MaterialType::Conductor;
       m.albedo = Vec3(1.0f);
-      auto metal = o.get("metal"), eta = o.get("eta"), k = o.get("k"), refl = o.get("reflectance");
-      if (metal && (eta || k)) (eta ? eta : k)->fail_key("cannot be combined with metal: give metal or eta and k");
-      if (refl && (metal || eta || k)) refl->fail_key("cannot be combined with metal, eta or k: give one of them");
-      if (refl) {
-        // pbrt-v4's conductor by reflectance: eta = 1, k from the normal-incidence reflectance.
-        Vec3 r{0.0f};
-        textured_color(*refl, m, MaterialParam::Reflectance, r);
-        conductor_from_reflectance(r, &m);
-      } else if (metal) {
-        const NamedMetal* nm = find_named_metal(metal->string());
-        if (!nm) metal->fail_got("must be one of " + named_metal_list());
-        m.eta = nm->eta, m.k = nm->k;
-      } else {
-        if (!eta && !k) mn.fail("needs metal (one of " + named_metal_list() + ") or eta and k");
-        JsonNode e = eta ? *eta : o.require("eta"), kk = k ? *k : o.require("k");
-        m.eta = e.vec3();
-        m.k = kk.vec3();
-        for (int c = 0; c < 3; ++c)
-          if (!(std::isfinite(m.eta[c]) && m.eta[c] > 0)) e.fail_got("must have finite components > 0");
-        for (int c = 0; c < 3; ++c)
-          if (!(std::isfinite(m.k[c]) && m.k[c] >= 0)) kk.fail_got("must have finite components >= 0");
-      }
+      conductor_index(mn, o, m);
       if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
       if (auto x = o.get("energy_compensation")) m.energy_compensation = x->boolean();
     } else if (type == "coated_diffuse") {
-      o.allow({"type", "albedo", "roughness", "ior", "coat_color", "coat_thickness"});
       m.type = MaterialType::CoatedDiffuse;
       m.albedo = Vec3(0.5f);
-      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
-      if (auto x = o.get("ior")) {
-        // The coat's albedo tables hold indices 1 to 3 (ggx_albedo_tables.h); 1 is no coat.
-        m.ior = x->number();
-        if (!(m.ior >= 1 && m.ior <= 3)) x->fail_got("must be in [1,3] (the coat's index relative to the outside)");
+      auto model = o.get("model");
+      m.layered = model && model->choice({"analytic", "layered"}) == "layered";
+      if (m.layered) {
+        o.allow(
+            {"type", "model", "albedo", "roughness", "ior", "thickness", "medium_albedo", "g", "max_depth", "samples"});
+        coat_layers(o, m);
+      } else {
+        o.allow({"type", "model", "albedo", "roughness", "ior", "coat_color", "coat_thickness"});
+        if (auto x = o.get("ior")) {
+          // The coat's albedo tables hold indices 1 to 3 (ggx_albedo_tables.h); 1 is no coat.
+          m.ior = x->number();
+          if (!(m.ior >= 1 && m.ior <= 3)) x->fail_got("must be in [1,3] (the coat's index relative to the outside)");
+        }
+        if (auto x = o.get("coat_color")) textured_color(*x, m, MaterialParam::CoatColor, m.coat_color);
+        if (auto x = o.get("coat_thickness")) m.coat_thickness = x->non_negative();
       }
-      if (auto x = o.get("coat_color")) textured_color(*x, m, MaterialParam::CoatColor, m.coat_color);
-      if (auto x = o.get("coat_thickness")) m.coat_thickness = x->non_negative();
+      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
+    } else if (type == "coated_conductor") {
+      o.allow({"type", "roughness", "ior", "eta", "k", "metal", "reflectance", "base_roughness", "thickness",
+               "medium_albedo", "g", "max_depth", "samples"});
+      m.type = MaterialType::CoatedConductor;
+      m.albedo = Vec3(1.0f);
+      m.layered = true;
+      conductor_index(mn, o, m);
+      coat_layers(o, m);
+      if (auto x = o.get("roughness")) textured_unit(*x, m, MaterialParam::Roughness, m.roughness);
+      if (auto x = o.get("base_roughness")) textured_unit(*x, m, MaterialParam::BaseRoughness, m.base_roughness);
     } else {
       o.allow({"type", "radiance", "two_sided", "scale"});
       m.type = MaterialType::Emitter;
@@ -600,6 +599,46 @@ void SceneParser::materials(const JsonNode& n) {
     scene_.materials.push_back(std::move(m));
   }
   mix_materials(mixes);
+}
+
+// A conductor's complex index: a named metal, eta and k, or pbrt-v4's normal-incidence
+// reflectance (conductor and coated_conductor; relative to the outside, the coat divides it).
+void SceneParser::conductor_index(const JsonNode& mn, const JsonObject& o, Material& m) const {
+  auto metal = o.get("metal"), eta = o.get("eta"), k = o.get("k"), refl = o.get("reflectance");
+  if (metal && (eta || k)) (eta ? eta : k)->fail_key("cannot be combined with metal: give metal or eta and k");
+  if (refl && (metal || eta || k)) refl->fail_key("cannot be combined with metal, eta or k: give one of them");
+  if (refl) {
+    // pbrt-v4's conductor by reflectance: eta = 1, k from the normal-incidence reflectance.
+    Vec3 r{0.0f};
+    textured_color(*refl, m, MaterialParam::Reflectance, r);
+    conductor_from_reflectance(r, &m);
+  } else if (metal) {
+    const NamedMetal* nm = find_named_metal(metal->string());
+    if (!nm) metal->fail_got("must be one of " + named_metal_list());
+    m.eta = nm->eta, m.k = nm->k;
+  } else {
+    if (!eta && !k) mn.fail("needs metal (one of " + named_metal_list() + ") or eta and k");
+    JsonNode e = eta ? *eta : o.require("eta"), kk = k ? *k : o.require("k");
+    m.eta = e.vec3();
+    m.k = kk.vec3();
+    for (int c = 0; c < 3; ++c)
+      if (!(std::isfinite(m.eta[c]) && m.eta[c] > 0)) e.fail_got("must have finite components > 0");
+    for (int c = 0; c < 3; ++c)
+      if (!(std::isfinite(m.k[c]) && m.k[c] >= 0)) kk.fail_got("must have finite components >= 0");
+  }
+}
+
+// The slab of a layered coat (render/bxdf/layered.h), pbrt-v4's parameters: any index > 0.
+void SceneParser::coat_layers(const JsonObject& o, Material& m) const {
+  if (auto x = o.get("ior")) m.ior = x->positive();
+  if (auto x = o.get("thickness")) m.layers.thickness = x->non_negative();
+  if (auto x = o.get("medium_albedo")) m.layers.albedo = x->color();
+  if (auto x = o.get("g")) {
+    m.layers.g = x->number();
+    if (!(m.layers.g >= -1 && m.layers.g <= 1)) x->fail_got("must be in [-1,1]");
+  }
+  if (auto x = o.get("max_depth")) m.layers.max_depth = int(x->integer(0, kMaxLayerDepth));
+  if (auto x = o.get("samples")) m.layers.samples = int(x->integer(1, kMaxLayerSamples));
 }
 
 // A mix's two materials, by name (any material of the file, before or after it): none an

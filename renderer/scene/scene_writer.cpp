@@ -109,6 +109,15 @@ Vec3 unit(Vec3 c) {
   return c;
 }
 
+// The slab of a layered coat (coated_diffuse "model": "layered", coated_conductor).
+void layers(const CoatLayers& l, ojson& j) {
+  j["thickness"] = l.thickness;
+  j["medium_albedo"] = vec(unit(l.albedo));
+  j["g"] = l.g;
+  j["max_depth"] = l.max_depth;
+  j["samples"] = l.samples;
+}
+
 ojson material(const Material& m) {
   ojson j;
   switch (m.type) {
@@ -142,12 +151,23 @@ ojson material(const Material& m) {
            {"energy_compensation", m.energy_compensation}};
       break;
     case MaterialType::CoatedDiffuse:
-      j = {{"type", "coated_diffuse"},
-           {"albedo", vec(unit(m.albedo))},
+      j = {{"type", "coated_diffuse"}, {"albedo", vec(unit(m.albedo))}, {"roughness", m.roughness}, {"ior", m.ior}};
+      if (m.layered) {
+        j["model"] = "layered";
+        layers(m.layers, j);
+      } else {
+        j["coat_color"] = vec(unit(m.coat_color));
+        j["coat_thickness"] = m.coat_thickness;
+      }
+      break;
+    case MaterialType::CoatedConductor:
+      j = {{"type", "coated_conductor"},
            {"roughness", m.roughness},
            {"ior", m.ior},
-           {"coat_color", vec(unit(m.coat_color))},
-           {"coat_thickness", m.coat_thickness}};
+           {"eta", vec(m.eta)},
+           {"k", vec(m.k)},
+           {"base_roughness", m.base_roughness}};
+      layers(m.layers, j);
       break;
     case MaterialType::Emitter:
       j = {{"type", "emitter"}, {"radiance", vec(m.radiance)}, {"two_sided", m.two_sided}};
@@ -182,6 +202,9 @@ ojson material(const Material& m) {
       case MaterialParam::Reflectance:
         j.erase("eta"), j.erase("k");  // the loader takes reflectance instead of them
         j["reflectance"] = texture_name(b.texture);
+        break;
+      case MaterialParam::BaseRoughness:
+        j["base_roughness"] = texture_name(b.texture);
         break;
     }
   }

@@ -11,6 +11,8 @@ namespace pdrt {
 
 // The sampler's streams: every (pixel, family, bounce) stream hashes from this.
 inline uint64_t sample_hash_seed(uint64_t seed) { return mix64(seed ^ 0x70647274ull); }  // "pdrt"
+// The keys of random walks inside one path vertex (PixelSampleState::walk_key).
+inline uint64_t walk_key_seed(uint64_t seed) { return mix64(seed ^ 0x77616c6b6b6579ull); }  // "walkkey"
 // The sampler whose samples decide when a pixel stops (adaptive "split").
 inline uint64_t decider_seed(uint64_t seed) { return mix64(seed ^ 0x6465636964657273ull); }  // "deciders"
 // The random part of McCool–Fiume rank thresholds (reconstruction "rank").

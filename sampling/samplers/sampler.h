@@ -167,6 +167,14 @@ class PixelSampleState {
     return s_->get_2d(px_, py_, index_, f, bounce);
   }
 
+  // A hash of (seed, pixel, sample index, bounce) for a decision that needs an unbounded number
+  // of random numbers (a layered BSDF's random walks, renderer/render/bxdf/layered.h): it seeds
+  // a generator local to the call, so every value stays a pure function of the sample.
+  uint64_t walk_key(int bounce) const {
+    uint64_t h = hash_combine(walk_key_seed(s_->seed()), (uint64_t(uint32_t(px_)) << 32) | uint32_t(py_));
+    return hash_combine(hash_combine(h, uint64_t(index_)), uint64_t(uint32_t(bounce)));
+  }
+
   // Bounce salts cached per family (renderer/render/sample_dimensions.h ties path depth to it).
   static constexpr int kCachedSalts = 64;
 

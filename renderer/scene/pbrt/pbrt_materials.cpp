@@ -1,12 +1,13 @@
 #include "renderer/scene/pbrt/pbrt_build_context.h"
 
 #include "renderer/scene/pbrt/pbrt_spectrum.h"
+#include "renderer/scene/scene_limits.h"
 
 #include <algorithm>
 #include <cmath>
 
 // pbrt-v4's materials as pdrt's (docs/pbrt-import.md): diffuse, conductor, coateddiffuse,
-// dielectric, thindielectric, mix; interface bounds media only.
+// coatedconductor, dielectric, thindielectric, mix; interface bounds media only.
 
 namespace pdrt {
 namespace {
@@ -24,7 +25,9 @@ Vec3 albedo(PbrtBuild& b, const PbrtParams& ps, Material& m) {
 // roughness^(1/2). A texture is bound through a power texture of that exponent (after the
 // mean of uroughness and vroughness, when they differ): the filtered pbrt value is remapped
 // per hit, exactly as pbrt-v4 remaps its evaluated roughness texture.
-float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Material& m) {
+// `prefix` names a layer's roughness ("interface.", "conductor."), bound to `param` when textured.
+float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Material& m, const std::string& prefix = "",
+                MaterialParam param = MaterialParam::Roughness) {
   struct Rough {
     double value = 0;
     int texture = -1;
@@ -34,7 +37,7 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
       return in;
     }
   };
-  auto one = [&](const char* n) -> std::optional<Rough> {
+  auto one = [&](const std::string& n) -> std::optional<Rough> {
     const PbrtParam* p = ps.find(n);
     if (!p) return std::nullopt;
     Rough r;
@@ -45,10 +48,10 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
     }
     r.value = *ps.find_float(n);
     if (!(r.value >= 0) || !std::isfinite(r.value))
-      b.fail(p->at, std::string("\"float ") + n + "\" must be >= 0, got " + pbrt_number(r.value));
+      b.fail(p->at, "\"float " + n + "\" must be >= 0, got " + pbrt_number(r.value));
     return r;
   };
-  std::optional<Rough> r = one("roughness"), u = one("uroughness"), v = one("vroughness");
+  std::optional<Rough> r = one(prefix + "roughness"), u = one(prefix + "uroughness"), v = one(prefix + "vroughness");
   const Rough ru = u ? *u : r.value_or(Rough{}), rv = v ? *v : r.value_or(Rough{});
   const bool remap = ps.get_bool("remaproughness", true);
   if (ru.texture < 0 && rv.texture < 0) {
@@ -71,7 +74,7 @@ float roughness(PbrtBuild& b, const PbrtDirective& d, const PbrtParams& ps, Mate
   t.kind = TextureDesc::Kind::Power;
   t.tex = mean;
   t.exponent = remap ? 0.25f : 0.5f;
-  m.textures.push_back({MaterialParam::Roughness, b.add_texture(std::move(t), "roughness of " + m.name, d.at)});
+  m.textures.push_back({param, b.add_texture(std::move(t), prefix + "roughness of " + m.name, d.at)});
   return 0;
 }
 
@@ -120,11 +123,71 @@ float named_glass_ior(PbrtBuild& b, const PbrtParam& p) {
 
 // pbrt-v4's named glasses at the sodium d line (587.6 nm): pdrt's dielectric takes one index.
 // "eta" of a dielectric or a coat: a number (default 1.5), a named glass or a spectrum.
-float index_of_refraction(PbrtBuild& b, const PbrtParams& ps) {
-  const PbrtParam* e = ps.find("eta");
-  if (!e || pbrt_canonical_type(e->type) != "spectrum") return b.positive(ps, "eta", 1.5f);
+float index_of_refraction(PbrtBuild& b, const PbrtParams& ps, const std::string& name = "eta") {
+  const PbrtParam* e = ps.find(name);
+  if (!e || pbrt_canonical_type(e->type) != "spectrum") return b.positive(ps, name, 1.5f);
   e->used = true;
   return named_glass_ior(b, *e);
+}
+
+// A conductor's "eta" and "k" (pbrt-v4's copper by default) or "reflectance" (F0 = r for eta = 1,
+// k = 2 sqrt(r) / sqrt(1 - r), as pbrt-v4 does; a texture binds the same mapping per hit).
+// pbrt-v4 refuses both; a coated conductor's are "conductor.eta" and "conductor.k" beside
+// "reflectance".
+void conductor_index(PbrtBuild& b, const PbrtLocation& at, const PbrtParams& ps, const std::string& pre, Material& m) {
+  if (const PbrtParam* refl = ps.find("reflectance")) {
+    for (const std::string& n : {pre + "eta", pre + "k"})
+      if (ps.has(n)) b.fail(refl->at, "\"reflectance\" cannot be given with \"" + n + "\" (pbrt-v4 refuses both)");
+    b.bind_to = &m.textures, b.bind_param = MaterialParam::Reflectance;
+    Vec3 r = b.color(ps, "reflectance", Vec3(0.0f), false);
+    b.bind_to = nullptr;
+    conductor_from_reflectance(r, &m);
+    return;
+  }
+  m.eta = metal_param(b, at, ps, pre + "eta", true);
+  m.k = metal_param(b, at, ps, pre + "k", false);
+}
+
+// A constant float parameter of a layered material; a texture is reported and the default used.
+std::optional<double> layer_float(PbrtBuild& b, const PbrtParams& ps, const std::string& name) {
+  const PbrtParam* p = ps.find(name);
+  if (!p) return std::nullopt;
+  if (pbrt_canonical_type(p->type) == "texture") {
+    p->used = true;
+    b.note(p->at, "a texture for \"" + name + "\" is not supported (its default used)");
+    return std::nullopt;
+  }
+  std::optional<double> v = ps.find_float(name);
+  if (v && !std::isfinite(*v)) b.fail(p->at, "\"float " + name + "\" must be finite, got " + pbrt_number(*v));
+  return v;
+}
+
+// The slab between a layered material's interfaces: pbrt-v4's thickness, albedo, g, maxdepth
+// and nsamples, with its defaults (CoatLayers).
+CoatLayers coat_layers(PbrtBuild& b, const PbrtParams& ps) {
+  CoatLayers l;
+  if (std::optional<double> t = layer_float(b, ps, "thickness")) {
+    if (!(*t >= 0)) b.fail(ps.find("thickness")->at, "\"float thickness\" must be >= 0, got " + pbrt_number(*t));
+    l.thickness = float(*t);
+  }
+  l.albedo = b.color(ps, "albedo", Vec3(0.0f), false);
+  if (max_component(l.albedo) > 1)
+    b.note(ps.find("albedo")->at, "the medium's \"albedo\" above 1 is clamped to 1 (as pbrt-v4 does)");
+  if (std::optional<double> g = layer_float(b, ps, "g")) {
+    if (std::abs(*g) > 1) b.note(ps.find("g")->at, "\"float g\" outside [-1, 1] is clamped (as pbrt-v4 does)");
+    l.g = float(std::clamp(*g, -1.0, 1.0));
+  }
+  auto count = [&](const char* name, long long lo, long long hi, int fallback) {
+    std::optional<int64_t> v = ps.find_int(name);
+    if (!v) return fallback;
+    if (*v < lo || *v > hi)
+      b.fail(ps.find(name)->at, std::string("\"integer ") + name + "\" must be in [" + std::to_string(lo) + ", " +
+                                    std::to_string(hi) + "], got " + std::to_string(*v));
+    return int(*v);
+  };
+  l.max_depth = count("maxdepth", 0, kMaxLayerDepth, l.max_depth);
+  l.samples = count("nsamples", 1, kMaxLayerSamples, l.samples);
+  return l;
 }
 
 // Returns the material's index, or -2 for "interface" (a medium boundary, no surface).
@@ -144,45 +207,27 @@ int material(PbrtBuild& b, const PbrtDirective& d, const std::string& type, cons
   if (type == "diffuse") {
     m.type = MaterialType::Diffuse;
     m.albedo = albedo(b, ps, m);
-  } else if (type == "conductor" || type == "coatedconductor") {
-    if (type == "coatedconductor")
-      b.note(d.at, "coatedconductor is not supported (its conductor is used, without the coat)");
+  } else if (type == "conductor") {
     m.type = MaterialType::Conductor;
     m.roughness = roughness(b, d, ps, m);
-    const std::string pre = type == "coatedconductor" ? "conductor." : "";
-    const PbrtParam* refl = ps.find(pre + "reflectance");
-    if (refl) {
-      // F0 = r for eta = 1, k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4 does the same); a texture
-      // binds the same mapping per hit (MaterialParam::Reflectance).
-      b.bind_to = &m.textures, b.bind_param = MaterialParam::Reflectance;
-      Vec3 r = b.color(ps, pre + "reflectance", Vec3(0.0f), false);
-      b.bind_to = nullptr;
-      conductor_from_reflectance(r, &m);
-    } else {
-      m.eta = metal_param(b, d.at, ps, pre + "eta", true);
-      m.k = metal_param(b, d.at, ps, pre + "k", false);
-    }
+    conductor_index(b, d.at, ps, "", m);
   } else if (type == "coateddiffuse") {
-    // pbrt-v4's random-walk layers as pdrt's analytic coat: the same base reflectance, coat
-    // roughness and index; the medium between the layers, absorbing by default (albedo 0),
-    // becomes the coat's Beer-Lambert transmittance exp(-thickness) per pass.
+    // pbrt-v4's CoatedDiffuseBxDF: the random walk through the layers (render/bxdf/layered.h).
     m.type = MaterialType::CoatedDiffuse;
+    m.layered = true;
     m.albedo = albedo(b, ps, m);
-    for (int c = 0; c < 3; ++c) m.albedo[c] = std::min(m.albedo[c], 1.0f);
     m.roughness = roughness(b, d, ps, m);
-    float eta = index_of_refraction(b, ps);
-    if (eta < 1 || eta > 3) {
-      b.note(d.at, "a coat index of " + pbrt_number(eta) + " is outside pdrt's [1, 3] (clamped)");
-      eta = std::clamp(eta, 1.0f, 3.0f);
-    }
-    m.ior = eta;
-    const float thickness = b.positive(ps, "thickness", 0.01f, true);
-    const Vec3 medium = b.color(ps, "albedo", Vec3(0.0f), false);
-    if (!is_black(medium))
-      b.note(d.at, "a scattering medium in the coat (\"albedo\") is not supported (it only absorbs)");
-    m.coat_color = Vec3(std::exp(-thickness));
-    m.coat_thickness = 1;
-    for (const char* k : {"g", "maxdepth", "nsamples"}) ps.find(k) && (ps.find(k)->used = true);
+    m.ior = index_of_refraction(b, ps, "eta");
+    m.layers = coat_layers(b, ps);
+  } else if (type == "coatedconductor") {
+    // pbrt-v4's CoatedConductorBxDF: a dielectric interface over a conductor, the same walk.
+    m.type = MaterialType::CoatedConductor;
+    m.layered = true;
+    m.roughness = roughness(b, d, ps, m, "interface.");
+    m.base_roughness = roughness(b, d, ps, m, "conductor.", MaterialParam::BaseRoughness);
+    m.ior = index_of_refraction(b, ps, "interface.eta");
+    conductor_index(b, d.at, ps, "conductor.", m);
+    m.layers = coat_layers(b, ps);
   } else if (type == "dielectric") {
     m.type = MaterialType::Dielectric;
     m.albedo = Vec3(1.0f);

@@ -726,29 +726,91 @@ TEST(PbrtImport, StrictRefusesColoursThatRenderDifferentlyInRgb) {
             "colours; grey is exact) [--strict]");
 }
 
-TEST(PbrtImport, CoatedDiffuseMapsOntoPdrtsCoatedDiffuse) {
+TEST(PbrtImport, CoatedDiffuseMapsOntoTheLayeredModel) {
   PbrtImport im = import(std::string(kCamera) +
                          "WorldBegin\n"
                          "Material \"coateddiffuse\" \"rgb reflectance\" [0.2 0.4 0.6] \"float roughness\" 0.04 "
-                         "\"float eta\" 1.4 \"float thickness\" 0.1\n"
+                         "\"float eta\" 1.4 \"float thickness\" 0.1 \"rgb albedo\" [0.5 0.6 0.7] \"float g\" -0.3 "
+                         "\"integer maxdepth\" 7 \"integer nsamples\" 3\n"
                          "Shape \"sphere\"\n"
                          "Material \"coateddiffuse\"\n"
                          "Shape \"sphere\"\n");
   const Material& a = im.scene.materials[im.scene.shapes[0].material];
   EXPECT_EQ(a.type, MaterialType::CoatedDiffuse);
+  EXPECT_TRUE(a.layered);
   expect_near(a.albedo, {0.2f, 0.4f, 0.6f}, 0, "reflectance");
   EXPECT_NEAR(a.roughness, std::sqrt(0.2), 1e-6);  // alpha = sqrt(0.04) = 0.2
   EXPECT_FLOAT_EQ(a.ior, 1.4f);
-  expect_near(a.coat_color, Vec3(float(std::exp(-0.1))), 1e-7f, "an absorbing coat of thickness 0.1");
+  EXPECT_FLOAT_EQ(a.layers.thickness, 0.1f);
+  expect_near(a.layers.albedo, {0.5f, 0.6f, 0.7f}, 0, "the medium's albedo");
+  EXPECT_FLOAT_EQ(a.layers.g, -0.3f);
+  EXPECT_EQ(a.layers.max_depth, 7);
+  EXPECT_EQ(a.layers.samples, 3);
   const Material& b = im.scene.materials[im.scene.shapes[1].material];  // pbrt-v4's defaults
+  EXPECT_TRUE(b.layered);
   expect_near(b.albedo, Vec3(0.5f), 0, "default reflectance");
   EXPECT_EQ(b.roughness, 0);
   EXPECT_FLOAT_EQ(b.ior, 1.5f);
-  expect_near(b.coat_color, Vec3(float(std::exp(-0.01))), 1e-7f, "default thickness 0.01");
+  EXPECT_FLOAT_EQ(b.layers.thickness, 0.01f);
+  expect_near(b.layers.albedo, Vec3(0.0f), 0, "default albedo");
+  EXPECT_EQ(b.layers.g, 0.0f);
+  EXPECT_EQ(b.layers.max_depth, 10);
+  EXPECT_EQ(b.layers.samples, 1);
   EXPECT_TRUE(report_besides_rgb(im.report).empty());
   EXPECT_NE(im.report[0].find("s.pbrt:4:26: \"rgb reflectance\" (0.2, 0.4, 0.6 in linear sRGB) is not grey"),
             std::string::npos)
       << im.report[0];
+}
+
+TEST(PbrtImport, CoatedConductorMapsOntoTheLayeredModel) {
+  PbrtImport im = import(std::string(kCamera) +
+                         "WorldBegin\n"
+                         "Material \"coatedconductor\" \"float interface.roughness\" 0.01 \"float interface.eta\" 1.3 "
+                         "\"spectrum conductor.eta\" \"metal-Au-eta\" \"spectrum conductor.k\" \"metal-Au-k\" "
+                         "\"float conductor.roughness\" 0.16 \"float thickness\" 0.2 \"integer maxdepth\" 4\n"
+                         "Shape \"sphere\"\n"
+                         "Material \"coatedconductor\" \"rgb reflectance\" [0.9 0.5 0.2] \"bool remaproughness\" false "
+                         "\"float conductor.roughness\" 0.25\n"
+                         "Shape \"sphere\"\n"
+                         "Material \"coatedconductor\"\n"
+                         "Shape \"sphere\"\n");
+  const Material& a = im.scene.materials[im.scene.shapes[0].material];
+  EXPECT_EQ(a.type, MaterialType::CoatedConductor);
+  EXPECT_NEAR(a.roughness, std::sqrt(0.1), 1e-6);       // alpha = sqrt(0.01)
+  EXPECT_NEAR(a.base_roughness, std::sqrt(0.4), 1e-6);  // alpha = sqrt(0.16)
+  EXPECT_FLOAT_EQ(a.ior, 1.3f);
+  expect_near(a.eta, find_named_metal("Au")->eta, 0, "gold's eta");
+  expect_near(a.k, find_named_metal("Au")->k, 0, "gold's k");
+  EXPECT_FLOAT_EQ(a.layers.thickness, 0.2f);
+  EXPECT_EQ(a.layers.max_depth, 4);
+  const Material& b = im.scene.materials[im.scene.shapes[1].material];
+  expect_near(b.eta, Vec3(1.0f), 0, "reflectance: eta 1");
+  EXPECT_NEAR(b.k[0], 2 * std::sqrt(0.9) / std::sqrt(0.1), 1e-4);
+  EXPECT_NEAR(b.base_roughness, 0.5, 1e-6);                             // alpha 0.25 unremapped
+  const Material& c = im.scene.materials[im.scene.shapes[2].material];  // pbrt-v4's defaults: copper
+  expect_near(c.eta, find_named_metal("Cu")->eta, 0, "copper's eta");
+  EXPECT_EQ(c.roughness, 0);
+  EXPECT_EQ(c.base_roughness, 0);
+  EXPECT_FLOAT_EQ(c.ior, 1.5f);
+  EXPECT_FLOAT_EQ(c.layers.thickness, 0.01f);
+  EXPECT_TRUE(report_besides_rgb(im.report).empty());  // the metals' spectra as RGB
+}
+
+TEST(PbrtImport, BadLayeredParametersAreRefusedWithTheirPosition) {
+  const std::string w = std::string(kCamera) + "WorldBegin\n";
+  EXPECT_EQ(import_error(w + "Material \"coateddiffuse\" \"float thickness\" -1\n"),
+            "s.pbrt:4:26: \"float thickness\" must be >= 0, got -1");
+  EXPECT_EQ(import_error(w + "Material \"coateddiffuse\" \"integer maxdepth\" -2\n"),
+            "s.pbrt:4:26: \"integer maxdepth\" must be in [0, 1000], got -2");
+  EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"integer nsamples\" 0\n"),
+            "s.pbrt:4:28: \"integer nsamples\" must be in [1, 256], got 0");
+  EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"float interface.eta\" 0\n"),
+            "s.pbrt:4:28: \"float interface.eta\" must be > 0, got 0");
+  EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"float conductor.roughness\" -0.5\n"),
+            "s.pbrt:4:28: \"float conductor.roughness\" must be >= 0, got -0.5");
+  EXPECT_EQ(import_error(w + "Material \"coatedconductor\" \"rgb reflectance\" [0.5 0.5 0.5] "
+                             "\"rgb conductor.eta\" [1 1 1]\n"),
+            "s.pbrt:4:28: \"reflectance\" cannot be given with \"conductor.eta\" (pbrt-v4 refuses both)");
 }
 
 TEST(PbrtImport, TexturesMapOntoPdrtsAndBindToReflectance) {

@@ -791,9 +791,35 @@ TEST_F(SceneLoader, CoatedDiffuseRefusesOtherMaterialsKeys) {
   };
   EXPECT_ERROR(with(R"("energy_compensation": true)"), "s.json:5:37: materials.m.energy_compensation unknown key");
   EXPECT_ERROR(with(R"("eta": [1, 1, 1])"), "materials.m.eta unknown key");
-  EXPECT_ERROR(
-      with(R"("thickness": 1)"),
-      "materials.m.thickness unknown key (expected one of: type, albedo, roughness, ior, coat_color, coat_thickness)");
+  EXPECT_ERROR(with(R"("thickness": 1)"),
+               "materials.m.thickness unknown key (expected one of: type, model, albedo, roughness, ior, coat_color, "
+               "coat_thickness)");
+}
+
+// pbrt-v4's layered model: its slab keys only with "model": "layered", the analytic coat's not then.
+TEST_F(SceneLoader, LayeredCoatsTakeTheirSlabAndRefuseTheAnalyticKeys) {
+  auto with = [&](const std::string& m) {
+    return scene(kHead + "  \"materials\": {\n    \"m\": {" + m + "}\n  }\n}\n");
+  };
+  SceneDesc s = load_scene(
+      with(R"("type": "coated_conductor", "metal": "Au", "ior": 1.2, "base_roughness": 0.3, )"
+           R"("thickness": 0.5, "medium_albedo": [0.1, 0.2, 0.3], "g": -0.5, "max_depth": 4, "samples": 2)"));
+  const Material& m = s.materials.at(0);
+  EXPECT_EQ(m.type, MaterialType::CoatedConductor);
+  EXPECT_FLOAT_EQ(m.ior, 1.2f);
+  EXPECT_FLOAT_EQ(m.base_roughness, 0.3f);
+  EXPECT_FLOAT_EQ(m.layers.thickness, 0.5f);
+  EXPECT_FLOAT_EQ(m.layers.albedo.y, 0.2f);
+  EXPECT_FLOAT_EQ(m.layers.g, -0.5f);
+  EXPECT_EQ(m.layers.max_depth, 4);
+  EXPECT_EQ(m.layers.samples, 2);
+  EXPECT_ERROR(with(R"("type": "coated_diffuse", "model": "layered", "coat_color": [1, 1, 1])"),
+               "s.json:5:57: materials.m.coat_color unknown key");
+  EXPECT_ERROR(with(R"("type": "coated_diffuse", "model": "layered", "g": 1.5)"),
+               "materials.m.g must be in [-1,1], got 1.5");
+  EXPECT_ERROR(with(R"("type": "coated_diffuse", "model": "layered", "samples": 0)"), "materials.m.samples");
+  EXPECT_ERROR(with(R"("type": "coated_diffuse", "model": "fancy")"), "materials.m.model must be one of");
+  EXPECT_ERROR(with(R"("type": "coated_conductor", "ior": 1.5)"), "materials.m needs metal");
 }
 
 TEST_F(SceneLoader, AlbedoOutOfRange) {

@@ -96,6 +96,43 @@ TEST(SceneWriter, AnImportedPbrtSceneRoundTripsToTheSameImage) {
   fs::remove_all(dir);
 }
 
+// pbrt-v4's layered materials (coated_diffuse "model": "layered", coated_conductor) keep every
+// parameter of their slab through `pdrt convert`, and the image.
+TEST(SceneWriter, LayeredMaterialsRoundTripWithTheirSlab) {
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "s.pbrt")
+      << "LookAt 0 2 -5  0 0.5 0  0 1 0\n"
+         "Camera \"perspective\" \"float fov\" 40\n"
+         "WorldBegin\n"
+         "LightSource \"infinite\" \"rgb L\" [0.5 0.5 0.5]\n"
+         "Material \"coateddiffuse\" \"rgb reflectance\" [0.6 0.3 0.2] \"float roughness\" 0.15 \"float thickness\" 0.3"
+         " \"rgb albedo\" [0.4 0.5 0.6] \"float g\" 0.2 \"integer maxdepth\" 6 \"integer nsamples\" 2 \"float eta\" "
+         "1.33\n"
+         "Shape \"sphere\" \"float radius\" 0.8\n"
+         "Material \"coatedconductor\" \"float interface.roughness\" 0.05 \"float conductor.roughness\" 0.3"
+         " \"spectrum conductor.eta\" \"metal-Au-eta\" \"spectrum conductor.k\" \"metal-Au-k\"\n"
+         "Translate 1.5 0 0\nShape \"sphere\" \"float radius\" 0.5\n";
+  SceneDesc s = load_pbrt_scene(dir / "s.pbrt", false).scene;
+  write_scene_json(s, dir / "s.json");
+  SceneDesc back = load_scene(dir / "s.json");
+  ASSERT_EQ(back.materials.size(), s.materials.size());
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    const Material &a = s.materials[i], &b = back.materials[i];
+    EXPECT_EQ(a.type, b.type);
+    EXPECT_EQ(a.layered, b.layered);
+    EXPECT_EQ(a.roughness, b.roughness);
+    EXPECT_EQ(a.base_roughness, b.base_roughness);
+    EXPECT_EQ(a.ior, b.ior);
+    EXPECT_EQ(a.layers.thickness, b.layers.thickness);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(a.layers.albedo[c], b.layers.albedo[c]);
+    EXPECT_EQ(a.layers.g, b.layers.g);
+    EXPECT_EQ(a.layers.max_depth, b.layers.max_depth);
+    EXPECT_EQ(a.layers.samples, b.layers.samples);
+  }
+  EXPECT_LT(image_difference(s, back), 1e-6);
+  fs::remove_all(dir);
+}
+
 // Prototypes and instances (static and moving) written as "prototypes" and instance objects:
 // each prototype mesh once, however many instances place it.
 TEST(SceneWriter, PrototypesAndInstancesRoundTripWithEachMeshWrittenOnce) {

@@ -7,12 +7,17 @@
 //   embree prim+shadow  bench_render's probe: camera ray, and an occlusion ray per hit
 //   pdrt render         render() at max_depth 1 (camera, shadow and the MIS extension ray),
 //                       the scene build excluded
-// with Mrays/s, Mrays/s per thread, the speed-up over the first count, pdrt's speed-up over
-// each probe's, pdrt's rays/s over the prim+shadow probe's (bench_render's ratio), the share
-// of pdrt's worker time spent inside tiles (the rest: waiting at the end of a wave or for
-// work), and the heap allocations per sample of one extra, untimed render.
+// with Mrays/s, Mrays/s per thread, the speed-up over the first count, and Mrays per CPU-second
+// with its ratio to the first count's (process CPU time: on a loaded machine the wall clock
+// of N threads includes time other processes held the cores, the CPU clock does not, while
+// threads that wait spinning do count: a ratio below 1 is work lost to waiting or contention).
+// Then per count pdrt's speed-up over each probe's (wall, and per CPU-second), pdrt's rays/s
+// over the prim+shadow probe's (bench_render's ratio), the share of pdrt's worker time spent
+// inside tiles (the rest: waiting at the end of a wave or for work), and the heap allocations
+// per sample of one extra, untimed render.
 //   ./build/bench/thread_scaling [rounds (5)] [thread counts (1,2)]
 #include "raw_embree_probe.h"
+#include "renderer/render/process_cpu_time.h"
 #include "renderer/render/renderer.h"
 #include "tessellated_scene.h"
 
@@ -56,7 +61,7 @@ const char* const kNames[] = {"embree coherent", "embree incoherent", "embree pr
 constexpr int kWorkloads = 4, kPdrt = 3;
 
 struct Sample {
-  double seconds = 0;
+  double seconds = 0, cpu_seconds = 0;
   int64_t rays = 0;
   double busy = 0;  // pdrt: tile thread-seconds / (threads x seconds)
 };
@@ -84,6 +89,7 @@ struct Bench {
       o.quiet = true, o.threads = threads;
       const RenderResult r = render(scene, *sampler, o);
       s.seconds = r.stats.seconds - r.stats.build_seconds, s.rays = r.stats.rays;
+      s.cpu_seconds = r.stats.cpu_seconds - r.stats.build_cpu_seconds;
       const RankStats& k = r.stats.ranks.front();
       s.busy = k.tile_seconds / (r.stats.threads * (k.seconds - k.exchange_seconds));
       return s;
@@ -91,6 +97,7 @@ struct Bench {
     tbb::task_arena arena(threads);
     tbb::enumerable_thread_specific<int64_t> rays(0);
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = process_cpu_seconds();
     arena.execute([&] {
       if (workload == 1) {
         const uint64_t n = uint64_t(kW) * kH * kSpp * 2;
@@ -103,7 +110,7 @@ struct Bench {
         });
       }
     });
-    s.seconds = since(t0);
+    s.seconds = since(t0), s.cpu_seconds = process_cpu_seconds() - c0;
     for (int64_t n : rays) s.rays += n;
     return s;
   }
@@ -134,25 +141,35 @@ int main(int argc, char** argv) {
       const int t = counts[r % 2 ? counts.size() - 1 - i : i];
       for (int w = 0; w < kWorkloads; ++w) got[{w, t}].push_back(b.run(w, t));
     }
-  auto mrays = [&](int w, int t) {
+  auto mrays = [&](int w, int t, bool cpu = false) {
     std::vector<double> v;
-    for (const Sample& s : got[{w, t}]) v.push_back(s.rays / s.seconds * 1e-6);
+    for (const Sample& s : got[{w, t}]) v.push_back(s.rays / (cpu ? s.cpu_seconds : s.seconds) * 1e-6);
     return median(v);
   };
-  std::printf("\n%-20s %7s %10s %12s %9s\n", "workload", "threads", "Mrays/s", "per thread", "speed-up");
+  std::printf("\n%-20s %7s %10s %12s %9s %14s %10s\n", "workload", "threads", "Mrays/s", "per thread", "speed-up",
+              "Mrays/CPU-s", "vs first");
   for (int w = 0; w < kWorkloads; ++w)
     for (int t : counts)
-      std::printf("%-20s %7d %10.2f %12.2f %9.3f\n", kNames[w], t, mrays(w, t), mrays(w, t) / t,
-                  mrays(w, t) / mrays(w, counts.front()));
-  std::printf("\n%7s %-28s %-28s %-28s %-22s %-10s %s\n", "threads", "pdrt speed-up / coherent's",
-              "pdrt speed-up / incoherent's", "pdrt speed-up / prim+shadow", "pdrt / prim+shadow rays", "busy",
-              "allocs/sample");
+      std::printf("%-20s %7d %10.2f %12.2f %9.3f %14.2f %10.3f\n", kNames[w], t, mrays(w, t), mrays(w, t) / t,
+                  mrays(w, t) / mrays(w, counts.front()), mrays(w, t, true),
+                  mrays(w, t, true) / mrays(w, counts.front(), true));
+  // pdrt's speed-up over each probe's (wall clock, then rays per CPU-second), its rays/s over
+  // the prim+shadow probe's (wall, CPU), the workers' busy share and the allocations.
+  std::printf("\n%7s %-26s %-26s %-16s %-6s %s\n", "threads", "speed-up / raw's (wall)", "per CPU-s / raw's",
+              "pdrt / p+s rays", "busy", "allocs/sample");
+  std::printf("%7s %-26s %-26s %-16s\n", "", "coh / incoh / p+s", "coh / incoh / p+s", "wall / CPU");
   for (int t : counts) {
-    auto up = [&](int w) { return mrays(w, t) / mrays(w, counts.front()); };
+    auto up = [&](int w, bool cpu) { return mrays(w, t, cpu) / mrays(w, counts.front(), cpu); };
     std::vector<double> busy;
     for (const Sample& s : got[{kPdrt, t}]) busy.push_back(s.busy);
-    std::printf("%7d %-28.3f %-28.3f %-28.3f %-22.3f %-10.3f %.4f\n", t, up(kPdrt) / up(0), up(kPdrt) / up(1),
-                up(kPdrt) / up(2), mrays(kPdrt, t) / mrays(2, t), median(busy), b.allocations_per_sample(t));
+    char wall[64], cpu[64], rays[64];
+    std::snprintf(wall, sizeof wall, "%.3f / %.3f / %.3f", up(kPdrt, false) / up(0, false),
+                  up(kPdrt, false) / up(1, false), up(kPdrt, false) / up(2, false));
+    std::snprintf(cpu, sizeof cpu, "%.3f / %.3f / %.3f", up(kPdrt, true) / up(0, true), up(kPdrt, true) / up(1, true),
+                  up(kPdrt, true) / up(2, true));
+    std::snprintf(rays, sizeof rays, "%.3f / %.3f", mrays(kPdrt, t) / mrays(2, t),
+                  mrays(kPdrt, t, true) / mrays(2, t, true));
+    std::printf("%7d %-26s %-26s %-16s %-6.3f %.4f\n", t, wall, cpu, rays, median(busy), b.allocations_per_sample(t));
   }
   return 0;
 }

@@ -119,7 +119,9 @@ class Sampler {
   // them when `grows` is set; sets out->coords = nullptr when the sampler has no such form
   // (the default). Every built-in sampler has one: a value then costs a table read.
   virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
-  // Whether prepare() computes every value it stores (true) or points into stored tables.
+  // True: preparing costs about what the values asked one by one would, so PixelSampleState
+  // prepares only the streams most samples use and asks for deep ones value by value; false
+  // (a sampler whose values cost far more alone than prepared): every stream is prepared.
   virtual bool prepare_computes(Family) const { return true; }
 
   // How many samples pixel (px, py) can take before values stop being well distributed

@@ -121,6 +121,11 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   j["sampler_share"] = profile_json(r.stats.sampler_profile);
   j["triangles"] = r.stats.triangles;
   j["threads"] = r.stats.threads;
+  j["cpus_allowed"] = r.stats.cpus_allowed;
+  // This rank's workers' busy share: thread-seconds in tiles over threads x rendering time.
+  const RankStats& me = r.stats.ranks.front();
+  const double span = r.stats.threads * (me.seconds - me.exchange_seconds);
+  j["threads_busy"] = span > 0 ? me.tile_seconds / span : 0.0;
   j["partial"] = r.stats.partial;
   if (r.stats.ranks.size() > 1) {
     j["ranks"] = nlohmann::json::array();
@@ -131,7 +136,8 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
                             {"samples", k.samples},
                             {"rays", k.rays},
                             {"tiles", k.tiles},
-                            {"bytes_sent", k.bytes_sent}});
+                            {"bytes_sent", k.bytes_sent},
+                            {"tile_seconds", k.tile_seconds}});
   }
   return j;
 }

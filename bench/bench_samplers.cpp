@@ -106,6 +106,9 @@ BENCHMARK_CAPTURE(BM_PathPattern, jitter, "jitter");
 BENCHMARK_CAPTURE(BM_PathPattern, poisson, "poisson");
 BENCHMARK_CAPTURE(BM_PathPattern, poisson_065, "poisson-065");
 BENCHMARK_CAPTURE(BM_PathPattern, sobol, "sobol");
+BENCHMARK_CAPTURE(BM_PathPattern, pmj02bn, "pmj02bn");
+BENCHMARK_CAPTURE(BM_PathPattern, zsobol, "zsobol");
+BENCHMARK_CAPTURE(BM_PathPattern, regular, "regular");
 
 // Issue 16: a table set must generate in <= 10 s on one core; the build generates both.
 void BM_DefaultTablesOneCore(benchmark::State& state, pdrt::TableSetKind kind) {

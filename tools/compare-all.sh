@@ -24,21 +24,7 @@ for scene in scenes/*.json scenes/pbrt/*/*.pbrt; do
     "$B/pdrt" collect "$OUT/$name" --quiet
     continue
   fi
-  # The film's size: JSON film.width/height; pbrt Film xresolution/yresolution (pbrt's
-  # defaults 1280x720 where absent).
-  read -r w h < <(/usr/bin/env python3 - "$scene" "$SCALE" <<'PY'
-import json, re, sys
-path, scale = sys.argv[1], int(sys.argv[2])
-if path.endswith(".pbrt"):
-    text = re.sub(r"#[^\n]*", "", open(path).read())
-    res = lambda k, d: int(re.search(r'"integer %s"\s*\[?\s*(\d+)' % k, text).group(1)) if re.search(r'"integer %s"' % k, text) else d
-    w, h = res("xresolution", 1280), res("yresolution", 720)
-else:
-    f = json.load(open(path))["film"]
-    w, h = f["width"], f["height"]
-print(w // scale, h // scale)
-PY
-)
+  read -r w h < <(tools/film-size.py "$scene" "$SCALE")  # pbrt: 1280x720 unless the Film says
   echo "== $name (${w}x${h}, spp $SPP, $SEEDS seeds, reference $REF spp)"
   if [ "$MODE" = plan ]; then
     target=(--plan "$OUT/$name" --quiet)

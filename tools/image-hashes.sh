@@ -6,7 +6,7 @@
 #   tools/image-hashes.sh after.txt && diff before.txt after.txt
 # A refused combination is recorded with its exit status and the first line of its message, so
 # errors must stay the same too. PDRT_BUILD picks the build folder (default build), JOBS the
-# parallel renders (default: the cores).
+# parallel renders (default: the cores), SAMPLERS the samplers (default: the six below).
 # Usage: tools/image-hashes.sh MANIFEST [SCENE ...]
 set -euo pipefail
 [ $# -ge 1 ] || { echo "usage: tools/image-hashes.sh MANIFEST [SCENE ...]" >&2; exit 2; }
@@ -16,7 +16,7 @@ scenes=("$@")
 if [ ${#scenes[@]} -eq 0 ]; then
   mapfile -t scenes < <(ls scenes/*.json scenes/examples/*.json scenes/pbrt/*/*.pbrt | sort)
 fi
-samplers=(random jitter poisson poisson-065 sobol regular)
+samplers=(${SAMPLERS:-random jitter poisson poisson-065 sobol regular})  # SAMPLERS="a b" to choose
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

@@ -1,6 +1,7 @@
 #include "renderer/render/renderer.h"
 
 #include "renderer/render/adaptive_rounds.h"
+#include "renderer/render/cpu_affinity.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/filter.h"
 #include "renderer/render/light_set.h"
@@ -49,6 +50,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const bool split = ad.enabled && ad.decision == AdaptiveDecision::Split;
   const RenderRegion region = render_region(desc);
   check_film_memory(region.rect.width(), region.rect.height(), desc.film.size_where, split ? 2 : 1);
+  warn_thread_request(opt.threads);
   std::optional<tbb::global_control> limit;
   if (opt.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(opt.threads));
   RenderClock clock;
@@ -97,6 +99,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.adaptive_rounds = rounds;
   res.stats.triangles = scene.triangle_count();
   res.stats.threads = worker_threads();
+  res.stats.cpus_allowed = allowed_cpus();
   return res;
 }
 

@@ -16,7 +16,7 @@
 namespace pdrt {
 
 struct RenderOptions {
-  int threads = 0;                            // 0 = all hardware threads
+  int threads = 0;                            // 0 = every CPU of the affinity mask (TBB's default)
   bool quiet = false;                         // no progress on stderr
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
   // The processes sharing the render (docs/distributed.md); nullptr = this one alone. Every
@@ -33,6 +33,9 @@ struct RankStats {
   int64_t rays = 0;
   int64_t tiles = 0;       // tile passes it rendered
   int64_t bytes_sent = 0;  // its blocks' pixel state, sent to every other rank
+  // Thread-seconds its workers spent inside tiles: over threads x (seconds - exchange_seconds),
+  // the share of the workers' time that was work, the rest waiting (end of a wave, idle threads).
+  double tile_seconds = 0;
 };
 
 struct RenderStats {
@@ -48,6 +51,7 @@ struct RenderStats {
   int adaptive_rounds = 0;  // refinement rounds after the first pass
   std::size_t triangles = 0;
   int threads = 0;                 // worker threads the render ran on (options' 0 resolved)
+  int cpus_allowed = 0;            // CPUs in the process's affinity mask (renderer/render/cpu_affinity.h)
   SamplerProfile sampler_profile;  // CPU ticks of the passes, and those spent computing sample values
   std::vector<RankStats> ranks;    // per process, by rank (one entry when not distributed)
 };

@@ -4,6 +4,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <chrono>
 #include <optional>
 
 namespace pdrt {
@@ -50,6 +51,7 @@ bool TilePasses::run(const char* label, const std::function<int64_t(int, int)>& 
 }
 
 void TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled) {
+  const auto t0 = std::chrono::steady_clock::now();
   const PixelRect region = tiles_.region(), p = tiles_.pixels(t);
   int64_t& rays = rays_.local();
   PixelSampleState ps(sampler_);
@@ -70,12 +72,14 @@ void TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_
       rays += pixels_.run(x, y, begin, end, films_.image, films_.decision_or_null(), ps, pd ? &*pd : nullptr);
       count += films_.traced(fx, fy) - before;
     }
+  busy_.local() += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 RankStats TilePasses::rank_stats() const {
   RankStats s = mine_;
   for (int64_t r : rays_) s.rays += r;
   for (int64_t n : traced_) s.samples += n;
+  for (double b : busy_) s.tile_seconds += b;
   return s;
 }
 

@@ -46,6 +46,7 @@ class TilePasses {
   // distributed render stops at the next pixel, not after the tile, so the partial image gets out.
   bool stop_in_tile_;
   tbb::enumerable_thread_specific<int64_t> rays_{0}, traced_{0};
+  tbb::enumerable_thread_specific<double> busy_{0.0};  // seconds inside render_tile
   RankStats mine_;
   bool stopped_ = false;
 };

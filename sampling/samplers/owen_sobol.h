@@ -3,17 +3,29 @@
 // uniform (Owen) scramble, shared by `sobol` and `zsobol`.
 #include "sampling/core/bit_reverse.h"
 
+#include <array>
 #include <cstdint>
 
 namespace pdrt {
 
 // The second Sobol dimension (x+1 polynomial: v_j = v_{j-1} ^ (v_{j-1} >> 1)), computed bit
 // reversed (v_0 = 1, v_j = v_{j-1} ^ (v_{j-1} << 1)), the form the scramble works on.
+// Linear over GF(2) in the bits of i, so one table per byte of i: four reads and three xors
+// instead of a step per bit.
+inline constexpr std::array<std::array<uint32_t, 256>, 4> kSobolDim1Bytes = [] {
+  std::array<std::array<uint32_t, 256>, 4> t{};
+  for (int b = 0; b < 4; ++b)
+    for (uint32_t i = 0; i < 256; ++i) {
+      uint32_t j = i << (8 * b), v = 1, x = 0;
+      for (; j; j >>= 1, v ^= v << 1)
+        if (j & 1) x ^= v;
+      t[b][i] = x;
+    }
+  return t;
+}();
 inline uint32_t sobol_dim1_reversed(uint32_t i) {
-  uint32_t v = 1, x = 0;
-  for (; i; i >>= 1, v ^= v << 1)
-    if (i & 1) x ^= v;
-  return x;
+  return kSobolDim1Bytes[0][i & 255] ^ kSobolDim1Bytes[1][(i >> 8) & 255] ^ kSobolDim1Bytes[2][(i >> 16) & 255] ^
+         kSobolDim1Bytes[3][i >> 24];
 }
 
 // Hash-based Owen scramble (Burley 2020, after Laine & Karras 2011, with Vegdahl's improved
@@ -31,6 +43,10 @@ inline uint32_t owen_scramble_reversed(uint32_t x, uint64_t seed) {
   x ^= x * 0x53a22864u;
   return reverse_bits32(x);
 }
+
+// out[i] = owen_scramble_reversed(x[i], seed) for i < n, in a loop that vectorises (AVX2 where
+// the processor has it): the prepared streams' values.
+void owen_scramble_all(uint32_t n, const uint32_t* x, uint64_t seed, uint32_t* out);
 
 // Scrambled Sobol dimensions 0 and 1 of index j, in 32-bit fixed point.
 inline uint32_t sobol_0(uint32_t j, uint64_t s) { return owen_scramble_reversed(j, s); }

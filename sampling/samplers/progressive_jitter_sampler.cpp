@@ -140,6 +140,9 @@ class ProgressiveJitterSampler final : public Sampler {
       fill_prepared(out, n, 1, [&](uint32_t i, uint32_t* v) { v[0] = x[perm[i]]; });
     }
   }
+  // A value asked alone walks its chain of parents; a prepared one is a copy: preparing
+  // every stream, the deep ones too, costs less (BM_PathPattern, issue 33).
+  bool prepare_computes(Family) const override { return false; }
 };
 
 }  // namespace

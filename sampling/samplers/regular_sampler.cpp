@@ -8,6 +8,8 @@
 #include "sampling/core/rng.h"
 #include "sampling/samplers/sampler.h"
 
+#include <vector>
+
 namespace pdrt {
 namespace {
 
@@ -40,12 +42,23 @@ class RegularSampler final : public Sampler {
     return {unit_from_u32(van_der_corput(uint32_t(index)) + 0x80000000u),
             unit_from_u32(sobol_second(uint32_t(index)) + 0x80000000u)};
   }
-  void prepare(int, int, Family f, int, PreparedStream* out) const override {
-    fill_prepared(out, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
-      v[0] = van_der_corput(i) + 0x80000000u;
-      if (family_dim(f) == 2) v[1] = sobol_second(i) + 0x80000000u;
-    });
+  // Every stream is the same sequence: its first kStored points, computed once, are a table
+  // every stream reads (a 1-D family reads the first axis).
+  void prepare(int, int, Family, int, PreparedStream* out) const override {
+    static const std::vector<uint32_t> points = [] {
+      std::vector<uint32_t> p(2 * std::size_t(kStored));
+      for (uint32_t i = 0; i < kStored; ++i)
+        p[2 * i] = van_der_corput(i) + 0x80000000u, p[2 * i + 1] = sobol_second(i) + 0x80000000u;
+      return p;
+    }();
+    fill_prepared(out, kStored, 2, nullptr);
+    out->coords = points.data();
+    out->grows = false;
   }
+  bool prepare_computes(Family) const override { return false; }
+
+ private:
+  static constexpr uint32_t kStored = uint32_t(1) << 16;
 };
 
 }  // namespace

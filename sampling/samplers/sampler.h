@@ -119,7 +119,9 @@ class Sampler {
   // them when `grows` is set; sets out->coords = nullptr when the sampler has no such form
   // (the default). Every built-in sampler has one: a value then costs a table read.
   virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
-  // Whether prepare() computes every value it stores (true) or points into stored tables.
+  // True: preparing costs about what the values asked one by one would, so PixelSampleState
+  // prepares only the streams most samples use and asks for deep ones value by value; false
+  // (a sampler whose values cost far more alone than prepared): every stream is prepared.
   virtual bool prepare_computes(Family) const { return true; }
 
   // How many samples pixel (px, py) can take before values stop being well distributed
@@ -145,7 +147,11 @@ class PixelSampleState {
   explicit PixelSampleState(const Sampler& s) : s_(&s) {}
   const Sampler& sampler() const { return *s_; }
   void start_pixel_sample(int px, int py, int64_t index) {
-    if (px != px_ || py != py_) px_ = px, py_ = py, ++epoch_;
+    if (px != px_ || py != py_) {
+      px_ = px, py_ = py, ++epoch_;
+      for (uint32_t i = 0; i < touched_; ++i) ready_[touched_slot_[i]] = 0;
+      touched_ = 0;
+    }
     index_ = index;
   }
   // The current pass takes indices [begin, end) of the pixel's streams: a stream that most of
@@ -156,12 +162,17 @@ class PixelSampleState {
   }
   double get_1d(Family f, int bounce = 0) const {
     SamplerScope scope;
+    const int k = int(f) * kSlots + bounce;
+    if (unsigned(bounce) < unsigned(kSlots) && uint64_t(index_) < ready_[k]) return slot_[k].value(index_, 0);
     const PreparedStream* p = prepared(f, bounce);
     if (p && uint64_t(index_) < p->count) return p->value(index_, 0);
     return s_->get_1d(px_, py_, index_, f, bounce);
   }
   Vec2 get_2d(Family f, int bounce = 0) const {
     SamplerScope scope;
+    const int k = int(f) * kSlots + bounce;
+    if (unsigned(bounce) < unsigned(kSlots) && uint64_t(index_) < ready_[k])
+      return {slot_[k].value(index_, 0), slot_[k].value(index_, 1)};
     const PreparedStream* p = prepared(f, bounce);
     if (p && uint64_t(index_) < p->count) return {p->value(index_, 0), p->value(index_, 1)};
     return s_->get_2d(px_, py_, index_, f, bounce);
@@ -200,7 +211,10 @@ class PixelSampleState {
       p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(2 * int64_t(p.want), index_ + 1), INT32_MAX));
       s_->prepare(px_, py_, f, bounce, &p);
     }
-    return p.coords ? &p : nullptr;
+    if (!p.coords) return nullptr;
+    if (ready_[k] == 0 && p.count > 0) touched_slot_[touched_++] = uint16_t(k);
+    ready_[k] = p.count;  // later calls of this pixel below it take the fast path in get_1d / get_2d
+    return &p;
   }
   static constexpr uint32_t kDeclined = UINT32_MAX;        // the sampler has no prepared form
   static constexpr int64_t kMaxBudget = int64_t(1) << 16;  // larger passes grow by doubling
@@ -211,6 +225,12 @@ class PixelSampleState {
   int64_t index_ = 0;
   uint32_t epoch_ = 1;  // differs from the slots' initial 0 even before the first pixel
   mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{}, uses_{};
+  // The slots prepared for this pixel: values below ready_[k] are stored (0: ask prepared()),
+  // in one small array so that the common call reads one word before its value; touched_slot_
+  // lists the nonzero ones, cleared when the pixel changes.
+  mutable std::array<uint32_t, kFamilyCount * kSlots> ready_{};
+  mutable std::array<uint16_t, kFamilyCount * kSlots> touched_slot_{};
+  mutable uint32_t touched_ = 0;
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 

@@ -13,12 +13,6 @@
 namespace pdrt {
 namespace {
 
-// The prepared streams' values in loops that vectorise (AVX2 where the processor has it).
-__attribute__((target_clones("avx2", "default"))) void scramble(uint32_t n, const uint32_t* x, uint64_t s,
-                                                                uint32_t* out) {
-  for (uint32_t i = 0; i < n; ++i) out[i] = owen_scramble_reversed(x[i], s);
-}
-
 class SobolSampler final : public Sampler {
  public:
   explicit SobolSampler(uint64_t seed) : Sampler(seed) {}
@@ -40,7 +34,7 @@ class SobolSampler final : public Sampler {
     IndexShuffle(s).fill(n, perm.data());
     out->own.resize(std::size_t(n) * family_dim(f));
     if (family_dim(f) == 1) {
-      scramble(n, perm.data(), s, out->own.data());
+      owen_scramble_all(n, perm.data(), s, out->own.data());
     } else {
       // The second dimension in index order, each from an earlier one: d1(j) = d1(j - lowbit) ^ v_lowbit.
       thread_local std::vector<uint32_t> d1, axis;
@@ -49,14 +43,17 @@ class SobolSampler final : public Sampler {
       d1[0] = 0;
       for (uint32_t j = 1; j < all; ++j) d1[j] = d1[j & (j - 1)] ^ sobol_dim1_reversed(j & (0u - j));
       axis.resize(2 * std::size_t(n));
-      scramble(n, perm.data(), s, axis.data());
+      owen_scramble_all(n, perm.data(), s, axis.data());
       for (uint32_t i = 0; i < n; ++i) perm[i] = d1[perm[i]];
-      scramble(n, perm.data(), mix64(s), axis.data() + n);
+      owen_scramble_all(n, perm.data(), mix64(s), axis.data() + n);
       for (uint32_t i = 0; i < n; ++i) out->own[2 * i] = axis[i], out->own[2 * i + 1] = axis[n + i];
     }
     fill_prepared(out, n, family_dim(f), nullptr);
   }
   int64_t samples_available(int, int) const override { return int64_t(1) << 32; }
+  // A value asked alone walks its index shuffle and two scrambles; a prepared one is a copy: preparing
+  // every stream, the deep ones too, costs less (BM_PathPattern, issue 33).
+  bool prepare_computes(Family) const override { return false; }
 };
 
 }  // namespace

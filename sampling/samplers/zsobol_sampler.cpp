@@ -7,9 +7,11 @@
 #include "sampling/core/rng.h"
 #include "sampling/samplers/owen_sobol.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <string>
+#include <vector>
 
 namespace pdrt {
 namespace {
@@ -45,6 +47,68 @@ uint32_t morton2(uint32_t x, uint32_t y) {
 
 int ceil_log2(int64_t n) { return n <= 1 ? 0 : 64 - __builtin_clzll(uint64_t(n - 1)); }
 
+// The scramble key of a dimension's block of samples (block b: a pixel's samples [b 2^m, (b + 1) 2^m)).
+uint64_t block_key(uint64_t dimension_stream, uint64_t block) {
+  return mix64(dimension_stream ^ (block * 0x9e3779b97f4a7c15ull));
+}
+
+// Which of the 24 permutations the base-4 digit at `shift` takes: a hash of the unpermuted
+// digits above it, so aligned blocks of indices map onto aligned blocks (Ahmed & Wonka §4).
+uint32_t digit_permutation(uint32_t z, int shift, uint64_t key) {
+  const uint64_t above = uint64_t(z) >> (shift + 2);
+  const uint64_t h = mix64(key ^ (above * 0xc2b2ae3d27d4eb4full) ^ uint64_t(shift));
+  return uint32_t(((h >> 32) * 24u) >> 32);
+}
+
+// An odd bit count's last bit, flipped by the bits above it.
+uint32_t last_bit(uint32_t z, uint64_t key) {
+  const uint64_t h = mix64(key ^ (uint64_t(z >> 1) * 0xc2b2ae3d27d4eb4full) ^ 0x5bd1e995ull);
+  return (z & 1u) ^ uint32_t(h >> 63);
+}
+
+// zsobol_sobol_index for one key over indices in increasing order. The digits above the
+// highest bit that changed from the previous index keep their output, and a digit's
+// permutation is hashed once per distinct prefix above it (the digit at 2l from the bottom
+// changes prefix every 4^(l+1) indices): a block of 4^j samples hashes about 4^j / 3 times
+// instead of j 4^j, and the pixel's digits once.
+class DigitCache {
+ public:
+  explicit DigitCache(int bits) : bits_(bits), levels_(bits / 2) {}
+  void reset(uint64_t key) { key_ = key, above_.fill(UINT64_MAX), last_above_ = UINT64_MAX, have_ = false; }
+  uint32_t operator()(uint32_t z) {
+    const int lo = bits_ & 1;
+    int level = 0;
+    uint32_t out = 0;
+    if (have_) {
+      const uint32_t diff = z ^ prev_;
+      const int d = diff ? 31 - __builtin_clz(diff) : -1;
+      level = bits_ - 2 > d ? std::min(levels_, (bits_ - 2 - d + 1) / 2) : 0;  // digits with shift > d
+      out = level > 0 ? acc_[level - 1] : 0;
+    }
+    for (int shift = bits_ - 2 - 2 * level; shift >= lo; shift -= 2, ++level) {
+      const uint64_t above = uint64_t(z) >> (shift + 2);
+      if (above != above_[level]) above_[level] = above, perm_[level] = uint8_t(digit_permutation(z, shift, key_));
+      out |= uint32_t(kPermutations4[perm_[level]][(z >> shift) & 3u]) << shift;
+      acc_[level] = out;
+    }
+    prev_ = z, have_ = true;
+    if (bits_ & 1) {
+      if ((z >> 1) != last_above_) last_above_ = z >> 1, last_flip_ = last_bit(z & ~1u, key_);
+      out |= (z & 1u) ^ last_flip_;
+    }
+    return out;
+  }
+
+ private:
+  int bits_, levels_;
+  uint64_t key_ = 0, last_above_ = UINT64_MAX;
+  uint32_t last_flip_ = 0, prev_ = 0;
+  bool have_ = false;
+  std::array<uint64_t, 16> above_{};
+  std::array<uint32_t, 16> acc_{};  // the output of the digits down to each level
+  std::array<uint8_t, 16> perm_{};
+};
+
 class ZSobolSampler final : public Sampler {
  public:
   ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed) {
@@ -68,21 +132,48 @@ class ZSobolSampler final : public Sampler {
     const uint32_t j = sobol_index(px, py, index, f, bounce, &key);
     return {unit_from_u32(sobol_0(j, key)), unit_from_u32(sobol_1(j, mix64(key)))};
   }
+  // sobol_index's values, each block's indices in order through a DigitCache (the pixel's
+  // digits hashed once per block, the sample's once per distinct prefix), then each block's
+  // scramble in a loop that vectorises.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
-    fill_prepared(out, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
-      uint64_t key;
-      const uint32_t j = sobol_index(px, py, i, f, bounce, &key);
-      v[0] = sobol_0(j, key);
-      if (family_dim(f) == 2) v[1] = sobol_1(j, mix64(key));
+    const int bits = 2 * k_ + m_, dim = family_dim(f);
+    const uint32_t mask = k_ == 0 ? 0u : (uint32_t(1) << k_) - 1, n = out->want;
+    const uint32_t pixel = bits == 0 ? 0 : uint32_t(uint64_t(morton2(uint32_t(px) & mask, uint32_t(py) & mask)) << m_);
+    const uint64_t block_size = uint64_t(1) << m_, stream0 = sample_stream_from_hash(seed_hash_, 0, 0, f, bounce);
+    thread_local std::vector<uint32_t> index, axis;
+    index.resize(std::size_t(n) * dim), axis.resize(std::size_t(n) * dim);
+    uint32_t* d1 = index.data() + n;  // the second dimension's unscrambled values
+    DigitCache digits(bits);
+    for (uint64_t b0 = 0; b0 < n; b0 += block_size) {
+      const uint32_t count = uint32_t(std::min<uint64_t>(block_size, n - b0));
+      const uint64_t key = block_key(stream0, b0 >> m_);
+      digits.reset(key);
+      for (uint32_t i = 0; i < count; ++i) index[b0 + i] = digits(pixel | i);
+      owen_scramble_all(count, index.data() + b0, key, axis.data() + b0);
+      if (dim == 1) continue;
+      // The second dimension is linear over GF(2) in the index bits: the pixel's part (the same
+      // through a block) once, the sample's m bits per value.
+      const uint32_t high = sobol_dim1_reversed(uint32_t(index[b0] & ~(block_size - 1)));
+      for (uint32_t i = 0; i < count; ++i)
+        d1[b0 + i] = high ^ sobol_dim1_reversed(uint32_t(index[b0 + i] & (block_size - 1)));
+      owen_scramble_all(count, d1 + b0, mix64(key), axis.data() + n + b0);
+    }
+    fill_prepared(out, n, dim, [&](uint32_t i, uint32_t* v) {
+      v[0] = axis[i];
+      if (dim == 2) v[1] = axis[n + i];
     });
   }
+
+  // A value asked alone hashes every digit of the pixel's Morton index; prepared, a few
+  // hashes per block: preparing every stream, the deep ones too, costs less (BM_PathPattern).
+  bool prepare_computes(Family) const override { return false; }
 
  private:
   // The Sobol index of a sample and the key of its block's scramble.
   uint32_t sobol_index(int px, int py, int64_t index, Family f, int bounce, uint64_t* key) const {
     const uint32_t mask = k_ == 0 ? 0u : (uint32_t(1) << k_) - 1;  // pixels outside the image wrap
     const uint64_t block = uint64_t(index) >> m_;
-    *key = mix64(sample_stream_from_hash(seed_hash_, 0, 0, f, bounce) ^ (block * 0x9e3779b97f4a7c15ull));
+    *key = block_key(sample_stream_from_hash(seed_hash_, 0, 0, f, bounce), block);
     const uint32_t low = uint32_t(uint64_t(index) & ((uint64_t(1) << m_) - 1));
     const uint32_t z = m_ + 2 * k_ == 0 ? 0 : (morton2(uint32_t(px) & mask, uint32_t(py) & mask) << m_) | low;
     return zsobol_sobol_index(z, 2 * k_ + m_, *key);
@@ -94,21 +185,10 @@ class ZSobolSampler final : public Sampler {
 }  // namespace
 
 uint32_t zsobol_sobol_index(uint32_t z, int bits, uint64_t key) {
-  // Base-4 digits from the most significant; each is permuted by a hash of the unpermuted
-  // digits above it, so aligned blocks of indices map onto aligned blocks (Ahmed & Wonka §4).
   uint32_t out = 0;
-  int shift = bits - 2;
-  for (; shift >= 0; shift -= 2) {
-    const uint64_t above = uint64_t(z) >> (shift + 2);
-    const uint64_t h = mix64(key ^ (above * 0xc2b2ae3d27d4eb4full) ^ uint64_t(shift));
-    const uint32_t digit = (z >> shift) & 3u;
-    out |= uint32_t(kPermutations4[uint32_t(((h >> 32) * 24u) >> 32)][digit]) << shift;
-  }
-  if (shift == -1) {  // an odd bit count: the last bit is flipped by the bits above it
-    const uint64_t h = mix64(key ^ (uint64_t(z >> 1) * 0xc2b2ae3d27d4eb4full) ^ 0x5bd1e995ull);
-    out |= (z & 1u) ^ uint32_t(h >> 63);
-  }
-  return out;
+  for (int shift = bits - 2; shift >= (bits & 1); shift -= 2)
+    out |= uint32_t(kPermutations4[digit_permutation(z, shift, key)][(z >> shift) & 3u]) << shift;
+  return out | ((bits & 1) ? last_bit(z, key) : 0);
 }
 
 std::unique_ptr<Sampler> make_zsobol_sampler(uint64_t seed, const SamplerShape& shape) {

@@ -1,5 +1,6 @@
 // `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
 #include "tests/support/cli_runner.h"
+#include "tests/support/one_cpu.h"
 #include "tests/support/process_probe.h"
 #include "renderer/image/image_output.h"
 #include "sampling/samplers/sampler.h"
@@ -163,6 +164,44 @@ TEST(CliRender, StatsReportTheThreadsUsedNotTheOption) {
   nlohmann::json one = nlohmann::json::parse(std::ifstream(d / "one.json"));
   EXPECT_GE(all["threads"].get<int>(), 1);
   EXPECT_EQ(one["threads"].get<int>(), 1);
+}
+
+namespace {
+
+// Renders the test scene restricted to one CPU (as under mpirun's default binding) with
+// `options`; returns the run and its --stats.
+std::pair<test::CliResult, nlohmann::json> render_on_one_cpu(const std::string& name, const std::string& options) {
+  fs::path d = scratch_dir(name);
+  fs::path scene = write_scene(d);
+  test::OneCpu one;
+  EXPECT_TRUE(one.ok());
+  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "a.exr").string() + " --spp 1 --stats " +
+                    (d / "s.json").string() + " --quiet" + options);
+  nlohmann::json j = r.exit_code == 0 ? nlohmann::json::parse(std::ifstream(d / "s.json")) : nlohmann::json{};
+  return {r, j};
+}
+
+}  // namespace
+
+// A process allowed one CPU asked for 2 threads says so once (with the options that fix it),
+// still renders, on the one CPU, and --stats records both counts.
+TEST(CliRender, ThreadsAboveTheAffinityMaskWarnOnceAndRunOnTheAllowedCpus) {
+  const auto [r, j] = render_on_one_cpu("render_affinity", " --threads 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  for (const char* part : {"--threads 2", "1 CPU", "--bind-to none", "--map-by slot:PE=2"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << " in " << r.err;
+  EXPECT_EQ(j["cpus_allowed"].get<int>(), 1);
+  EXPECT_EQ(j["threads"].get<int>(), 1);
+}
+
+// Without --threads the render takes the CPUs of its mask (TBB's default arena), silently.
+TEST(CliRender, DefaultThreadsAreTheAffinityMasksCpus) {
+  const auto [r, j] = render_on_one_cpu("render_affinity_default", "");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(j["cpus_allowed"].get<int>(), 1);
+  EXPECT_EQ(j["threads"].get<int>(), 1);
 }
 
 TEST(CliRender, PngIsSrgbAndCommandLineOverridesTheScene) {

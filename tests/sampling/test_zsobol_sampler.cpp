@@ -107,22 +107,27 @@ TEST(ZSobolSampler, MeanOverSeedsIsUniform) {
   }
 }
 
+// Over several blocks, with an odd and an even count of index bits (3 + 10, 4 + 10) and a
+// pixel outside the image (it wraps).
 TEST(ZSobolSampler, PreparedStreamMatchesValueByValue) {
-  auto s = make_zsobol_sampler(21, {8, 20, 12});
-  for (Family f : {Family::Pixel, Family::Time}) {
-    PreparedStream p;
-    p.want = 40;
-    s->prepare(7, 3, f, 1, &p);
-    ASSERT_NE(p.coords, nullptr);
-    for (int i = 0; i < 40; ++i) {
-      if (family_dim(f) == 1) {
-        ASSERT_EQ(p.value(i, 0), s->get_1d(7, 3, i, f, 1));
-      } else {
-        const Vec2 v = s->get_2d(7, 3, i, f, 1);
-        ASSERT_EQ(p.value(i, 0), v[0]);
-        ASSERT_EQ(p.value(i, 1), v[1]);
+  for (int spp : {8, 16}) {
+    auto s = make_zsobol_sampler(21, {spp, 20, 12});
+    for (Family f : {Family::Pixel, Family::Time})
+      for (int px : {7, 45}) {
+        PreparedStream p;
+        p.want = 70;
+        s->prepare(px, 3, f, 1, &p);
+        ASSERT_NE(p.coords, nullptr);
+        for (int i = 0; i < 70; ++i) {
+          if (family_dim(f) == 1) {
+            ASSERT_EQ(p.value(i, 0), s->get_1d(px, 3, i, f, 1)) << spp << " " << i;
+          } else {
+            const Vec2 v = s->get_2d(px, 3, i, f, 1);
+            ASSERT_EQ(p.value(i, 0), v[0]) << spp << " " << i;
+            ASSERT_EQ(p.value(i, 1), v[1]) << spp << " " << i;
+          }
+        }
       }
-    }
   }
 }
 

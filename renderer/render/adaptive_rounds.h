@@ -1,5 +1,6 @@
 #pragma once
-// Adaptive refinement (McCool–Fiume §5.1 / Cook §6): after a first pass at min_spp, rounds
+// Adaptive refinement (McCool–Fiume §5.1 / Cook §6): after a first round at min_spp (in
+// progressive passes: progressive_passes.h), rounds
 // that extend prefixes. A pixel whose error is above the threshold doubles its sample count
 // (up to max_spp); its 3x3 neighbours refine with it, so edges are not left blocky. Samples
 // already taken are never moved or discarded. Rounds go on until no pixel refines or the
@@ -12,6 +13,8 @@
 namespace pdrt {
 
 // Renders `ad`'s first pass and its refinement rounds; returns the rounds after the first.
-int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes);
+// `quiet`: no progress line.
+int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes,
+                           bool quiet);
 
 }  // namespace pdrt

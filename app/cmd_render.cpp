@@ -133,6 +133,7 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   j["estimate"] = {{"seconds", e.seconds},
                    {"ns_per_sample", e.seconds_per_sample * 1e9},
                    {"calibration_seconds", e.calibration_seconds},
+                   {"calibration_cpu_seconds", e.calibration_cpu_seconds},
                    {"calibration_pixels", e.calibration_pixels},
                    {"calibration_samples", e.calibration_samples}};
   if (r.stats.ranks.size() > 1) {

@@ -1,6 +1,7 @@
 #include "renderer/render/render_estimate.h"
 
 #include "renderer/render/pixel_renderer.h"
+#include "renderer/render/process_cpu_time.h"
 
 #include <tbb/parallel_for.h>
 
@@ -17,7 +18,8 @@ namespace {
 constexpr int kBlock = 4;                  // pixels per side of a calibration block
 constexpr int64_t kCalibrationSpp = 8;     // samples per pixel (fewer when the render has fewer)
 constexpr double kCalibrationTime = 0.05;        // seconds it may take
-constexpr double kCalibrationShare = 1.0 / 32;  // of the render's samples it may take
+constexpr double kCalibrationShare = 1.0 / 8;  // of the render's samples it may take
+constexpr int kWarmUpBlocks = 8;
 
 // Block k's top-left pixel: the R2 sequence over the region.
 void block_origin(const PixelRect& region, int k, int* x, int* y) {
@@ -68,20 +70,27 @@ RenderEstimate estimate_render(const PixelRenderer& pixels, const Sampler& sampl
   e.samples = samples;
   const int64_t cal = std::min(spp, kCalibrationSpp);
   const int pixels_per_block = std::min(kBlock, region.width()) * std::min(kBlock, region.height());
+  const auto run = [&](int k0, int k1) {
+    tbb::parallel_for(tbb::blocked_range<int>(k0, k1), [&](const tbb::blocked_range<int>& r) {
+      render_blocks(pixels, sampler, decider, region, r.begin(), r.end(), cal);
+    });
+  };
+  // Untimed: the first touches of textures (loaded on demand) and caches, paid once per render.
+  run(0, kWarmUpBlocks);
   // Blocks it may take: 4 at least, so that every render is timed.
   const double cap = std::max(4.0, samples * kCalibrationShare / double(pixels_per_block * cal));
   const auto t0 = clock::now();
+  const double cpu0 = process_cpu_seconds();
   // Rounds of doubling size, the last one cut to what the time left allows at the rate so far.
   for (int n = 0, next = 4; next > n;) {
-    tbb::parallel_for(tbb::blocked_range<int>(n, next), [&](const tbb::blocked_range<int>& r) {
-      render_blocks(pixels, sampler, decider, region, r.begin(), r.end(), cal);
-    });
+    run(kWarmUpBlocks + n, kWarmUpBlocks + next);
     e.calibration_pixels += (next - n) * pixels_per_block;
     n = next;
     e.calibration_seconds = std::chrono::duration<double>(clock::now() - t0).count();
     const double fit = (kCalibrationTime - e.calibration_seconds) / e.calibration_seconds * n;
     next = n + int(std::clamp(std::min(fit, cap - n), 0.0, double(n)));
   }
+  e.calibration_cpu_seconds = process_cpu_seconds() - cpu0;
   e.calibration_samples = int64_t(e.calibration_pixels) * cal;
   e.seconds_per_sample = combined(e.calibration_seconds / double(e.calibration_samples), group);
   e.seconds = samples * e.seconds_per_sample;

@@ -57,12 +57,12 @@ int64_t mark_active(const AdaptiveMetric& metric, const AdaptiveDesc& ad, const 
 }  // namespace
 
 int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes,
-                           bool quiet) {
+                           bool quiet, const std::function<void(int64_t)>& on_pass) {
   int rounds = 0;
   {
     // Round 0 in progressive passes, so that a stopped render has every pixel at some spp.
     Progress progress("render (adaptive, round 0)", passes.work([&](int, int) { return int64_t(ad.min_spp); }), quiet);
-    if (render_progressive(passes, ad.min_spp, progress, nullptr) < ad.min_spp) return rounds;
+    if (render_progressive(passes, ad.min_spp, progress, on_pass) < ad.min_spp) return rounds;
   }
   AdaptiveMetric metric(ad);
   // In film coordinates (the rendered rectangle); the image mean is the crop's.

@@ -10,11 +10,14 @@
 #include "renderer/render/tile_passes.h"
 #include "renderer/scene/scene_desc.h"
 
+#include <cstdint>
+#include <functional>
+
 namespace pdrt {
 
 // Renders `ad`'s first pass and its refinement rounds; returns the rounds after the first.
-// `quiet`: no progress line.
+// `quiet`: no progress line; `on_pass` (if set): called after each of round 0's passes.
 int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes,
-                           bool quiet);
+                           bool quiet, const std::function<void(int64_t)>& on_pass);
 
 }  // namespace pdrt

@@ -88,7 +88,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   int rounds = 0;
   SamplerProfiler profiler;  // the passes only: the build and the image are not sampling work
   if (ad.enabled) {
-    rounds = render_adaptive_rounds(ad, region, films, passes, quiet);
+    rounds = render_adaptive_rounds(ad, region, films, passes, quiet, opt.on_pass);
   } else {
     Progress progress("render", passes.work([spp](int, int) { return spp; }), quiet);
     const int64_t first = next_pass_end(0, spp);

@@ -31,7 +31,8 @@ struct RenderOptions {
   // with the estimate before any pass (on every rank, with the same estimate). It may throw to
   // refuse the render (the sample budget).
   std::function<void(const RenderEstimate&)> on_estimate;
-  // Called after each complete pass of a fixed-spp render with the spp every pixel has.
+  // Called after each complete pass (of a fixed-spp render, or of adaptive round 0) with the spp
+  // every pixel has then.
   std::function<void(int64_t)> on_pass;
 };
 

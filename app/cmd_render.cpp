@@ -293,9 +293,8 @@ void add_render_command(CLI::App& app) {
                    scene.film.height, scene.sampler.type.c_str(), spp, r.stats.seconds,
                    r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
                    scene.integrator.regularize ? ", regularized (biased)" : "");
-    const std::string coverage = r.stats.partial ? describe_partial_coverage(r.image.samples,
-                                                                             ad.enabled ? 0 : scene.sampler.spp)
-                                                 : "";
+    const std::string coverage =
+        r.stats.partial ? describe_partial_coverage(r.image.samples, ad.enabled ? 0 : scene.sampler.spp) : "";
     if (r.stats.partial && g_cancel.load())
       throw InterruptedError("interrupted; wrote the partial image " + names + ": " + coverage);
     if (r.stats.partial && !o->quiet)  // the time limit: what was asked for, exit 0

@@ -15,9 +15,9 @@ namespace pdrt {
 
 namespace {
 
-constexpr int kBlock = 4;                  // pixels per side of a calibration block
-constexpr int64_t kCalibrationSpp = 8;     // samples per pixel (fewer when the render has fewer)
-constexpr double kCalibrationTime = 0.05;        // seconds it may take
+constexpr int kBlock = 4;                      // pixels per side of a calibration block
+constexpr int64_t kCalibrationSpp = 8;         // samples per pixel (fewer when the render has fewer)
+constexpr double kCalibrationTime = 0.05;      // seconds it may take
 constexpr double kCalibrationShare = 1.0 / 8;  // of the render's samples it may take
 constexpr int kWarmUpBlocks = 8;
 
@@ -30,8 +30,8 @@ void block_origin(const PixelRect& region, int k, int* x, int* y) {
 
 // Renders blocks [k0, k1), each pixel's samples [0, spp), into films of their own (with the
 // splats' margin); the sampler states are made once, as a render's tiles share a thread's.
-void render_blocks(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider,
-                   const PixelRect& region, int k0, int k1, int64_t spp) {
+void render_blocks(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider, const PixelRect& region,
+                   int k0, int k1, int64_t spp) {
   PixelSampleState ps(sampler);
   std::optional<PixelSampleState> pd;
   if (decider) pd.emplace(*decider);

@@ -19,9 +19,9 @@ namespace pdrt {
 struct PixelRenderer;
 
 struct RenderEstimate {
-  double samples = 0;              // the render's camera samples (budget; the most, under adaptive)
-  double seconds_per_sample = 0;   // wall time, every thread and every rank together
-  double seconds = 0;              // samples x seconds_per_sample: the passes after the calibration
+  double samples = 0;                  // the render's camera samples (budget; the most, under adaptive)
+  double seconds_per_sample = 0;       // wall time, every thread and every rank together
+  double seconds = 0;                  // samples x seconds_per_sample: the passes after the calibration
   double calibration_seconds = 0;      // wall time the calibration took on this rank
   double calibration_cpu_seconds = 0;  // its process CPU time (to tell the method's error from the load's)
   int64_t calibration_samples = 0;

@@ -56,11 +56,11 @@ struct RenderStats {
   int64_t samples = 0;            // camera samples traced
   int64_t nonfinite_samples = 0;  // of those, dropped for a NaN or infinite value
   double spp_mean = 0;
-  int64_t spp_complete = 0;  // the spp every pixel of the crop reached (its budget: less than spp_mean when partial)
-  bool partial = false;      // stopped before every pixel was done
-  RenderEstimate estimate;   // when options.on_estimate is set
+  int64_t spp_complete = 0;   // the spp every pixel of the crop reached (its budget: less than spp_mean when partial)
+  bool partial = false;       // stopped before every pixel was done
+  RenderEstimate estimate;    // when options.on_estimate is set
   double passes_seconds = 0;  // the passes' wall time (after the build and the calibration)
-  int adaptive_rounds = 0;  // refinement rounds after the first pass
+  int adaptive_rounds = 0;    // refinement rounds after the first pass
   std::size_t triangles = 0;
   int threads = 0;                 // worker threads the render ran on (options' 0 resolved)
   SamplerProfile sampler_profile;  // CPU ticks of the passes, and those spent computing sample values

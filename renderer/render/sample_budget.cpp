@@ -34,8 +34,7 @@ std::string format_sample_cost(double total, double seconds_per_sample, bool mea
   return std::string(buf) + rate + (measured ? ", measured on this scene)" : ")");
 }
 
-void check_sample_budget(double total, double seconds_per_sample, bool measured, const std::string& what,
-                         bool allow) {
+void check_sample_budget(double total, double seconds_per_sample, bool measured, const std::string& what, bool allow) {
   if (allow || total * seconds_per_sample <= kMaxEstimatedSeconds) return;
   throw UsageError(what + " = " + format_sample_cost(total, seconds_per_sample, measured) +
                    ", more than the limit of 46 min; lower the spp or the resolution, or pass --allow-long-render");

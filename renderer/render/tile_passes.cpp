@@ -22,7 +22,7 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
       exchange_(group, tiles, {&films.image, films.decision_or_null()}),
       stop_in_tile_(group.size() > 1 && (opt.cancel || opt.time_limit > 0)),
       deadline_(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                std::chrono::duration<double>(opt.time_limit))) {
+                            std::chrono::duration<double>(opt.time_limit))) {
   mine_.rank = group.rank();
 }
 

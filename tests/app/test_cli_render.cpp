@@ -606,11 +606,18 @@ TEST(CliRender, InterruptWritesPartialImage) {
 // --time-limit: the render stops when it is reached and writes what it has, marked partial with
 // the spp every pixel reached, in the image, the stats and the summary; it asked for that, so it
 // exits 0. A limit of a microsecond is reached before any pass (the scene build alone is longer).
+namespace {
+// Renders the 24 x 16 test scene into `d` (out.exr, stats.json) with `args`.
+pdrt::test::CliResult render_with_stats(const fs::path& d, const std::string& args) {
+  fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
+  return run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " +
+                  (d / "stats.json").string() + " " + args);
+}
+}  // namespace
+
 TEST(CliRender, TimeLimitWritesTheImageMarkedPartialWithItsSpp) {
   fs::path d = scratch_dir("render_time_limit");
-  fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
-  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " +
-                    (d / "stats.json").string() + " --spp 4096 --time-limit 0.000001");
+  auto r = render_with_stats(d, "--spp 4096 --time-limit 0.000001");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto in = OIIO::ImageInput::open((d / "out.exr").string());
   ASSERT_TRUE(in);
@@ -626,9 +633,7 @@ TEST(CliRender, TimeLimitWritesTheImageMarkedPartialWithItsSpp) {
 // A complete render says so everywhere: not partial, every pixel at the spp asked for.
 TEST(CliRender, CompleteRenderIsMarkedCompleteWithItsSpp) {
   fs::path d = scratch_dir("render_complete");
-  fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
-  auto r = run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " +
-                    (d / "stats.json").string() + " --spp 12 --time-limit 3600 -q");
+  auto r = render_with_stats(d, "--spp 12 --time-limit 3600 -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
   EXPECT_EQ(j["partial"], false);

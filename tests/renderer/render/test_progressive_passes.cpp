@@ -101,8 +101,7 @@ TEST(ProgressivePasses, TimeLimitStopsBetweenPassesWithEveryPixelAtTheSppReached
   o.on_estimate = [&](const RenderEstimate&) { built = std::chrono::steady_clock::now(); };
   o.on_pass = [&](int64_t spp) {
     if (spp != 4) return;
-    while (std::chrono::steady_clock::now() < built + std::chrono::duration<double>(o.time_limit)) {
-    }
+    while (std::chrono::steady_clock::now() < built + std::chrono::duration<double>(o.time_limit)) {}
   };
   const RenderResult r = render(s, *sampler, o);
   EXPECT_TRUE(r.stats.partial);

@@ -15,7 +15,7 @@ int64_t render_progressive(TilePasses& passes, int64_t spp, Progress& progress,
     const int64_t end = next_pass_end(done, spp);
     progress.relabel("render, pass " + std::to_string(k) + " of " + std::to_string(n) + " (" + std::to_string(end) +
                      " spp)");
-    if (!passes.run([end](int, int) { return end; }, progress)) break;
+    if (!passes.run([end](int, int) { return end; }, progress, end == spp)) break;
     done = end;
     if (on_pass) on_pass(done);
   }

@@ -47,7 +47,7 @@ double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {
   return total;
 }
 
-bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress) {
+bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share) {
   std::atomic<bool> cancelled{false};
   for (const std::vector<int>& wave : tiles_.waves()) {
     const std::vector<std::size_t> own = own_tiles(wave);
@@ -61,7 +61,12 @@ bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& p
         progress.advance(double(render_tile(wave[own[k]], end_of, cancelled)));
       }
     });
-    if (group_.size() > 1 && exchange_.exchange(wave, cancelled, mine_)) cancelled = true;  // after it, all stop
+    if (group_.size() > 1) {  // after an exchange in which any rank was stopped, all stop
+      if (share || tiles_.spread() > 0)
+        cancelled = exchange_.exchange(wave, cancelled, mine_) || cancelled;
+      else if (exchange_.any_interrupted(cancelled, mine_))
+        cancelled = true, exchange_.exchange(wave, true, mine_);
+    }
     if (cancelled) break;
   }
   stopped_ = stopped_ || cancelled;

@@ -31,7 +31,11 @@ class TilePasses {
 
   // Pixel (x, y) of the film (film coordinates) gets samples up to end_of(x, y); `progress`
   // advances by the budget samples each tile adds. False when the pass was stopped.
-  bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress);
+  // `share`: the films are read after the pass (the image, adaptive decisions), so every rank
+  // gets every rank's tiles; without it, and without splatting (no footprint reaches another
+  // rank's tile), the ranks only agree whether to stop, as each renders the same tiles in
+  // every pass, and the blocks go only when one was stopped.
+  bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share = true);
   // The budget samples a pass to end_of would add to this rank's pixels (its progress's total).
   double work(const std::function<int64_t(int, int)>& end_of) const;
 

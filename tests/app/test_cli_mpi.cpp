@@ -189,6 +189,13 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageWhenSplattingAndSplitDeciding) {
   expect_same_at_every_rank_count("split", scene_text("sobol", "", "split"));
 }
 
+// 16 spp in three passes (4, 8, 16): without splatting the ranks exchange their tiles only
+// after the last, with splatting after every wave of every pass; the same image either way.
+TEST(CliMpi, RanksRenderTheSingleProcessImageOverProgressivePasses) {
+  expect_same_at_every_rank_count("passes", scene_text("sobol", "", "", false));
+  expect_same_at_every_rank_count("passes-splat", scene_text("poisson", R"(, "reconstruction": "splat")", "", false));
+}
+
 TEST(CliMpi, StatsListEveryRanksShare) {
   const fs::path dir = scratch_dir("mpi-stats");
   std::ofstream(dir / "s.json") << scene_text("jitter", "", "shared");

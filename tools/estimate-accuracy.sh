@@ -5,7 +5,7 @@
 # the passes' wall seconds, their ratio (actual / estimate; the aim is within [1/1.5, 1.5]), and
 # the same ratio in process CPU seconds per sample, which a load that changes during the render
 # does not move (the method's own error). PDRT_BUILD picks the build folder (default build).
-# Usage: tools/estimate-accuracy.sh [SIZE] [THREADS]
+# Usage: [SPPS="1 16 256"] tools/estimate-accuracy.sh [SIZE] [THREADS]
 set -euo pipefail
 size=${1:-128}
 threads=${2:-0}
@@ -14,7 +14,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 printf "%-20s %5s %10s %10s %8s %8s\n" scene spp estimate_s actual_s ratio cpu_ratio
 for scene in scenes/*.json; do
-  for spp in 1 16 256; do
+  for spp in ${SPPS:-1 16 256}; do
     "$B/pdrt" render "$scene" --width "$size" --height "$size" --spp "$spp" --threads "$threads" -q \
       -o "$work/o.exr" --stats "$work/s.json"
     python3 - "$work/s.json" "$(basename "$scene" .json)" "$spp" <<'PY'

@@ -18,7 +18,7 @@ namespace {
 constexpr int kBlock = 4;                      // pixels per side of a calibration block
 constexpr int64_t kCalibrationSpp = 8;         // samples per pixel (fewer when the render has fewer)
 constexpr double kCalibrationTime = 0.05;      // seconds it may take
-constexpr double kCalibrationShare = 1.0 / 8;  // of the render's samples it may take
+constexpr double kCalibrationShare = 1.0 / 2;  // of the render's samples it may take
 constexpr int kWarmUpBlocks = 8;
 
 // Block k's top-left pixel: the R2 sequence over the region.

@@ -3,7 +3,7 @@
 // used by the sample budget: after the scene build, blocks of 4x4 pixels scattered over the
 // frame (the R2 sequence, Roberts 2018: any prefix of it is spread evenly) are rendered into a
 // scratch film, on the render's threads: 8 blocks untimed (textures load on first use), then
-// for 0.05 s or 1/8 of the render's samples (at most 8 per pixel); their wall time per sample
+// for 0.05 s or half the render's samples (at most 8 per pixel); their wall time per sample
 // times the render's samples is the estimate. It must run for tens of milliseconds on a busy
 // machine: a shorter burst gets whole cores that the render then shares. The scratch film is thrown
 // away, so the image does not change. Measured against the actual passes by

@@ -76,6 +76,11 @@ Metadata image_metadata(const std::string& scene_file, const SceneDesc& scene, c
                  {"pdrt:seed", std::to_string(scene.sampler.seed)},
                  {"pdrt:render_seconds", std::to_string(r.stats.seconds)},
                  {"pdrt:partial", r.stats.partial ? "true" : "false"}};
+  // A stopped render: the spp every pixel reached (the progressive passes), and the mean.
+  if (r.stats.partial) {
+    md.push_back({"pdrt:spp_complete", std::to_string(r.stats.spp_complete)});
+    md.push_back({"pdrt:spp_mean", std::to_string(r.stats.spp_mean)});
+  }
   // Biased options are named wherever the image goes.
   if (scene.integrator.regularize) md.push_back({"pdrt:regularize", "true"});
   if (ad.enabled)
@@ -108,6 +113,7 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   j["samples"] = r.stats.samples;
   j["nonfinite_samples"] = r.stats.nonfinite_samples;
   j["spp_mean"] = r.stats.spp_mean;
+  j["spp_complete"] = r.stats.spp_complete;
   j["spp_distribution"] = spp_distribution(r.image.samples);
   if (ad.enabled)
     j["adaptive"] = {{"min_spp", ad.min_spp},
@@ -127,6 +133,14 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   const double span = r.stats.threads * (me.seconds - me.exchange_seconds);
   j["threads_busy"] = span > 0 ? me.tile_seconds / span : 0.0;
   j["partial"] = r.stats.partial;
+  j["passes_seconds"] = r.stats.passes_seconds;
+  const RenderEstimate& e = r.stats.estimate;
+  j["estimate"] = {{"seconds", e.seconds},
+                   {"ns_per_sample", e.seconds_per_sample * 1e9},
+                   {"calibration_seconds", e.calibration_seconds},
+                   {"calibration_cpu_seconds", e.calibration_cpu_seconds},
+                   {"calibration_pixels", e.calibration_pixels},
+                   {"calibration_samples", e.calibration_samples}};
   if (r.stats.ranks.size() > 1) {
     j["ranks"] = nlohmann::json::array();
     for (const RankStats& k : r.stats.ranks)
@@ -150,6 +164,7 @@ void add_render_command(CLI::App& app) {
     std::vector<std::string> outs;
     SceneOverrides set;
     int threads = 0;
+    double time_limit = 0;
     bool quiet = false, allow_long = false, strict = false, regularize = false, no_regularize = false;
   };
   auto o = std::make_shared<Opts>();
@@ -193,6 +208,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--no-regularize", o->no_regularize, "Unbiased: no path regularisation, whatever the scene sets")
       ->excludes(regularize);
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);
+  add_real_option(cmd, "--time-limit", o->time_limit,
+                  "Stop after this many seconds (the scene build included) and write the image at the spp every "
+                  "pixel reached, marked partial; no sample budget then",
+                  true);
   cmd->add_flag("--quiet,-q", o->quiet, "No progress or summary on stderr");
   cmd->callback([o] {
     // Under mpirun every rank loads the same scene and renders the same image: rank 0 speaks
@@ -219,7 +238,6 @@ void add_render_command(CLI::App& app) {
     const bool split = ad.enabled && ad.decision == AdaptiveDecision::Split;
     check_film_memory(scene.film.width, scene.film.height,
                       o->set.width || o->set.height ? "--width/--height" : scene.film.size_where, split ? 2 : 1);
-    check_sample_budget(scene_sample_count(scene), describe_sample_count(scene), o->allow_long);
     for (const auto& out : o->outs) check_writable(out);
     if (!o->stats.empty()) check_writable(o->stats);
 
@@ -236,16 +254,21 @@ void add_render_command(CLI::App& app) {
     require_image_io();  // the last check: a missing module is refused before anything is said or rendered
     // Under mpirun the ranks share the render (docs/distributed.md); rank 0 reports and writes.
     const bool lead = launcher_rank() == 0, quiet = o->quiet || !lead;
-    if (!quiet)
-      std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
-                   format_sample_cost(scene_sample_count(scene)).c_str());
-
     auto sampler = make_scene_sampler(scene.sampler, scene.film);
     RenderOptions ro;
     ro.threads = o->threads;
     ro.quiet = quiet;
     ro.cancel = &g_cancel;
     ro.group = &group;
+    ro.time_limit = o->time_limit;
+    // The cost, timed on this scene after its build (render_estimate.h), before any pass.
+    ro.on_estimate = [&](const RenderEstimate& e) {
+      if (o->time_limit <= 0)
+        check_sample_budget(e.samples, e.seconds_per_sample, true, describe_sample_count(scene), o->allow_long);
+      if (!quiet)
+        std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
+                     format_sample_cost(e.samples, e.seconds_per_sample, true).c_str());
+    };
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);
     if (mpi) std::signal(SIGTERM, previous_term), std::signal(SIGUSR1, previous_usr1);
@@ -263,18 +286,26 @@ void add_render_command(CLI::App& app) {
     }
     std::string names;
     for (const auto& out : o->outs) names += (names.empty() ? "" : ", ") + out;
-    // An interrupted render's mean spp says nothing of which pixels got samples: the line
-    // after this one counts them.
-    char spp[48] = "interrupted";
-    if (!r.stats.partial) std::snprintf(spp, sizeof spp, "%.1f spp", r.stats.spp_mean);
+    // A stopped render's mean spp says nothing of which pixels got samples: the spp every
+    // pixel reached says it, and the line after this one counts them.
+    char spp[96];
+    if (r.stats.partial)
+      std::snprintf(spp, sizeof spp, "partial: every pixel at %lld spp or more, mean %.1f spp",
+                    (long long)r.stats.spp_complete, r.stats.spp_mean);
+    else
+      std::snprintf(spp, sizeof spp, "%.1f spp", r.stats.spp_mean);
     if (!o->quiet)
       std::fprintf(stderr, "pdrt render: %s %dx%d, %s, %s, %.2f s, %.2f Mrays/s%s\n", names.c_str(), scene.film.width,
                    scene.film.height, scene.sampler.type.c_str(), spp, r.stats.seconds,
                    r.stats.seconds > 0 ? r.stats.rays / r.stats.seconds * 1e-6 : 0.0,
                    scene.integrator.regularize ? ", regularized (biased)" : "");
+    const std::string coverage =
+        r.stats.partial ? describe_partial_coverage(r.image.samples, ad.enabled ? 0 : scene.sampler.spp) : "";
     if (r.stats.partial && g_cancel.load())
-      throw InterruptedError("interrupted; wrote the partial image " + names + ": " +
-                             describe_partial_coverage(r.image.samples, ad.enabled ? 0 : scene.sampler.spp));
+      throw InterruptedError("interrupted; wrote the partial image " + names + ": " + coverage);
+    if (r.stats.partial && !o->quiet)  // the time limit: what was asked for, exit 0
+      std::fprintf(stderr, "pdrt render: stopped at the time limit of %g s; wrote %s: %s\n", o->time_limit,
+                   names.c_str(), coverage.c_str());
   });
 }
 

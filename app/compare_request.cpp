@@ -105,7 +105,7 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   if (check_budget) {
     check_film_memory(scene.film.width, scene.film.height,
                       r.width || r.height ? "--width/--height" : scene.film.size_where);
-    check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height),
+    check_sample_budget(compare_sample_count(c, scene.film.width, scene.film.height), kSecondsPerSample, false,
                         "compare: " + std::to_string(scene.film.width) + "x" + std::to_string(scene.film.height) +
                             " pixels x (reference + " + std::to_string(c.seeds) +
                             " seeds x every sampler at every --spp" + (c.adaptive ? " + the sweep)" : ")"),

@@ -35,6 +35,12 @@ double parse_real_option(const std::string& option, const std::string& text) {
   return d;
 }
 
+double parse_positive_real_option(const std::string& option, const std::string& text) {
+  const double d = parse_real_option(option, text);
+  if (!(d > 0)) throw UsageError(option + " must be > 0, got \"" + text + "\"");
+  return d;
+}
+
 std::string option_display_name(const std::string& names) {
   std::string first;
   for (size_t b = 0; b <= names.size();) {

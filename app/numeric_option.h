@@ -29,6 +29,7 @@ struct option_value<std::optional<T>> {
 
 uint64_t parse_integer_option(const std::string& option, const std::string& text, IntRange range);
 double parse_real_option(const std::string& option, const std::string& text);
+double parse_positive_real_option(const std::string& option, const std::string& text);
 
 // "--seed" from "--seed,-s": the name messages use.
 std::string option_display_name(const std::string& names);
@@ -48,12 +49,18 @@ CLI::Option* add_integer_option(CLI::App* cmd, const std::string& names, T& targ
       ->type_name("INT");
 }
 
+// `positive`: the number must be > 0 as well.
 template <class T>
-CLI::Option* add_real_option(CLI::App* cmd, const std::string& names, T& target, const std::string& help) {
+CLI::Option* add_real_option(CLI::App* cmd, const std::string& names, T& target, const std::string& help,
+                             bool positive = false) {
   const std::string name = option_display_name(names);
   return cmd
       ->add_option_function<std::string>(
-          names, [&target, name](const std::string& s) { target = parse_real_option(name, s); }, help)
+          names,
+          [&target, name, positive](const std::string& s) {
+            target = positive ? parse_positive_real_option(name, s) : parse_real_option(name, s);
+          },
+          help)
       ->type_name("FLOAT");
 }
 

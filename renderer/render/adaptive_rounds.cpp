@@ -1,6 +1,8 @@
 #include "renderer/render/adaptive_rounds.h"
 
 #include "renderer/render/adaptive_metric.h"
+#include "renderer/render/progressive_passes.h"
+#include "sampling/core/progress.h"
 
 #include <tbb/parallel_for.h>
 
@@ -54,9 +56,14 @@ int64_t mark_active(const AdaptiveMetric& metric, const AdaptiveDesc& ad, const 
 
 }  // namespace
 
-int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes) {
+int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, RenderFilms& films, TilePasses& passes,
+                           bool quiet, const std::function<void(int64_t)>& on_pass) {
   int rounds = 0;
-  if (!passes.run("render (adaptive, round 0)", [&](int, int) { return int64_t(ad.min_spp); })) return rounds;
+  {
+    // Round 0 in progressive passes, so that a stopped render has every pixel at some spp.
+    Progress progress("render (adaptive, round 0)", passes.work([&](int, int) { return int64_t(ad.min_spp); }), quiet);
+    if (render_progressive(passes, ad.min_spp, progress, on_pass) < ad.min_spp) return rounds;
+  }
   AdaptiveMetric metric(ad);
   // In film coordinates (the rendered rectangle); the image mean is the crop's.
   const int RW = films.image.width(), RH = films.image.height();
@@ -66,12 +73,12 @@ int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, R
     if (metric.needs_image_mean()) metric.set_image_mean(crop_mean(films.judged(), region, row_mean));
     if (mark_active(metric, ad, films, bad, active) == 0) break;
     ++rounds;
-    std::string label = "render (adaptive, round " + std::to_string(rounds) + ")";
-    if (!passes.run(label.c_str(), [&](int x, int y) {
-          int64_t p = films.image.at(x, y).prefix;
-          return active[std::size_t(y) * RW + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
-        }))
-      break;
+    const auto end_of = [&](int x, int y) {
+      int64_t p = films.image.at(x, y).prefix;
+      return active[std::size_t(y) * RW + x] ? std::min<int64_t>(2 * p, ad.max_spp) : p;
+    };
+    Progress progress("render (adaptive, round " + std::to_string(rounds) + ")", passes.work(end_of), quiet);
+    if (!passes.run(end_of, progress)) break;
   }
   return rounds;
 }

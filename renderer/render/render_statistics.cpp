@@ -41,14 +41,16 @@ std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGro
 
 void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats) {
   for (const RankStats& r : stats.ranks) stats.rays += r.rays;
-  int64_t crop_samples = 0;
+  int64_t crop_samples = 0, complete = INT64_MAX;
   for (int y = 0; y < films.image.height(); ++y)
     for (int x = 0; x < films.image.width(); ++x) {
       const int64_t n = films.traced(x, y);  // whether or not they counted
       stats.nonfinite_samples += films.image.at(x, y).dropped + (films.split ? films.decision.at(x, y).dropped : 0);
       stats.samples += n;
-      if (region.in_crop(x + region.rect.x0, y + region.rect.y0)) crop_samples += n;
+      if (region.in_crop(x + region.rect.x0, y + region.rect.y0))
+        crop_samples += n, complete = std::min(complete, films.image.at(x, y).prefix);
     }
+  stats.spp_complete = complete == INT64_MAX ? 0 : complete;
   stats.spp_mean = double(crop_samples) / (double(region.crop.width()) * region.crop.height());
 }
 

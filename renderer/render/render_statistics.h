@@ -16,6 +16,7 @@ class RenderClock {
   RenderClock();      // starts both clocks
   void build_done();  // the scene is built: the rest is rendering
   double build_seconds() const { return build_seconds_; }
+  std::chrono::steady_clock::time_point start() const { return t0_; }
   // Fills seconds, build_seconds, cpu_seconds and build_cpu_seconds: the times until now.
   void finish(RenderStats& stats) const;
 
@@ -28,7 +29,8 @@ class RenderClock {
 std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGroup& group);
 
 // From the ranks and the films: the rays, the samples traced (the margin's too: work done),
-// the dropped ones, and the crop's mean spp (the margin's samples are not the image's spp).
+// the dropped ones, and the crop's mean spp (the margin's samples are not the image's spp) and
+// the spp all its pixels reached.
 void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats);
 
 // Warns (unless `quiet`) when samples were dropped for a NaN or infinite value.

@@ -7,6 +7,7 @@
 #include "renderer/render/light_set.h"
 #include "renderer/render/path_integrator.h"
 #include "renderer/render/pixel_renderer.h"
+#include "renderer/render/progressive_passes.h"
 #include "renderer/render/render_films.h"
 #include "renderer/render/render_region.h"
 #include "renderer/render/render_statistics.h"
@@ -16,10 +17,12 @@
 #include "renderer/render/warning_relay.h"
 #include "renderer/scene/render_settings.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/progress.h"
 
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <optional>
 
@@ -72,17 +75,29 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
 
   const LocalProcessGroup alone;
   const ProcessGroup& group = opt.group ? *opt.group : alone;
+  RenderResult res;
+  const int64_t spp = ad.enabled ? ad.max_spp : desc.sampler.spp;
+  if (opt.on_estimate) {
+    res.stats.estimate = estimate_render(pixels, sampler, decider.get(), region.rect, spp,
+                                         double(region.rect.width()) * region.rect.height() * double(spp), group);
+    opt.on_estimate(res.stats.estimate);
+  }
   const int spread = desc.film.filter.reconstruction == Reconstruction::Splat ? pixels.splat_margin() : 0;
   const TileWaves tiles(desc.film.width, desc.film.height, region.rect, spread);
-  TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt);
+  TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt, clock.start());
+  const bool quiet = opt.quiet || group.rank() != 0;
+  const auto p0 = std::chrono::steady_clock::now();
   int rounds = 0;
   SamplerProfiler profiler;  // the passes only: the build and the image are not sampling work
-  if (ad.enabled)
-    rounds = render_adaptive_rounds(ad, region, films, passes);
-  else
-    passes.run("render", [&](int, int) { return int64_t(desc.sampler.spp); });
-
-  RenderResult res;
+  if (ad.enabled) {
+    rounds = render_adaptive_rounds(ad, region, films, passes, quiet, opt.on_pass);
+  } else {
+    Progress progress("render", passes.work([spp](int, int) { return spp; }), quiet);
+    const int64_t first = next_pass_end(0, spp);
+    progress.expect(res.stats.estimate.seconds, passes.work([first](int, int) { return first; }));
+    render_progressive(passes, spp, progress, opt.on_pass);
+  }
+  res.stats.passes_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count();
   res.stats.sampler_profile = profiler.result();
   device.check();
   res.image = films.image.image(desc.film.exposure, region.crop_x0(), region.crop_y0(), region.crop.width(),

@@ -4,11 +4,13 @@
 #include "renderer/render/embree_device.h"
 #include "renderer/render/film.h"
 #include "renderer/render/process_group.h"
+#include "renderer/render/render_estimate.h"
 #include "sampling/samplers/sampler.h"
 #include "renderer/scene/scene_desc.h"
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +24,16 @@ struct RenderOptions {
   // The processes sharing the render (docs/distributed.md); nullptr = this one alone. Every
   // process returns the same image, bit for bit the single process's.
   const ProcessGroup* group = nullptr;
+  // > 0: stop this many seconds after render() starts (scene build included), as a cancel
+  // would; the passes (progressive_passes.h) leave every pixel at some spp.
+  double time_limit = 0;
+  // Set: the render is calibrated after the scene build (render_estimate.h) and this is called
+  // with the estimate before any pass (on every rank, with the same estimate). It may throw to
+  // refuse the render (the sample budget).
+  std::function<void(const RenderEstimate&)> on_estimate;
+  // Called after each complete pass (of a fixed-spp render, or of adaptive round 0) with the spp
+  // every pixel has then.
+  std::function<void(int64_t)> on_pass;
 };
 
 // One process's share of a distributed render.
@@ -47,8 +59,11 @@ struct RenderStats {
   int64_t samples = 0;            // camera samples traced
   int64_t nonfinite_samples = 0;  // of those, dropped for a NaN or infinite value
   double spp_mean = 0;
-  bool partial = false;     // stopped before every pixel was done
-  int adaptive_rounds = 0;  // refinement rounds after the first pass
+  int64_t spp_complete = 0;   // the spp every pixel of the crop reached (its budget: less than spp_mean when partial)
+  bool partial = false;       // stopped before every pixel was done
+  RenderEstimate estimate;    // when options.on_estimate is set
+  double passes_seconds = 0;  // the passes' wall time (after the build and the calibration)
+  int adaptive_rounds = 0;    // refinement rounds after the first pass
   std::size_t triangles = 0;
   int threads = 0;                 // worker threads the render ran on (options' 0 resolved)
   int cpus_allowed = 0;            // CPUs in the process's affinity mask (renderer/render/cpu_affinity.h)

@@ -4,13 +4,15 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
 namespace pdrt {
 
 TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRenderer& pixels, const Sampler& sampler,
-                       const Sampler* decider, const ProcessGroup& group, const RenderOptions& opt)
+                       const Sampler* decider, const ProcessGroup& group, const RenderOptions& opt,
+                       std::chrono::steady_clock::time_point start)
     : tiles_(tiles),
       films_(films),
       pixels_(pixels),
@@ -19,40 +21,63 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
       group_(group),
       opt_(opt),
       exchange_(group, tiles, {&films.image, films.decision_or_null()}),
-      stop_in_tile_(group.size() > 1 && opt.cancel) {
+      stop_in_tile_(group.size() > 1 && (opt.cancel || opt.time_limit > 0)),
+      deadline_(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(opt.time_limit))) {
   mine_.rank = group.rank();
 }
 
-bool TilePasses::run(const char* label, const std::function<int64_t(int, int)>& end_of) {
-  const int nranks = group_.size(), me = group_.rank();
+std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) const {
+  std::vector<std::size_t> own;
+  for (std::size_t j = std::size_t(group_.rank()); j < wave.size(); j += std::size_t(group_.size())) own.push_back(j);
+  return own;
+}
+
+double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {
+  const PixelRect& region = tiles_.region();
+  double total = 0;
+  for (const std::vector<int>& wave : tiles_.waves())
+    for (std::size_t j : own_tiles(wave)) {
+      const PixelRect p = tiles_.pixels(wave[j]);
+      for (int y = p.y0; y < p.y1; ++y)
+        for (int x = p.x0; x < p.x1; ++x) {
+          const int fx = x - region.x0, fy = y - region.y0;
+          total += double(std::max<int64_t>(0, end_of(fx, fy) - films_.image.at(fx, fy).prefix));
+        }
+    }
+  return total;
+}
+
+bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share) {
   std::atomic<bool> cancelled{false};
-  int64_t my_tiles = 0;
-  for (const std::vector<int>& wave : tiles_.waves()) my_tiles += (int64_t(wave.size()) + nranks - 1 - me) / nranks;
-  Progress progress(label, double(my_tiles), opt_.quiet || me != 0);
   for (const std::vector<int>& wave : tiles_.waves()) {
-    std::vector<std::size_t> own;
-    for (std::size_t j = std::size_t(me); j < wave.size(); j += std::size_t(nranks)) own.push_back(j);
+    const std::vector<std::size_t> own = own_tiles(wave);
     mine_.tiles += int64_t(own.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, own.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t k = r.begin(); k != r.end(); ++k) {
-        if (opt_.cancel && opt_.cancel->load(std::memory_order_relaxed)) {
+        if (interrupted()) {
           cancelled = true;
           return;
         }
-        render_tile(wave[own[k]], end_of, cancelled);
-        progress.advance();
+        progress.advance(double(render_tile(wave[own[k]], end_of, cancelled)));
       }
     });
-    if (nranks > 1 && exchange_.exchange(wave, cancelled, mine_)) cancelled = true;  // after it, all stop
+    if (group_.size() > 1) {  // after an exchange in which any rank was stopped, all stop
+      if (share || tiles_.spread() > 0)
+        cancelled = exchange_.exchange(wave, cancelled, mine_) || cancelled;
+      else if (exchange_.any_interrupted(cancelled, mine_))
+        cancelled = true, exchange_.exchange(wave, true, mine_);
+    }
     if (cancelled) break;
   }
   stopped_ = stopped_ || cancelled;
   return !cancelled;
 }
 
-void TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled) {
+int64_t TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled) {
   const auto t0 = std::chrono::steady_clock::now();
   const PixelRect region = tiles_.region(), p = tiles_.pixels(t);
+  int64_t added = 0;
   int64_t& rays = rays_.local();
   PixelSampleState ps(sampler_);
   std::optional<PixelSampleState> pd;
@@ -60,7 +85,7 @@ void TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_
   int64_t& count = traced_.local();
   for (int y = p.y0; y < p.y1 && !(stop_in_tile_ && cancelled.load(std::memory_order_relaxed)); ++y)
     for (int x = p.x0; x < p.x1; ++x) {
-      if (stop_in_tile_ && opt_.cancel->load(std::memory_order_relaxed)) {
+      if (stop_in_tile_ && interrupted()) {
         cancelled = true;
         break;
       }
@@ -68,11 +93,13 @@ void TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_
       PixelAccum& px = films_.image.at(fx, fy);
       int64_t begin = px.prefix, end = end_of(fx, fy);
       if (end <= begin) continue;
+      added += end - begin;
       const int64_t before = films_.traced(fx, fy);
       rays += pixels_.run(x, y, begin, end, films_.image, films_.decision_or_null(), ps, pd ? &*pd : nullptr);
       count += films_.traced(fx, fy) - before;
     }
   busy_.local() += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return added;
 }
 
 RankStats TilePasses::rank_stats() const {

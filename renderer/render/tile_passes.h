@@ -2,7 +2,8 @@
 // Passes over the image: in each, every pixel extends its prefix of samples to a count the
 // caller chooses. A pass renders the tile waves in order, this rank's tiles of a wave in
 // parallel (TBB), and exchanges the wave with the other ranks before the next; it stops early
-// when the render is cancelled. The passes count the rays and samples this rank traced.
+// when the render is cancelled or its time limit is reached. The passes count the rays and
+// samples this rank traced.
 #include "renderer/render/pixel_renderer.h"
 #include "renderer/render/render_films.h"
 #include "renderer/render/renderer.h"
@@ -12,27 +13,46 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 
 namespace pdrt {
 
+class Progress;
+
 class TilePasses {
  public:
-  // `decider`: the decision samples' sampler under "split", else nullptr.
+  // `decider`: the decision samples' sampler under "split", else nullptr; `start`: when the
+  // render started (options.time_limit counts from it).
   TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRenderer& pixels, const Sampler& sampler,
-             const Sampler* decider, const ProcessGroup& group, const RenderOptions& opt);
+             const Sampler* decider, const ProcessGroup& group, const RenderOptions& opt,
+             std::chrono::steady_clock::time_point start);
 
-  // Pixel (x, y) of the film (film coordinates) gets samples up to end_of(x, y). `label`
-  // names the pass on the progress bar. False when the pass was cancelled.
-  bool run(const char* label, const std::function<int64_t(int, int)>& end_of);
+  // Pixel (x, y) of the film (film coordinates) gets samples up to end_of(x, y); `progress`
+  // advances by the budget samples each tile adds. False when the pass was stopped.
+  // `share`: the films are read after the pass (the image, adaptive decisions), so every rank
+  // gets every rank's tiles; without it, and without splatting (no footprint reaches another
+  // rank's tile), the ranks only agree whether to stop, as each renders the same tiles in
+  // every pass, and the blocks go only when one was stopped.
+  bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share = true);
+  // The budget samples a pass to end_of would add to this rank's pixels (its progress's total).
+  double work(const std::function<int64_t(int, int)>& end_of) const;
 
-  bool stopped() const { return stopped_; }  // some pass was cancelled
+  bool stopped() const { return stopped_; }  // some pass was stopped
+  // Cancelled (RenderOptions::cancel), or past the time limit.
+  bool interrupted() const {
+    return (opt_.cancel && opt_.cancel->load(std::memory_order_relaxed)) ||
+           (opt_.time_limit > 0 && std::chrono::steady_clock::now() >= deadline_);
+  }
   // This rank's counts so far: tiles, exchanges, rays and samples traced.
   RankStats rank_stats() const;
 
  private:
-  void render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled);
+  // Returns the budget samples it added.
+  int64_t render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled);
+  // This rank's tiles of `wave` (positions in it): tile j of each wave is rank j mod N's.
+  std::vector<std::size_t> own_tiles(const std::vector<int>& wave) const;
 
   const TileWaves& tiles_;
   RenderFilms& films_;
@@ -45,6 +65,7 @@ class TilePasses {
   // Under mpirun a SIGKILL follows the SIGTERM within a second (docs/distributed.md): a
   // distributed render stops at the next pixel, not after the tile, so the partial image gets out.
   bool stop_in_tile_;
+  std::chrono::steady_clock::time_point deadline_;  // RenderOptions::time_limit after the start
   tbb::enumerable_thread_specific<int64_t> rays_{0}, traced_{0};
   tbb::enumerable_thread_specific<double> busy_{0.0};  // seconds inside render_tile
   RankStats mine_;

@@ -26,6 +26,7 @@ class TileWaves {
   // Tile t's footprint within the region: its pixels and the ones its samples reach.
   PixelRect footprint(int t) const;
   const PixelRect& region() const { return region_; }
+  int spread() const { return spread_; }
 
  private:
   int tx_;  // tiles per row

@@ -24,6 +24,16 @@ bool WaveExchange::exchange(const std::vector<int>& wave, bool interrupted, Rank
   return any;
 }
 
+bool WaveExchange::any_interrupted(bool interrupted, RankStats& mine) const {
+  const auto e0 = std::chrono::steady_clock::now();
+  bool any = false;
+  for (const std::vector<std::byte>& b : group_.all_gather({std::byte(interrupted ? 1 : 0)}))
+    any = any || b[0] != std::byte(0);
+  mine.bytes_sent += group_.size() - 1;
+  mine.exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count();
+  return any;
+}
+
 void WaveExchange::blocks(const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes, bool pack) const {
   const PixelRect& region = tiles_.region();
   std::size_t at = 1;  // bytes[0]: the rank was interrupted

@@ -24,6 +24,9 @@ class WaveExchange {
   // forever. Sends this rank's footprints of `wave` with whether it was `interrupted`, copies
   // the others'; true when any rank was. Adds the bytes sent and the time taken to `mine`.
   bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
+  // Collective: whether any rank was `interrupted`, without the blocks (a pass whose tiles no
+  // other rank reads before the next pass: progressive_passes.h).
+  bool any_interrupted(bool interrupted, RankStats& mine) const;
 
  private:
   // Copies the footprints of `rank`'s tiles of `wave` to (pack) or from (unpack) `bytes`.

@@ -71,10 +71,16 @@ TEST_F(BadInput, HugeSppIsRefusedAboveTheSharedMaximum) {
                  "--spp must be an integer in [1, 16777216]");
 }
 
+// The budget is in time, timed on the scene (render_estimate.h): 1.7e13 samples are over it on
+// any machine (46 min is 2.7 ns per sample), and --time-limit bounds a render instead.
 TEST_F(BadInput, RenderOverTheSampleBudgetIsRefusedUnlessAllowed) {
   fs::path scene = write_scene(dir, R"("width": 1000, "height": 1000)"), out = dir / "o.exr";
-  expect_refused("render " + scene.string() + " -o " + out.string() + " --spp 16000", out, 2,
-                 "1000x1000 pixels x 16000 spp = 1.6e+10 samples (about 1.2 hours");
+  expect_refused("render " + scene.string() + " -o " + out.string() + " --spp 16777216", out, 2,
+                 "1000x1000 pixels x 16777216 spp = 1.68e+13 samples (about ");
+  expect_refused("render " + scene.string() + " -o " + out.string() + " --spp 16777216", out, 2,
+                 "measured on this scene), more than the limit of 46 min");
+  auto limited = run_pdrt("render " + scene.string() + " -o " + out.string() + " --spp 16777216 --time-limit 1e-6 -q");
+  EXPECT_EQ(limited.exit_code, 0) << "a time limit bounds the render: " << limited.err;
   auto r = run_pdrt("render " + scene.string() + " -o " + out.string() +
                     " --spp 16000 --allow-long-render"
                     " --width 2 --height 2 -q");
@@ -84,7 +90,15 @@ TEST_F(BadInput, RenderOverTheSampleBudgetIsRefusedUnlessAllowed) {
 TEST_F(BadInput, CompareCountsEveryRenderAgainstTheBudget) {
   fs::path scene = write_scene(dir, R"("width": 2000, "height": 1000)");
   expect_refused("compare " + scene.string() + " -o " + (dir / "c").string() + " --no-plots --reference-spp 4096",
-                 dir / "c" / "results.json", 2, "more than the limit of 1e10 samples");
+                 dir / "c" / "results.json", 2, "more than the limit of 46 min");
+}
+
+TEST_F(BadInput, TimeLimitMustBeAPositiveNumber) {
+  fs::path scene = write_scene(dir), out = dir / "o.exr";
+  const std::string render = "render " + scene.string() + " -o " + out.string() + " -q --time-limit ";
+  for (const char* v : {"0", "-1", "-0.5"}) expect_refused(render + v, out, 2, "--time-limit must be > 0, got");
+  for (const char* v : {"abc", "1s", "nan", "inf", "''"})
+    expect_refused(render + v, out, 2, "--time-limit must be a finite number, got");
 }
 
 TEST_F(BadInput, RenderSaysWhatItWillCostBeforeStarting) {

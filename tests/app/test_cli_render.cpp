@@ -642,6 +642,45 @@ TEST(CliRender, InterruptWritesPartialImage) {
       << err.str();
 }
 
+// --time-limit: the render stops when it is reached and writes what it has, marked partial with
+// the spp every pixel reached, in the image, the stats and the summary; it asked for that, so it
+// exits 0. A limit of a microsecond is reached before any pass (the scene build alone is longer).
+namespace {
+// Renders the 24 x 16 test scene into `d` (out.exr, stats.json) with `args`.
+pdrt::test::CliResult render_with_stats(const fs::path& d, const std::string& args) {
+  fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
+  return run_pdrt("render " + scene.string() + " -o " + (d / "out.exr").string() + " --stats " +
+                  (d / "stats.json").string() + " " + args);
+}
+}  // namespace
+
+TEST(CliRender, TimeLimitWritesTheImageMarkedPartialWithItsSpp) {
+  fs::path d = scratch_dir("render_time_limit");
+  auto r = render_with_stats(d, "--spp 4096 --time-limit 0.000001");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto in = OIIO::ImageInput::open((d / "out.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
+  EXPECT_EQ(in->spec().get_string_attribute("pdrt:spp_complete"), "0");
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  EXPECT_EQ(j["partial"], true);
+  EXPECT_EQ(j["spp_complete"], 0);
+  EXPECT_NE(r.err.find("partial: every pixel at 0 spp or more"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stopped at the time limit of 1e-06 s"), std::string::npos) << r.err;
+}
+
+// A complete render says so everywhere: not partial, every pixel at the spp asked for.
+TEST(CliRender, CompleteRenderIsMarkedCompleteWithItsSpp) {
+  fs::path d = scratch_dir("render_complete");
+  auto r = render_with_stats(d, "--spp 12 --time-limit 3600 -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "stats.json"));
+  EXPECT_EQ(j["partial"], false);
+  EXPECT_EQ(j["spp_complete"], 12);
+  EXPECT_GT(j["estimate"]["seconds"].get<double>(), 0);
+  EXPECT_GT(j["estimate"]["calibration_samples"].get<int64_t>(), 0);
+}
+
 // film.crop_window: the image written has the crop's size (pbrt-v4's ceil rule: 24 x 16 film,
 // [0.25, 0.75] x [0.5, 1] is pixels 6..17 x 8..15), the stats name those pixels, and
 // --width/--height apply the same window to the new size; a window the new size leaves

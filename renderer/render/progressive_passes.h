@@ -1,0 +1,42 @@
+#pragma once
+// The passes of a render at a fixed spp: every pass covers the whole frame, so a render stopped
+// between passes (Ctrl-C, SIGTERM under mpirun, --time-limit) holds a complete image at the spp
+// every pixel reached, not finished strips next to black ones. As pbrt-v4's waves
+// (gpu/integrator.cpp) the pass sizes double, so the spp after each pass is 4, 8, 16, 32, ...,
+// a power of two up to the last pass (the stratified samplers' prefixes are best there). Two
+// differences, both for cost: the first pass is 4, not 1, because camera rays go to Embree in
+// packets of the samples [4j, 4j + 4) (pixel_renderer.h) and a pass ending inside a packet
+// traces its camera rays twice; and the sizes are not capped at pbrt-v4's 64, because a pass
+// prepares a pixel's sample streams from index 0 to its end (PixelSampleState::set_pixel_pass):
+// doubling passes prepare at most twice the values one pass does, capped ones a number
+// quadratic in the spp.
+#include <cstdint>
+#include <functional>
+
+namespace pdrt {
+
+inline constexpr int64_t kFirstPassSpp = 4;
+
+// The spp every pixel has after the pass that starts at `done` of a `spp` render (done < spp).
+inline int64_t next_pass_end(int64_t done, int64_t spp) {
+  if (done <= 0) return spp < kFirstPassSpp ? spp : kFirstPassSpp;
+  return spp - done < done ? spp : 2 * done;
+}
+
+// How many passes a `spp` render takes.
+inline int pass_count(int64_t spp) {
+  int n = 0;
+  for (int64_t done = 0; done < spp; done = next_pass_end(done, spp)) ++n;
+  return n;
+}
+
+class Progress;
+class TilePasses;
+
+// Renders every pixel from 0 to `spp` samples in those passes, on `progress` (the whole render's
+// work: budget samples of this rank's pixels); calls `on_pass` (if set) with the spp after each
+// complete pass. Returns the spp every pixel reached: `spp`, or less when a pass was stopped.
+int64_t render_progressive(TilePasses& passes, int64_t spp, Progress& progress,
+                           const std::function<void(int64_t)>& on_pass);
+
+}  // namespace pdrt

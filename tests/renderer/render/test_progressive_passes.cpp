@@ -1,0 +1,125 @@
+// Progressive passes (issue 33 item 5): every pass covers the whole frame, so a render stopped
+// after a pass holds every pixel at that pass's spp, and under filter-weighted reconstruction
+// ("importance": a pixel accumulates only its own samples, in index order, in packets of four
+// that no pass boundary splits) it is the uninterrupted render at that spp, bit for bit.
+#include "renderer/render/progressive_passes.h"
+#include "renderer/render/renderer.h"
+#include "tests/support/render_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+using test::base_scene;
+using test::diffuse;
+using test::emitter;
+using test::sphere;
+
+// A lit diffuse sphere in front of a dim environment: pixels that differ from sample to sample.
+SceneDesc lit_sphere(int spp, const char* sampler) {
+  SceneDesc s = base_scene(40, 24, spp);
+  s.sampler.type = sampler;
+  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
+  s.camera.position = Vec3(0, 0, 4), s.camera.look_at = Vec3(0, 0, 0), s.camera.vfov_deg = 40;
+  s.environment.radiance = Vec3(0.2f);
+  s.shapes.push_back(sphere(Vec3(0, 0, 0), 1, test::add_material(s, diffuse(0.7f))));
+  s.shapes.push_back(sphere(Vec3(2, 2, 2), 0.5f, test::add_material(s, emitter(8))));
+  return s;
+}
+
+// Renders `s`, cancelling once the pass that reaches `stop_at` spp is complete (0: never).
+RenderResult render_stopped_at(const SceneDesc& s, int64_t stop_at, int threads = 0) {
+  auto sampler = make_scene_sampler(s.sampler, s.film);
+  std::atomic<bool> cancel{false};
+  RenderOptions o;
+  o.quiet = true, o.threads = threads, o.cancel = &cancel;
+  o.on_pass = [&](int64_t spp) {
+    if (spp == stop_at) cancel = true;
+  };
+  return render(s, *sampler, o);
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+TEST(ProgressivePasses, SppDoublesFromFourToTheLastPass) {
+  std::vector<int64_t> ends;
+  for (int64_t done = 0; done < 256; done = next_pass_end(done, 256)) ends.push_back(next_pass_end(done, 256));
+  EXPECT_EQ(ends, (std::vector<int64_t>{4, 8, 16, 32, 64, 128, 256}));
+  EXPECT_EQ(pass_count(256), 7);
+  EXPECT_EQ(next_pass_end(0, 1), 1);  // fewer samples than a first pass: one pass
+  EXPECT_EQ(next_pass_end(4, 6), 6);
+  EXPECT_EQ(next_pass_end(8, 20), 16);
+  EXPECT_EQ(next_pass_end(16, 20), 20);  // the last pass ends at the spp, not a power of two
+}
+
+TEST(ProgressivePasses, StoppedAfterTheFirstPassEveryPixelHasItsSpp) {
+  const RenderResult r = render_stopped_at(lit_sphere(64, "sobol"), 4);
+  EXPECT_TRUE(r.stats.partial);
+  EXPECT_EQ(r.stats.spp_complete, 4);
+  EXPECT_DOUBLE_EQ(r.stats.spp_mean, 4.0);
+  for (float n : r.image.samples) ASSERT_EQ(n, 4.0f) << "a pixel without the first pass's samples";
+}
+
+// Every sampler family's prefixes, at 1 and 2 threads.
+TEST(ProgressivePasses, StoppedAtAPassBoundaryIsTheRenderAtThatSppBitForBit) {
+  for (const char* sampler : {"random", "jitter", "sobol", "poisson"})
+    for (int threads : {1, 2}) {
+      const RenderResult stopped = render_stopped_at(lit_sphere(256, sampler), 16, threads);
+      const RenderResult whole = render_stopped_at(lit_sphere(16, sampler), 0, threads);
+      EXPECT_TRUE(stopped.stats.partial);
+      EXPECT_FALSE(whole.stats.partial);
+      EXPECT_EQ(stopped.stats.spp_complete, 16);
+      EXPECT_TRUE(same_bits(stopped.image.rgb, whole.image.rgb)) << sampler << ", " << threads << " threads";
+      EXPECT_TRUE(same_bits(stopped.image.samples, whole.image.samples)) << sampler;
+    }
+}
+
+TEST(ProgressivePasses, ACompleteRenderReachesItsSppInEveryPixel) {
+  const RenderResult r = render_stopped_at(lit_sphere(24, "jitter"), 0);
+  EXPECT_FALSE(r.stats.partial);
+  EXPECT_EQ(r.stats.spp_complete, 24);
+  for (float n : r.image.samples) ASSERT_EQ(n, 24.0f);
+}
+
+// The time limit stops the render as a cancel does: here the first pass ends long before the
+// 1 s limit (a 40x24 image at 4 spp), and the pass waits for the deadline to pass, so the next
+// pass stops at its first tile and the image is the first pass's.
+TEST(ProgressivePasses, TimeLimitStopsBetweenPassesWithEveryPixelAtTheSppReached) {
+  const SceneDesc s = lit_sphere(4096, "sobol");
+  auto sampler = make_scene_sampler(s.sampler, s.film);
+  RenderOptions o;
+  o.quiet = true, o.time_limit = 1.0;
+  std::chrono::steady_clock::time_point built;
+  o.on_estimate = [&](const RenderEstimate&) { built = std::chrono::steady_clock::now(); };
+  o.on_pass = [&](int64_t spp) {
+    if (spp != 4) return;
+    while (std::chrono::steady_clock::now() < built + std::chrono::duration<double>(o.time_limit)) {}
+  };
+  const RenderResult r = render(s, *sampler, o);
+  EXPECT_TRUE(r.stats.partial);
+  EXPECT_EQ(r.stats.spp_complete, 4);
+  for (float n : r.image.samples) ASSERT_EQ(n, 4.0f);
+  EXPECT_TRUE(same_bits(r.image.rgb, render_stopped_at(lit_sphere(4, "sobol"), 0).image.rgb));
+}
+
+// Adaptive rendering: round 0 runs in the same passes, so a stop after its first pass leaves
+// every pixel at that pass's spp.
+TEST(ProgressivePasses, AdaptiveRoundZeroStoppedAfterItsFirstPassHasEveryPixelAtItsSpp) {
+  SceneDesc s = lit_sphere(16, "sobol");
+  s.sampler.adaptive.enabled = true, s.sampler.adaptive.min_spp = 16, s.sampler.adaptive.max_spp = 64;
+  const RenderResult r = render_stopped_at(s, 4);
+  EXPECT_TRUE(r.stats.partial);
+  EXPECT_EQ(r.stats.spp_complete, 4);
+  for (float n : r.image.samples) ASSERT_EQ(n, 4.0f);
+}
+
+}  // namespace
+}  // namespace pdrt

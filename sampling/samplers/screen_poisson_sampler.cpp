@@ -54,20 +54,23 @@ class DigitCache {
  public:
   uint32_t operator()(uint32_t z, int bits, uint64_t key) {
     if (key != key_ || bits != bits_) key_ = key, bits_ = bits, valid_ = false;
-    bool same = valid_;
-    uint32_t out = 0;
+    if (valid_ && z == z_) return out_;
     int shift = bits - 2;
+    uint32_t out = 0;
+    if (valid_) {  // the digits above the first difference stay; its own keeps its permutation
+      const int d = 31 - __builtin_clz(z ^ z_);
+      shift = d - ((d - bits) & 1);
+      out = shift + 2 >= 32 ? 0u : out_ & (~0u << (shift + 2));
+      out |= shift >= 0 ? permuted_digit(z, shift, r_[std::size_t(shift) >> 1]) : (z & 1u) ^ flip_;
+      shift -= 2;
+    }
     for (; shift >= 0; shift -= 2) {
-      same = same && (uint64_t(z ^ z_) >> (shift + 2)) == 0;
       uint8_t& r = r_[std::size_t(shift) >> 1];
-      if (!same) r = digit_permutation(z, shift, key);
+      r = digit_permutation(z, shift, key);
       out |= permuted_digit(z, shift, r);
     }
-    if (shift == -1) {
-      if (!(same && ((z ^ z_) >> 1) == 0)) flip_ = tail_flip(z, 0, key);
-      out |= (z & 1u) ^ flip_;
-    }
-    z_ = z, valid_ = true;
+    if (shift == -1) flip_ = tail_flip(z, 0, key), out |= (z & 1u) ^ flip_;
+    z_ = z, out_ = out, valid_ = true;
     return out;
   }
 
@@ -75,15 +78,24 @@ class DigitCache {
   uint64_t key_ = 0;
   int bits_ = -1;
   bool valid_ = false;
-  uint32_t z_ = 0, flip_ = 0;
+  uint32_t z_ = 0, out_ = 0, flip_ = 0;
   std::array<uint8_t, 16> r_{};
 };
 
-// x in the even bits, y in the odd ones (16 bits each).
+// Byte b with its bits spread to the even positions of 16.
+constexpr std::array<uint16_t, 256> kSpreadByte = [] {
+  std::array<uint16_t, 256> t{};
+  for (int v = 0; v < 256; ++v)
+    for (int b = 0; b < 8; ++b) t[std::size_t(v)] = uint16_t(t[std::size_t(v)] | (((v >> b) & 1) << (2 * b)));
+  return t;
+}();
+
+// The Morton index of (x, y): x in the even bits, y in the odd ones (16 bits each).
 uint32_t interleave(uint32_t x, uint32_t y) {
-  uint32_t z = 0;
-  for (int b = 0; b < 16; ++b) z |= ((x >> b) & 1u) << (2 * b) | ((y >> b) & 1u) << (2 * b + 1);
-  return z;
+  auto spread = [](uint32_t v) {
+    return uint32_t(kSpreadByte[v & 255u]) | uint32_t(kSpreadByte[(v >> 8) & 255u]) << 16;
+  };
+  return spread(x) | spread(y) << 1;
 }
 
 constexpr uint64_t kKeySalt = 0x706f6973736f6e2dull;    // independent of zsobol's keys

@@ -169,8 +169,6 @@ class ScreenPoissonSampler final : public Sampler {
                        std::to_string(pixel.params.tile) + " x " + std::to_string(pixel.params.tile) +
                        " pixels); screen-space order needs untiled tables");
     set_ = ordered_set(t);
-    for (int f = 0; f < kFamilyCount; ++f)
-      for (int b = 0; b < kCachedBounces; ++b) key0_[std::size_t(f * kCachedBounces + b)] = block_key(Family(f), b, 0);
   }
   std::string name() const override { return sampler_name(SamplerKind::PoissonSS); }
 
@@ -201,7 +199,7 @@ class ScreenPoissonSampler final : public Sampler {
   // checked against, so values do not depend on what a thread computed before).
   struct StreamCache {
     DigitCache digits;
-    uint64_t sampler = 0, key = 0;
+    uint64_t sampler = 0, block = 0, key = 0;  // the sampler (id_) and block whose key this is
     uint32_t run_id = UINT32_MAX;
     Run run;
   };
@@ -210,20 +208,20 @@ class ScreenPoissonSampler final : public Sampler {
   std::array<uint32_t, 2> fixed(int px, int py, uint64_t index, Family f, int bounce) const {
     const OrderedTables& t = tables(f);
     const uint64_t block = index >> m_;
-    const uint64_t key = block == 0 && unsigned(bounce) < unsigned(kCachedBounces)
-                             ? key0_[std::size_t(int(f) * kCachedBounces + bounce)]
-                             : block_key(f, bounce, block);
     const uint32_t z = pixel_index(px, py) | (uint32_t(index) & low_mask());
     uint32_t p;
     Run run;
     if (unsigned(bounce) < unsigned(kCachedBounces)) {
-      thread_local std::array<StreamCache, kFamilyCount * kCachedBounces> cache;
-      StreamCache& c = cache[std::size_t(int(f) * kCachedBounces + bounce)];
-      p = c.digits(z, bits(), key);
-      if (c.sampler != id_ || c.key != key || c.run_id != run_of(p, t))
-        c.sampler = id_, c.key = key, c.run_id = run_of(p, t), c.run = map_run(key, c.run_id, f, t);
+      // Four blocks per stream: a camera packet of 4 samples at 1 or 2 spp spans them.
+      thread_local std::array<StreamCache, kFamilyCount * kCachedBounces * 4> cache;
+      StreamCache& c = cache[(std::size_t(int(f) * kCachedBounces + bounce) << 2) + (block & 3)];
+      if (c.sampler != id_ || c.block != block)
+        c.sampler = id_, c.block = block, c.key = block_key(f, bounce, block), c.run_id = UINT32_MAX;
+      p = c.digits(z, bits(), c.key);
+      if (c.run_id != run_of(p, t)) c.run_id = run_of(p, t), c.run = map_run(c.key, c.run_id, f, t);
       run = c.run;
     } else {
+      const uint64_t key = block_key(f, bounce, block);
       p = scramble_digits(z, bits(), 0, key);
       run = map_run(key, run_of(p, t), f, t);
     }
@@ -261,7 +259,6 @@ class ScreenPoissonSampler final : public Sampler {
   static constexpr int kCachedBounces = PixelSampleState::kCachedSalts;
   static inline std::atomic<uint64_t> next_id_{1};
   uint64_t id_ = next_id_.fetch_add(1);  // tells the thread caches' runs of one sampler from another's
-  std::array<uint64_t, kFamilyCount * kCachedBounces> key0_{};  // block 0's keys
   int m_ = 0, k_ = 0;
   std::shared_ptr<const OrderedSet> set_;
 };

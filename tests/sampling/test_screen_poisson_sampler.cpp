@@ -51,13 +51,21 @@ std::vector<std::array<int, 2>> square(int x0, int y0, int side) {
   return p;
 }
 
+// Table t of a default family's in progressive order (empty when it has none).
+std::vector<uint32_t> order_of(Family f, uint32_t t) {
+  const SampleTable& s = *default_tables().family[int(f)];
+  std::string why;
+  const auto order = progressive_order(s.coords[t].data(), s.params.points, s.dim, &why);
+  EXPECT_TRUE(order) << why;
+  return order ? *order : std::vector<uint32_t>{};
+}
+
 TEST(ProgressiveOrder, EveryAlignedBlockOfTheOwenPdTablesIsANet) {
   const SampleTable& t = *default_tables().family[int(Family::Lens)];
-  for (const auto& c : t.coords) {
-    std::string why;
-    const auto order = progressive_order(c.data(), t.params.points, 2, &why);
-    ASSERT_TRUE(order) << why;
-    EXPECT_EQ(broken_blocks(table_points(c, &*order)), 0);
+  for (uint32_t k = 0; k < t.table_count(); ++k) {
+    const std::vector<uint32_t> order = order_of(Family::Lens, k);
+    ASSERT_EQ(order.size(), t.params.points);
+    EXPECT_EQ(broken_blocks(table_points(t.coords[k], &order)), 0);
   }
 }
 
@@ -68,11 +76,10 @@ TEST(ProgressiveOrder, StoredFarthestFirstOrderBreaksAlignedBlocksSoTheTestCanFa
 
 TEST(ProgressiveOrder, KeepsThePowerOfTwoPrefixesAsSets) {
   const SampleTable& t = *default_tables().family[int(Family::Gloss)];
-  std::string why;
-  const auto order = progressive_order(t.coords[3].data(), t.params.points, 2, &why);
-  ASSERT_TRUE(order);
+  const std::vector<uint32_t> order = order_of(Family::Gloss, 3);
+  ASSERT_EQ(order.size(), t.params.points);
   for (uint32_t n = 1; n <= t.params.points; n *= 2) {
-    std::set<uint32_t> a(order->begin(), order->begin() + n);
+    std::set<uint32_t> a(order.begin(), order.begin() + n);
     EXPECT_EQ(a.size(), n);
     EXPECT_LT(*a.rbegin(), n);
   }
@@ -80,14 +87,13 @@ TEST(ProgressiveOrder, KeepsThePowerOfTwoPrefixesAsSets) {
 
 TEST(ProgressiveOrder, TimeTablesAlignedBlocksAreStratified) {
   const SampleTable& t = *default_tables().family[int(Family::Time)];
-  for (const auto& c : t.coords) {
-    std::string why;
-    const auto order = progressive_order(c.data(), t.params.points, 1, &why);
-    ASSERT_TRUE(order) << why;
+  for (uint32_t k = 0; k < t.table_count(); ++k) {
+    const std::vector<uint32_t> order = order_of(Family::Time, k);
+    ASSERT_EQ(order.size(), t.params.points);
     for (uint32_t size = 2; size <= t.params.points; size *= 2)
       for (uint32_t a = 0; a < t.params.points; a += size) {
         std::set<uint32_t> strata;
-        for (uint32_t j = a; j < a + size; ++j) strata.insert(c[(*order)[j]] >> (32 - std::countr_zero(size)));
+        for (uint32_t j = a; j < a + size; ++j) strata.insert(t.coords[k][order[j]] >> (32 - std::countr_zero(size)));
         ASSERT_EQ(strata.size(), size);
       }
   }
@@ -159,22 +165,8 @@ TEST(ScreenPoissonSampler, TimeSamplesOfAlignedPixelGroupsAreStratified) {
 
 TEST(ScreenPoissonSampler, PreparedStreamsMatchValueByValueAcrossBlocks) {
   auto s = screen(21, {4, 20, 12});
-  for (Family f : {Family::Pixel, Family::Time, Family::Gloss}) {
-    PreparedStream p;
-    p.want = 40;  // ten blocks of 4
-    s->prepare(7, 3, f, 2, &p);
-    ASSERT_NE(p.coords, nullptr);
-    ASSERT_GE(p.count, 40u);
-    for (int i = 0; i < 40; ++i) {
-      if (family_dim(f) == 1) {
-        ASSERT_EQ(p.value(i, 0), s->get_1d(7, 3, i, f, 2));
-      } else {
-        const Vec2 v = s->get_2d(7, 3, i, f, 2);
-        ASSERT_EQ(p.value(i, 0), v[0]);
-        ASSERT_EQ(p.value(i, 1), v[1]);
-      }
-    }
-  }
+  for (Family f : {Family::Pixel, Family::Time, Family::Gloss})
+    EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, 2, 40), 0) << family_name(f);  // ten blocks of 4
 }
 
 TEST(ScreenPoissonSampler, RefinementBlocksAreScreenSpacePatternsOfTheirOwn) {

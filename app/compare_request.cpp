@@ -8,6 +8,7 @@
 #include "renderer/compare/scene_inputs.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/input_files.h"
+#include "renderer/scene/render_settings.h"
 #include "renderer/scene/scene_limits.h"
 #include "renderer/scene/scene_loader.h"
 #include "sampling/core/errors.h"
@@ -102,6 +103,14 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   rendered.sampler.adaptive.enabled = false;
   if (c.adaptive) rendered.sampler.adaptive = sweep_adaptive(scene, c);
   check_overridden_settings(rendered);
+  // Every sampler at every count, before the reference: the screen-space samplers' pixel order.
+  for (const std::string& name : c.samplers)
+    for (int spp : c.spp) {
+      SamplerDesc d = rendered.sampler;
+      d.type = name, d.spp = spp, d.adaptive.enabled = false;
+      if (std::string p = pixel_order_problem(d, rendered.film); !p.empty())
+        throw UsageError("--samplers/--spp: sampler " + p);
+    }
   if (check_budget) {
     check_film_memory(scene.film.width, scene.film.height,
                       r.width || r.height ? "--width/--height" : scene.film.size_where);

@@ -28,6 +28,17 @@ std::string crop_window_problem(const FilmDesc& f) {
   return s.str();
 }
 
+std::string pixel_order_problem(const SamplerDesc& d, const FilmDesc& f) {
+  SamplerKind kind{};
+  if (!parse_sampler(d.type, &kind) || !orders_pixels(kind)) return "";
+  const int spp = d.adaptive.enabled ? d.adaptive.min_spp : d.spp;
+  const int bits = pixel_order_bits(spp, f.width, f.height);
+  if (bits <= kPixelOrderBits) return "";
+  return "\"" + d.type + "\" orders " + std::to_string(f.width) + "x" + std::to_string(f.height) + " pixels at " +
+         std::to_string(spp) + " spp with " + std::to_string(bits) + " bits of Morton and sample index, at most " +
+         std::to_string(kPixelOrderBits) + " (fewer samples per pixel or a smaller image)";
+}
+
 std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
   using Setting = SettingsProblem::Setting;
   const AdaptiveDesc& ad = s.sampler.adaptive;
@@ -37,13 +48,16 @@ std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
     return SettingsProblem{Setting::AdaptiveDecision, "adaptive decision " + p};
   if (std::string p = crop_window_problem(s.film); !p.empty())
     return SettingsProblem{Setting::CropWindow, "film.crop_window " + p};
+  if (std::string p = pixel_order_problem(s.sampler, s.film); !p.empty())
+    return SettingsProblem{Setting::PixelOrder, "sampler " + p};
   return std::nullopt;
 }
 
 void check_render_settings(const SceneDesc& s) {
   const std::optional<SettingsProblem> p = render_settings_problem(s);
   if (!p) return;
-  if (p->setting == SettingsProblem::Setting::CropWindow) throw InputError(s.film.size_where + ": " + p->message);
+  if (p->setting == SettingsProblem::Setting::CropWindow || p->setting == SettingsProblem::Setting::PixelOrder)
+    throw InputError(s.film.size_where + ": " + p->message);
   throw InputError(p->message);
 }
 

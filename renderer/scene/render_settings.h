@@ -21,8 +21,13 @@ std::string decision_problem(const AdaptiveDesc& ad, Reconstruction reconstructi
 // film.crop_window: "covers no pixel of the 8x8 film (pixels ceil(size * bound) are [5, 5) x [0, 8))".
 std::string crop_window_problem(const FilmDesc& film);
 
+// sampler.type: "\"poisson-ss\" orders 4096x4096 pixels at 1024 spp with 34 bits of Morton and
+// sample index, at most 32 (...)" for the samplers that order pixels (orders_pixels); spp is
+// the first pass's (adaptive min_spp).
+std::string pixel_order_problem(const SamplerDesc& sampler, const FilmDesc& film);
+
 struct SettingsProblem {
-  enum class Setting { AdaptiveSpp, AdaptiveDecision, CropWindow } setting;
+  enum class Setting { AdaptiveSpp, AdaptiveDecision, CropWindow, PixelOrder } setting;
   // The setting named as outside a file: "adaptive: min_spp ...", "adaptive decision \"split\"
   // needs ...", "film.crop_window covers no pixel ...".
   std::string message;
@@ -31,8 +36,8 @@ struct SettingsProblem {
 // The first rule `s` breaks, in the order above, or nothing.
 std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s);
 
-// InputError with the problem's message (the crop window's after film.size_where, which names
-// the film's size in the scene file).
+// InputError with the problem's message (the crop window's and the pixel order's after
+// film.size_where, which names the film's size in the scene file).
 void check_render_settings(const SceneDesc& s);
 
 }  // namespace pdrt

@@ -4,6 +4,7 @@
 #include "sampling/core/bit_reverse.h"
 #include "sampling/core/errors.h"
 #include "sampling/samplers/poisson_sampler.h"
+#include "sampling/samplers/screen_poisson_sampler.h"
 #include "sampling/samplers/zsobol_sampler.h"
 #include "sampling/core/rng.h"
 
@@ -71,6 +72,8 @@ std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const Sam
       return make_poisson_sampler(seed, default_tables());
     case SamplerKind::Poisson065:
       return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
+    case SamplerKind::PoissonSS:
+      return make_screen_poisson_sampler(seed, default_tables(), shape);
   }
   return nullptr;
 }

@@ -241,14 +241,14 @@ const std::vector<std::string>& sampler_names();
 const std::vector<std::string>& all_sampler_names();
 std::string sampler_name_list();  // "random, jitter, ..., regular"
 
-// What a sampler that arranges samples across pixels (zsobol) needs of the render: the
+// What a sampler that arranges samples across pixels (zsobol, poisson-ss) needs of the render: the
 // samples per pixel of its first pass (the block each pixel takes) and the film's size.
 struct SamplerShape {
   int64_t samples_per_pixel = 16;
   int width = 1024, height = 1024;
 };
 
-// Throws UsageError naming the sampler for an unknown name (and for a shape zsobol cannot order).
+// Throws UsageError naming the sampler for an unknown name (and for a shape zsobol or poisson-ss cannot order).
 std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed, const SamplerShape& shape = {});
 std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const SamplerShape& shape = {});
 }  // namespace pdrt

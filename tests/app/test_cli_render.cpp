@@ -596,10 +596,12 @@ TEST(CliCompare, PlotsGiveEverySamplerItsOwnColour) {
 TEST(CliCompare, BadOptionsAreUsageErrors) {
   fs::path d = scratch_dir("compare_bad");
   fs::path scene = write_scene(d);
-  for (std::string a : {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100",
-                        "--adaptive-metric foo", "--adaptive-variance foo", "--adaptive-decision foo",
-                        "--adaptive --adaptive-target-spp 3", "--reconstruction weights", "--seeds 0", "--seeds -1",
-                        "--seeds two", "--seeds 1.5", "--reconstruction rank --adaptive --adaptive-decision split"}) {
+  for (std::string a :
+       {"--samplers foo", "--spp 4,2", "--spp 0", "--spp 64 --reference-spp 100", "--adaptive-metric foo",
+        "--adaptive-variance foo", "--adaptive-decision foo", "--adaptive --adaptive-target-spp 3",
+        "--reconstruction weights", "--seeds 0", "--seeds -1", "--seeds two", "--seeds 1.5",
+        "--reconstruction rank --adaptive --adaptive-decision split",
+        "--samplers poisson,poisson-ss --spp 1,4096 --reference-spp 16384 --width 2048 --height 2048"}) {
     auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "r").string() + " --no-plots " + a);
     EXPECT_EQ(r.exit_code, 2) << a << ": " << r.err;
     EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;

@@ -164,3 +164,33 @@ TEST(RenderSettings, EmptyCropIsRefusedAlikeByBothLoadersAndTheRenderer) {
   EXPECT_EQ(input_error([&] { render(s, *sampler, RenderOptions{}); }),
             s.film.size_where + ": film.crop_window " + words);
 }
+
+// The samplers that order pixels (zsobol, poisson-ss) refuse a film and first pass whose Morton
+// and sample index need more than 32 bits, located at the film's size in a scene file; the
+// first pass is adaptive min_spp when refining.
+TEST(RenderSettings, PixelOrderPastThirtyTwoBitsIsRefusedAtTheFilmSize) {
+  const fs::path json = temp_file("s.json", R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {"width": 4096, "height": 300},
+  "sampler": {"type": "poisson-ss", "spp": 1024}
+})");
+  EXPECT_NE(
+      input_error([&] { load_scene(json); })
+          .find(":3:21: film.width/height: sampler \"poisson-ss\" orders 4096x300 pixels at 1024 spp with 34 bits "
+                "of Morton and sample index, at most 32 (fewer samples per pixel or a smaller image)"),
+      std::string::npos);
+  SceneDesc s;
+  s.film.width = 4096, s.film.height = 300, s.sampler.spp = 1024;
+  for (const char* name : {"zsobol", "poisson-ss"}) {
+    s.sampler.type = name;
+    auto p = render_settings_problem(s);
+    ASSERT_TRUE(p) << name;
+    EXPECT_EQ(p->setting, SettingsProblem::Setting::PixelOrder);
+  }
+  s.sampler.spp = 256;
+  EXPECT_FALSE(render_settings_problem(s)) << "32 bits fit";
+  s.sampler.spp = 1024, s.sampler.adaptive.enabled = true, s.sampler.adaptive.min_spp = 256;
+  EXPECT_FALSE(render_settings_problem(s)) << "the first pass is min_spp";
+  s.sampler.type = "poisson", s.sampler.adaptive.enabled = false;
+  EXPECT_FALSE(render_settings_problem(s)) << "per-pixel samplers order nothing";
+}

@@ -1,0 +1,280 @@
+// `poisson-ss` (screen_poisson_sampler.h).
+#include "sampling/samplers/screen_poisson_sampler.h"
+
+#include "sampling/core/errors.h"
+#include "sampling/core/rng.h"
+#include "sampling/samplers/progressive_order.h"
+
+#include <array>
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <bit>
+#include <string>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+// The 24 permutations of a base-4 digit, decoded from their Lehmer codes; permutation r sends
+// digit d to (kDigitPermutations[r] >> 2d) & 3.
+constexpr std::array<uint8_t, 24> kDigitPermutations = [] {
+  std::array<uint8_t, 24> t{};
+  for (int r = 0; r < 24; ++r) {
+    std::array<int, 4> left = {0, 1, 2, 3};
+    int code = r, count = 4;
+    for (int d = 0; d < 4; ++d, --count) {
+      const int c = code % count;
+      code /= count;
+      t[std::size_t(r)] = uint8_t(t[std::size_t(r)] | (left[std::size_t(c)] << (2 * d)));
+      for (int i = c; i + 1 < count; ++i) left[std::size_t(i)] = left[std::size_t(i) + 1];
+    }
+  }
+  return t;
+}();
+
+// The permutation of the digit of z at `shift`: a hash of key and of z's bits above the digit.
+uint8_t digit_permutation(uint32_t z, int shift, uint64_t key) {
+  const uint64_t h = mix64(key ^ ((uint64_t(z) >> (shift + 2)) * 0xc2b2ae3d27d4eb4full) ^ uint64_t(shift));
+  return uint8_t(((h >> 32) * 24u) >> 32);
+}
+uint32_t permuted_digit(uint32_t z, int shift, uint8_t r) {
+  return ((uint32_t(kDigitPermutations[r]) >> (2 * ((z >> shift) & 3u))) & 3u) << shift;
+}
+// An odd width's last digit, the single bit lo: flipped by a hash of the bits above it.
+uint32_t tail_flip(uint32_t z, int lo, uint64_t key) {
+  return uint32_t(mix64(key ^ ((uint64_t(z) >> (lo + 1)) * 0xc2b2ae3d27d4eb4full) ^ 0x5bd1e995ull) >> 63);
+}
+
+// scramble_digits(z, bits, 0, key) that keeps the permutations of the last index: consecutive
+// indices of a stream (a pixel's samples, then the next pixel's) share the digits above their
+// first difference, so a neighbouring pixel costs the digits that change (about 4/3) and a
+// pixel's samples the nodes of their subtree, instead of every digit of every index.
+class DigitCache {
+ public:
+  uint32_t operator()(uint32_t z, int bits, uint64_t key) {
+    if (key != key_ || bits != bits_) key_ = key, bits_ = bits, valid_ = false;
+    if (valid_ && z == z_) return out_;
+    int shift = bits - 2;
+    uint32_t out = 0;
+    if (valid_) {  // the digits above the first difference stay; its own keeps its permutation
+      const int d = 31 - __builtin_clz(z ^ z_);
+      shift = d - ((d - bits) & 1);
+      out = shift + 2 >= 32 ? 0u : out_ & (~0u << (shift + 2));
+      out |= shift >= 0 ? permuted_digit(z, shift, r_[std::size_t(shift) >> 1]) : (z & 1u) ^ flip_;
+      shift -= 2;
+    }
+    for (; shift >= 0; shift -= 2) {
+      uint8_t& r = r_[std::size_t(shift) >> 1];
+      r = digit_permutation(z, shift, key);
+      out |= permuted_digit(z, shift, r);
+    }
+    if (shift == -1) flip_ = tail_flip(z, 0, key), out |= (z & 1u) ^ flip_;
+    z_ = z, out_ = out, valid_ = true;
+    return out;
+  }
+
+ private:
+  uint64_t key_ = 0;
+  int bits_ = -1;
+  bool valid_ = false;
+  uint32_t z_ = 0, out_ = 0, flip_ = 0;
+  std::array<uint8_t, 16> r_{};
+};
+
+// Byte b with its bits spread to the even positions of 16.
+constexpr std::array<uint16_t, 256> kSpreadByte = [] {
+  std::array<uint16_t, 256> t{};
+  for (int v = 0; v < 256; ++v)
+    for (int b = 0; b < 8; ++b) t[std::size_t(v)] = uint16_t(t[std::size_t(v)] | (((v >> b) & 1) << (2 * b)));
+  return t;
+}();
+
+// The Morton index of (x, y): x in the even bits, y in the odd ones (16 bits each).
+uint32_t interleave(uint32_t x, uint32_t y) {
+  auto spread = [](uint32_t v) {
+    return uint32_t(kSpreadByte[v & 255u]) | uint32_t(kSpreadByte[(v >> 8) & 255u]) << 16;
+  };
+  return spread(x) | spread(y) << 1;
+}
+
+constexpr uint64_t kKeySalt = 0x706f6973736f6e2dull;    // independent of zsobol's keys
+constexpr uint64_t kShiftSalt = 0x73732d7368696674ull;  // a run's shift, apart from its table pick
+
+// One family's tables in progressive order: table t's point j at coords[t][j * dim + k].
+struct OrderedTables {
+  std::vector<std::vector<uint32_t>> coords;
+  int dim = 2;
+  int bits = 0;  // log2 of the points per table
+};
+
+void add_ordered(const SampleTable& t, Family f, OrderedTables* out) {
+  for (const auto& c : t.coords) {
+    std::string why;
+    const auto order = progressive_order(c.data(), t.params.points, t.dim, &why);
+    if (!order)
+      throw UsageError(std::string("sampler poisson-ss: the ") + family_name(f) + " tables cannot be read in " +
+                       "screen-space order: " + why);
+    std::vector<uint32_t> v(c.size());
+    for (uint32_t j = 0; j < t.params.points; ++j)
+      for (int k = 0; k < t.dim; ++k) v[std::size_t(j) * t.dim + k] = c[std::size_t((*order)[j]) * t.dim + k];
+    out->coords.push_back(std::move(v));
+  }
+  out->dim = t.dim;
+  out->bits = std::countr_zero(t.params.points);
+}
+
+// A table set in progressive order. The 2-D families' tables are one pool, as in `poisson`
+// (when they are of one size); `own` holds a 2-D family whose tables differ in size from the pixel's.
+struct OrderedSet {
+  OrderedTables plane, line;
+  std::array<OrderedTables, kFamilyCount> own;
+};
+
+// Ordered once per table set and kept (a compare run makes a sampler per seed and spp).
+std::shared_ptr<const OrderedSet> ordered_set(const TableSet& t) {
+  static std::mutex mutex;
+  static std::vector<std::pair<decltype(t.family), std::shared_ptr<const OrderedSet>>> done;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& [family, set] : done)
+    if (family == t.family) return set;
+  auto set = std::make_shared<OrderedSet>();
+  const uint32_t pixel_points = t.family[int(Family::Pixel)]->params.points;
+  for (int f = 0; f < kFamilyCount; ++f) {
+    const SampleTable& ft = *t.family[std::size_t(f)];
+    OrderedTables& to = ft.dim == 1                        ? set->line
+                        : ft.params.points == pixel_points ? set->plane
+                                                           : set->own[std::size_t(f)];
+    add_ordered(ft, Family(f), &to);
+  }
+  done.emplace_back(t.family, set);
+  return set;
+}
+
+class ScreenPoissonSampler final : public Sampler {
+ public:
+  ScreenPoissonSampler(uint64_t seed, const TableSet& t, const SamplerShape& o) : Sampler(seed) {
+    const std::string me = "sampler poisson-ss: ";
+    if (o.samples_per_pixel < 1) throw UsageError(me + "samples per pixel must be >= 1");
+    if (o.width < 1 || o.height < 1) throw UsageError(me + "the image must have at least one pixel");
+    m_ = pixel_order_bits(o.samples_per_pixel, 1, 1);
+    k_ = pixel_order_bits(1, o.width, o.height) / 2;
+    if (bits() > kPixelOrderBits)
+      throw UsageError(me + std::to_string(o.width) + " x " + std::to_string(o.height) + " pixels at " +
+                       std::to_string(o.samples_per_pixel) + " samples per pixel need " + std::to_string(bits()) +
+                       " bits of Morton and sample index, at most 32 (fewer samples per pixel or a smaller image)");
+    const SampleTable& pixel = *t.family[int(Family::Pixel)];
+    if (pixel.params.tile > 1)
+      throw UsageError(me + "the pixel tables in " + t.dir.string() + " are tiled (" +
+                       std::to_string(pixel.params.tile) + " x " + std::to_string(pixel.params.tile) +
+                       " pixels); screen-space order needs untiled tables");
+    set_ = ordered_set(t);
+  }
+  std::string name() const override { return sampler_name(SamplerKind::PoissonSS); }
+
+  double get_1d(int px, int py, int64_t index, Family f, int bounce) const override {
+    return unit_from_u32(fixed(px, py, uint64_t(index), f, bounce)[0]);
+  }
+  Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
+    const auto v = fixed(px, py, uint64_t(index), f, bounce);
+    return {unit_from_u32(v[0]), unit_from_u32(v[1])};
+  }
+  void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
+    fill_prepared(out, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
+      const auto c = fixed(px, py, i, f, bounce);
+      for (int k = 0; k < family_dim(f); ++k) v[k] = c[std::size_t(k)];
+    });
+  }
+
+  int64_t samples_available(int, int) const override { return INT64_MAX; }
+
+ private:
+  // A run of M indices: its table, its digital shift and whether its axes swap (both keep nets).
+  struct Run {
+    const uint32_t* coords = nullptr;
+    uint32_t xr[2] = {0, 0};
+    int swap = 0;
+  };
+  // What a thread keeps of a stream between values (pure functions of the keys they are
+  // checked against, so values do not depend on what a thread computed before).
+  struct StreamCache {
+    DigitCache digits;
+    uint64_t sampler = 0, block = 0, key = 0;  // the sampler (id_) and block whose key this is
+    uint32_t run_id = UINT32_MAX;
+    Run run;
+  };
+
+  // Value of sample `index` in 32-bit fixed point, per axis (1-D: axis 0).
+  std::array<uint32_t, 2> fixed(int px, int py, uint64_t index, Family f, int bounce) const {
+    const OrderedTables& t = tables(f);
+    const uint64_t block = index >> m_;
+    const uint32_t z = pixel_index(px, py) | (uint32_t(index) & low_mask());
+    uint32_t p;
+    Run run;
+    if (unsigned(bounce) < unsigned(kCachedBounces)) {
+      // Four blocks per stream: a camera packet of 4 samples at 1 or 2 spp spans them.
+      thread_local std::array<StreamCache, kFamilyCount * kCachedBounces * 4> cache;
+      StreamCache& c = cache[(std::size_t(int(f) * kCachedBounces + bounce) << 2) + (block & 3)];
+      if (c.sampler != id_ || c.block != block)
+        c.sampler = id_, c.block = block, c.key = block_key(f, bounce, block), c.run_id = UINT32_MAX;
+      p = c.digits(z, bits(), c.key);
+      if (c.run_id != run_of(p, t)) c.run_id = run_of(p, t), c.run = map_run(c.key, c.run_id, f, t);
+      run = c.run;
+    } else {
+      const uint64_t key = block_key(f, bounce, block);
+      p = scramble_digits(z, bits(), 0, key);
+      run = map_run(key, run_of(p, t), f, t);
+    }
+    const std::size_t at = std::size_t(p & ((uint32_t(1) << t.bits) - 1)) * std::size_t(t.dim);
+    if (t.dim == 1) return {run.coords[at] ^ run.xr[0], 0};
+    return {run.coords[at + std::size_t(run.swap)] ^ run.xr[0], run.coords[at + std::size_t(run.swap ^ 1)] ^ run.xr[1]};
+  }
+
+  const OrderedTables& tables(Family f) const {
+    const OrderedSet& s = *set_;
+    return family_dim(f) == 1 ? s.line : s.own[std::size_t(f)].coords.empty() ? s.plane : s.own[std::size_t(f)];
+  }
+  int bits() const { return 2 * k_ + m_; }
+  uint32_t low_mask() const { return (uint32_t(1) << m_) - 1; }
+  // The pixel's Morton index above the m sample bits; pixels outside the image wrap.
+  uint32_t pixel_index(int px, int py) const {
+    const uint32_t mask = (uint32_t(1) << k_) - 1;
+    return k_ == 0 ? 0u : interleave(uint32_t(px) & mask, uint32_t(py) & mask) << m_;
+  }
+  uint32_t run_of(uint32_t p, const OrderedTables& t) const { return t.bits >= 32 ? 0 : p >> t.bits; }
+  uint64_t block_key(Family f, int bounce, uint64_t block) const {
+    return mix64(sample_stream_from_hash(seed_hash_, 0, 0, f, bounce) ^ kKeySalt ^ (block * 0x9e3779b97f4a7c15ull));
+  }
+  static Run map_run(uint64_t key, uint32_t run_id, Family f, const OrderedTables& t) {
+    const uint64_t h = hash_combine(key, run_id);
+    const uint64_t s = mix64(h ^ kShiftSalt);
+    const std::size_t table = std::size_t(((h >> 32) * uint64_t(t.coords.size())) >> 32);
+    Run r;
+    r.coords = t.coords[table].data();
+    r.xr[0] = uint32_t(s), r.xr[1] = uint32_t(s >> 32);
+    r.swap = family_dim(f) == 2 ? int(h & 1) : 0;
+    return r;
+  }
+
+  static constexpr int kCachedBounces = PixelSampleState::kCachedSalts;
+  static inline std::atomic<uint64_t> next_id_{1};
+  uint64_t id_ = next_id_.fetch_add(1);  // tells the thread caches' runs of one sampler from another's
+  int m_ = 0, k_ = 0;
+  std::shared_ptr<const OrderedSet> set_;
+};
+
+}  // namespace
+
+uint32_t scramble_digits(uint32_t z, int hi, int lo, uint64_t key) {
+  uint32_t out = 0;
+  int shift = hi - 2;
+  for (; shift >= lo; shift -= 2) out |= permuted_digit(z, shift, digit_permutation(z, shift, key));
+  if (shift == lo - 1) out |= (((z >> lo) & 1u) ^ tail_flip(z, lo, key)) << lo;
+  return out;
+}
+
+std::unique_ptr<Sampler> make_screen_poisson_sampler(uint64_t seed, const TableSet& tables, const SamplerShape& shape) {
+  return std::make_unique<ScreenPoissonSampler>(seed, tables, shape);
+}
+
+}  // namespace pdrt

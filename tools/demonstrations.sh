@@ -11,21 +11,32 @@
 #   SPP [1,2,4,8]  SEEDS [8]  WIDTH: image width, the height keeps the scene's aspect [128]
 #   REF: reference spp [4096]  THREADS [0: all cores]  DOCS: where the sheets go, empty for
 #   nowhere [docs/images]  PDRT_BUILD [build]  SCENES [scenes/moving-square.json scenes/dof-row.json]
+#   CROPS: per scene NAME=FX,FY,FS, the sheet's square as fractions (x of the width, y and side of
+#   the height); a scene not named gets the report's detail window [the two below]
+#   CACHE: the reference cache directory [pdrt's default]
 set -euo pipefail
 OUT=${1:-out/demonstrations}
 SAMPLERS=${SAMPLERS:-jitter,poisson,poisson-ss,sobol,zsobol}
 SPP=${SPP:-1,2,4,8}; SEEDS=${SEEDS:-8}; WIDTH=${WIDTH:-128}; REF=${REF:-4096}; THREADS=${THREADS:-0}
 DOCS=${DOCS-docs/images}; B=${PDRT_BUILD:-build}
 SCENES=${SCENES:-scenes/moving-square.json scenes/dof-row.json}
+# The moving square's blurred band across the middle; the defocused red sphere's edge on the yellow one.
+CROPS=${CROPS-moving-square=0.3125,0.25,0.5 dof-row=0.17,0.36,0.44}
 mkdir -p "$OUT"
 [ -n "$DOCS" ] && mkdir -p "$DOCS"
 for scene in $SCENES; do
   name=$(basename "$scene" .json)
   height=$(python3 -c 'import json,sys; f=json.load(open(sys.argv[1]))["film"]; print(max(1, round(f["height"]*int(sys.argv[2])/f["width"])))' "$scene" "$WIDTH")
-  echo "== $name (${WIDTH}x$height; $SAMPLERS at $SPP spp, $SEEDS seeds; reference $REF spp)"
+  extra=()
+  for c in $CROPS; do
+    [ "${c%%=*}" = "$name" ] || continue
+    extra+=(--demo-crop "$(python3 -c 'import sys; w, h = int(sys.argv[2]), int(sys.argv[3]); fx, fy, fs = map(float, sys.argv[1].split(",")); print("%d,%d,%d" % (round(fx * w), round(fy * h), round(fs * h)))' "${c#*=}" "$WIDTH" "$height")")
+  done
+  [ -n "${CACHE:-}" ] && extra+=(--cache-dir "$CACHE")
+  echo "== $name (${WIDTH}x$height; $SAMPLERS at $SPP spp, $SEEDS seeds; reference $REF spp) ${extra[*]}"
   start=$(date +%s.%N)
   "$B/pdrt" compare "$scene" --out "$OUT/$name" --samplers "$SAMPLERS" --spp "$SPP" --seeds "$SEEDS" \
-    --reference-spp "$REF" --width "$WIDTH" --height "$height" --threads "$THREADS" --quiet
+    --reference-spp "$REF" --width "$WIDTH" --height "$height" --threads "$THREADS" --quiet "${extra[@]}"
   end=$(date +%s.%N)
   python3 - "$OUT/$name" "$start" "$end" "$DOCS" "$name" <<'PY'
 import json, os, shutil, sys

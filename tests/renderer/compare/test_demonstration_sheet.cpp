@@ -22,7 +22,7 @@ DemoPicture sheet_of(int samplers, int spps, const Image& image, const std::vect
                      const Image& reference, std::array<int, 3> window) {
   DemoInput in;
   in.title = "test";
-  for (int r = 0; r < samplers; ++r) in.samplers.push_back("s" + std::to_string(r));
+  for (int r = 0; r < samplers; ++r) in.samplers.push_back(std::string("s").append(std::to_string(r)));
   for (int k = 0; k < spps; ++k) in.spp.push_back(1 << k);
   for (int i = 0; i < samplers * spps; ++i) in.images.push_back(&image), in.errors.push_back(&error);
   in.reference = &reference, in.window = window;

@@ -312,10 +312,13 @@ TEST(LayeredBxdf, WhiteFurnaceMatchesAnAnalogSimulationOfTheSlab) {
         EXPECT_NEAR(smp.mean[k], ref.mean[k], tol) << fc.name << " mu " << mu << " channel " << k;
         const double tol_f = 0.01 * ref_f.mean[k] + 1e-4;
         EXPECT_NEAR(cons.mean[k], ref_f.mean[k], tol_f) << fc.name << " mu " << mu << " channel " << k;
-        if (smooth_top) EXPECT_NEAR(pbrt.mean[k], ref_f.mean[k], tol_f) << fc.name << " mu " << mu << " channel " << k;
+        if (smooth_top) {
+          EXPECT_NEAR(pbrt.mean[k], ref_f.mean[k], tol_f) << fc.name << " mu " << mu << " channel " << k;
+        }
       }
-      if (fc.name.rfind("white diffuse", 0) == 0 && !smooth_top)
+      if (fc.name.rfind("white diffuse", 0) == 0 && !smooth_top) {
         EXPECT_GT(pbrt.mean[1], 1.02 * ref.mean[1]) << fc.name << " mu " << mu;
+      }
     }
   }
 }

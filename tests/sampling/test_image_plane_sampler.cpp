@@ -87,7 +87,7 @@ TEST(ImagePlaneSampler, NeighbouringPixelsSamplesTogetherArePoissonDiskAcrossBor
   // Pixels [-2, P + 2)^2 hold the whole period and its wrap on every side: the smallest
   // distance between samples of neighbouring pixels is the prefix's radius (scaled to pixels),
   // and at least 0.6 of hexagonal packing's at that density (McCool–Fiume's relative radius).
-  for (int64_t spp : {1, 4, 16}) {
+  for (int64_t spp : {1, 3, 4, 16}) {  // 3 spp: P = 147, a prefix of 64827 points, not a power of two
     auto s = image_plane(3, spp);
     const int P = image_plane_period(spp), w = P + 4;
     const auto px = film_points(*s, -2, P + 2, -2, P + 2, spp);

@@ -5,6 +5,7 @@
 #include "app/output_path.h"
 #include "app/python_plots.h"
 #include "renderer/compare/compare_plan.h"
+#include "renderer/compare/demonstration_sheet.h"
 #include "renderer/image/image_output.h"
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
@@ -65,6 +66,10 @@ void add_compare_command(CLI::App& app) {
   add_integer_option(cmd, "--height", o->height, kFilmSizeRange, "Image height (overrides film.height)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)")
       ->default_str("0");
+  cmd->add_option("--demo-crop", o->demo_crop,
+                  "x,y,size: the square of the demonstration sheet (images/demonstration.png; drawn for at most " +
+                      std::to_string(kDemoMaxSamplers) + " samplers x " + std::to_string(kDemoMaxSpp) +
+                      " spp), in image pixels (default: the reference's most detailed square)");
   cmd->add_flag("--regularize", o->regularize,
                 "Biased: render with path regularisation (the reference stays unbiased; the report says so)");
   cmd->add_flag("--allow-long-render", o->allow_long, kAllowLongRenderHelp);

@@ -177,7 +177,9 @@ void add_render_command(CLI::App& app) {
       ->required()
       ->allow_extra_args(false);
   SceneOverrides& set = o->set;
-  add_integer_option(cmd, "--spp", set.spp, kSppRange, "Samples per pixel (overrides sampler.spp)");
+  add_integer_option(cmd, "--spp", set.spp, kSppRange,
+                     "Samples per pixel (overrides sampler.spp; without an adaptive option it also turns the scene's "
+                     "sampler.adaptive off)");
   cmd->add_option("--sampler", set.sampler, name_list(kSamplerNames, " | ") + " (overrides sampler.type)");
   add_integer_option(cmd, "--seed", set.seed, kSeedRange, "Sampler seed (overrides sampler.seed)");
   add_integer_option(cmd, "--threads,-t", o->threads, kThreadsRange, "Worker threads (0 = all cores)");
@@ -232,6 +234,10 @@ void add_render_command(CLI::App& app) {
     SceneDesc scene = load_scene(o->scene, o->strict);
     if (o->regularize) o->set.regularize = true;
     if (o->no_regularize) o->set.regularize = false;
+    if (spp_turns_adaptive_off(o->set, scene))
+      warn("pdrt render: --spp " + std::to_string(*o->set.spp) +
+           " renders that many samples in every pixel: the scene's adaptive refinement (sampler.adaptive) is off; "
+           "--adaptive keeps it");
     apply_overrides(o->set, scene);
     check_overridden_settings(scene);
     const AdaptiveDesc& ad = scene.sampler.adaptive;

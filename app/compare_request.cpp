@@ -4,9 +4,11 @@
 #include "app/python_plots.h"
 #include "app/scene_overrides.h"
 #include "renderer/compare/compare_job.h"
+#include "renderer/compare/demonstration_sheet.h"
 #include "renderer/render/renderer.h"
 #include "renderer/compare/scene_inputs.h"
 #include "renderer/render/sample_budget.h"
+#include "renderer/scene/crop_window.h"
 #include "renderer/scene/input_files.h"
 #include "renderer/scene/render_settings.h"
 #include "renderer/scene/scene_limits.h"
@@ -14,6 +16,7 @@
 #include "sampling/core/errors.h"
 #include "sampling/core/hash.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -49,6 +52,21 @@ std::string scene_content(const SceneDesc& scene, const InputFileRecord& read) {
   return content;
 }
 
+// --demo-crop "x,y,size": three integers (their range against the image is checked once the
+// film's size is known).
+std::array<int, 3> parse_demo_crop(const std::string& text) {
+  std::array<int, 3> v{};
+  std::stringstream ss(text);
+  std::size_t k = 0;
+  for (std::string t; std::getline(ss, t, ',');) {
+    if (k == 3) break;
+    v[k++] = int(parse_integer_option("--demo-crop", t, IntRange{0, kFilmSizeRange.hi}));
+  }
+  if (k != 3 || text.back() == ',' || std::count(text.begin(), text.end(), ',') != 2)
+    throw UsageError("--demo-crop: give x,y,size (three integers, pixels), got \"" + text + "\"");
+  return v;
+}
+
 }  // namespace
 
 CompareOptions compare_options(const CompareRequest& r) {
@@ -71,7 +89,9 @@ CompareOptions compare_options(const CompareRequest& r) {
   c.quiet = r.quiet;
   c.cache_dir = r.cache;
   c.scene_label = r.label.empty() ? r.scene : r.label;
+  if (!r.demo_crop.empty()) c.demo_crop = parse_demo_crop(r.demo_crop);
   validate_compare_options(c);
+  validate_demo_crop(c, int(kFilmSizeRange.hi), int(kFilmSizeRange.hi));  // the limits on samplers and spp, first
   check_override_names(scene_overrides(r));
   return c;
 }
@@ -103,6 +123,10 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
   rendered.sampler.adaptive.enabled = false;
   if (c.adaptive) rendered.sampler.adaptive = sweep_adaptive(scene, c);
   check_overridden_settings(rendered);
+  {
+    const PixelRect crop = crop_pixels(scene.film.crop_window, scene.film.width, scene.film.height);
+    validate_demo_crop(c, crop.width(), crop.height());
+  }
   // Every sampler at every count, before the reference: the screen-space samplers' pixel order,
   // the image-plane sampler's reconstruction and spp.
   for (const std::string& name : c.samplers)

@@ -29,6 +29,7 @@ struct CompareRequest {
   double adaptive_threshold = 0;
   int adaptive_target_spp = 64;
   std::string adaptive_metric, adaptive_variance, adaptive_decision, reconstruction;
+  std::string demo_crop;  // "x,y,size": the demonstration sheet's square (default: the detail window)
   bool adaptive = false, quiet = false, allow_long = false;
   bool regularize = false;  // biased path regularisation for the renders (never the reference); off unless asked
 };

@@ -27,6 +27,7 @@ json request_json(const CompareRequest& r) {
             {"adaptive_decision", r.adaptive_decision},
             {"reconstruction", r.reconstruction},
             {"regularize", r.regularize},
+            {"demo_crop", r.demo_crop},
             {"width", r.width ? json(*r.width) : json(nullptr)},
             {"height", r.height ? json(*r.height) : json(nullptr)}};
   return j;
@@ -47,6 +48,7 @@ CompareRequest request_from_json(const json& j) {
   r.adaptive_decision = j.at("adaptive_decision").get<std::string>();
   r.reconstruction = j.at("reconstruction").get<std::string>();
   r.regularize = j.value("regularize", false);  // absent from plans written before the option
+  r.demo_crop = j.value("demo_crop", std::string());
   if (!j.at("width").is_null()) r.width = json_integer<int>(j, "width");
   if (!j.at("height").is_null()) r.height = json_integer<int>(j, "height");
   return r;

@@ -36,11 +36,20 @@ void check_override_names(const SceneOverrides& o) {
                      ")");
 }
 
+bool adaptive_requested(const SceneOverrides& o) {
+  return o.adaptive || o.min_spp || o.max_spp || o.threshold || !o.metric.empty() || !o.variance.empty() ||
+         !o.decision.empty();
+}
+
+bool spp_turns_adaptive_off(const SceneOverrides& o, const SceneDesc& scene) {
+  return o.spp && scene.sampler.adaptive.enabled && !adaptive_requested(o);
+}
+
 void apply_overrides(const SceneOverrides& o, SceneDesc& scene) {
   check_override_names(o);
   AdaptiveDesc& ad = scene.sampler.adaptive;
-  ad.enabled = ad.enabled || o.adaptive || o.min_spp || o.max_spp || o.threshold || !o.metric.empty() ||
-               !o.variance.empty() || !o.decision.empty();
+  if (spp_turns_adaptive_off(o, scene)) ad.enabled = false;
+  ad.enabled = ad.enabled || adaptive_requested(o);
   if (o.min_spp) ad.min_spp = *o.min_spp;
   if (o.max_spp) ad.max_spp = *o.max_spp;
   if (o.threshold) ad.threshold = float(*o.threshold);

@@ -27,6 +27,12 @@ struct SceneOverrides {
 // --adaptive-metric, --adaptive-variance, --adaptive-decision) or a threshold not > 0.
 void check_override_names(const SceneOverrides& o);
 
+// Whether `o` has --adaptive or any adaptive option (each turns adaptive refinement on).
+bool adaptive_requested(const SceneOverrides& o);
+// --spp without an adaptive option asks for that many samples in every pixel: true when it
+// turns off the scene's own adaptive refinement.
+bool spp_turns_adaptive_off(const SceneOverrides& o, const SceneDesc& scene);
+
 // Lays `o` over `scene` (the names checked by check_override_names).
 void apply_overrides(const SceneOverrides& o, SceneDesc& scene);
 

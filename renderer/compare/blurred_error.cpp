@@ -53,4 +53,8 @@ double blurred_rmse(const Image& test, const Image& reference, double sigma) {
   return rmse(gaussian_blur(test, sigma), gaussian_blur(reference, sigma));
 }
 
+std::vector<float> blurred_error_map(const Image& test, const Image& blurred_reference, double sigma) {
+  return error_map(gaussian_blur(test, sigma), blurred_reference);
+}
+
 }  // namespace pdrt

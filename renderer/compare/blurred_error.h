@@ -23,4 +23,8 @@ Image gaussian_blur(const Image& im, double sigma);
 // RMSE over pixels and channels of the error test - reference blurred by sigma pixels.
 double blurred_rmse(const Image& test, const Image& reference, double sigma);
 
+// Per pixel, the magnitude of the blurred error's luminance, |Y(blur(test) - blur(reference))|
+// (linear), for the blurred-error heat maps; `blurred_reference` is gaussian_blur(reference, sigma).
+std::vector<float> blurred_error_map(const Image& test, const Image& blurred_reference, double sigma);
+
 }  // namespace pdrt

@@ -2,8 +2,10 @@
 
 #include "renderer/compare/adaptive_sweep.h"
 #include "renderer/compare/compare_job.h"
+#include "renderer/compare/blurred_heat_maps.h"
 #include "renderer/compare/compare_reference.h"
 #include "renderer/compare/convergence_view.h"
+#include "renderer/compare/demonstration_sheet.h"
 #include "renderer/compare/detail_crops.h"
 #include "renderer/compare/heat_maps.h"
 #include "renderer/compare/report_context.h"
@@ -73,18 +75,21 @@ double compare_sample_count(const CompareOptions& o, int width, int height) {
 }
 
 // The stages in order, each adding to the results what the later ones read: the reference,
-// the uniform runs, their heat maps, FLIP maps, spectrum images and crops, the convergence view, the adaptive sweep;
-// then the files written from the results alone.
+// the uniform runs, their heat maps, blurred-error maps, FLIP maps, spectrum images, crops and demonstration sheet,
+// the convergence view, the adaptive sweep; then the files written from the results alone.
 fs::path write_compare_report(const SceneDesc& base, const CompareOptions& o, const CompareJobSource& source) {
   validate_compare_options(o);
-  create_report_directories(o);
   const ReportContext ctx = report_context(base, o, source);
+  validate_demo_crop(o, ctx.width, ctx.height);
+  create_report_directories(o);
   CompareResults results;
   results.reference = render_reference(ctx);
   render_uniform_runs(ctx, results);
   write_heat_maps(ctx, results);
+  write_blurred_heat_maps(ctx, results);
   write_screen_maps(ctx, results);
   write_detail_crops(ctx, results);
+  write_demonstration_sheet(ctx, results);
   results.convergence = convergence_view(o, results.runs);
   if (o.adaptive) {
     run_adaptive_sweep(ctx, results);

@@ -5,8 +5,10 @@
 #include "renderer/scene/scene_desc.h"
 #include "sampling/samplers/sampler.h"
 
+#include <array>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,8 @@ struct CompareOptions {
   int adaptive_target_spp = 64;  // the uniform spp whose RMSE the threshold sweep must reach
   int seeds = 4;                 // independent renders per (sampler, spp): compare_seed(scene seed, 0..seeds-1)
   int reference_spp = 4096;      // rendered as two independent halves, whose difference measures its noise
+  // The demonstration sheet's square {x, y, side} in the image; unset: the detail window.
+  std::optional<std::array<int, 3>> demo_crop;
   std::string reference_sampler = sampler_name(SamplerKind::Sobol);
   int threads = 0;
   bool quiet = false;

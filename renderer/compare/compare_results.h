@@ -55,6 +55,8 @@ struct UniformRun {
   Image image;                       // seed 0's
   std::string image_file, error_file;
   std::string flip_ldr_file, flip_hdr_file, spectrum_file;  // seed 0's FLIP maps, the mean 2-D spectrum
+  std::vector<float> blurred_error;  // seed 0's |luminance of the error blurred by kBlurredMapSigma| per pixel
+  std::string blurred_error_file;    // its heat map
 };
 
 // Side-by-side crops of the reference's most detailed square, one sheet per spp.
@@ -62,6 +64,18 @@ struct DetailCrops {
   std::array<int, 3> window{};  // x, y, side
   int zoom = 1;
   std::vector<std::pair<int, std::string>> files;  // (spp, file)
+};
+
+// The demonstration sheet (demonstration_sheet.h): samplers x spp of seed-0 crops and their
+// blurred-error heat maps, for at most kDemoMaxSamplers x kDemoMaxSpp.
+struct DemonstrationSheet {
+  bool drawn = false;
+  std::string file;
+  std::array<int, 3> window{};  // x, y, side: the detail window or --demo-crop
+  bool window_given = false;    // from --demo-crop
+  int zoom = 1, width = 0, height = 0;
+  float scale = 0;        // the heat ramp's top, shared by every cell
+  bool labelled = false;  // false when no font was found for the labels
 };
 
 // RMSE ~ spp^slope per sampler, and the equal-time view: every sampler's RMSE interpolated at
@@ -104,9 +118,11 @@ struct CompareResults {
   std::vector<UniformRun> runs;                         // by sampler, then spp
   int threads = 0;                                      // worker threads of the last uniform render
   std::map<int, float> heat_scale;                      // per spp: the error maps' common scale
+  std::map<int, float> blurred_heat_scale;              // per spp: the blurred-error maps' common scale
   FlipExposures flip_exposures;                         // HDR-FLIP's, from the reference
   std::map<int, std::array<double, 2>> spectrum_scale;  // per spp: the 2-D spectrum images' log10 power range
   DetailCrops crops;
+  DemonstrationSheet demonstration;
   ConvergenceView convergence;
   AdaptiveSweep adaptive;  // with --adaptive
 };

@@ -8,7 +8,8 @@
 namespace pdrt {
 
 std::array<int, 3> detail_window(const Image& ref) {
-  const int W = ref.width, H = ref.height, c = std::max(8, std::min(W, H) / 4);
+  // At most the shorter side, so that the crops of an image under 8 pixels read no pixel outside it.
+  const int W = ref.width, H = ref.height, c = std::min(std::max(8, std::min(W, H) / 4), std::min(W, H));
   std::vector<double> g(std::size_t(W) * H, 0.0);
   auto L = [&](int x, int y) {
     std::size_t i = 3 * (std::size_t(y) * W + x);

@@ -8,7 +8,7 @@
 
 namespace pdrt {
 
-// The square {x, y, side} where `ref` has the most detail; side max(8, min(W, H) / 4).
+// The square {x, y, side} where `ref` has the most detail; side max(8, min(W, H) / 4), at most min(W, H).
 std::array<int, 3> detail_window(const Image& ref);
 
 // Writes images/crops-<spp>.png and fills results.crops. Needs results.reference and results.runs.

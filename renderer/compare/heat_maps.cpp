@@ -24,6 +24,13 @@ std::vector<float> heat_rgb(const std::vector<float>& values, float scale) {
   return rgb;
 }
 
+float heat_scale(std::vector<float> values) {
+  if (values.empty()) return 1e-6f;
+  const auto at = values.begin() + std::ptrdiff_t(0.99 * double(values.size() - 1));
+  std::nth_element(values.begin(), at, values.end());
+  return std::max(*at, 1e-6f);
+}
+
 void write_heat_maps(const ReportContext& ctx, CompareResults& results) {
   for (int n : ctx.o.spp) {
     std::vector<float> all;
@@ -33,8 +40,7 @@ void write_heat_maps(const ReportContext& ctx, CompareResults& results) {
         maps[r.sampler] = error_map(r.image, results.reference.image);
         all.insert(all.end(), maps[r.sampler].begin(), maps[r.sampler].end());
       }
-    std::sort(all.begin(), all.end());
-    const float scale = std::max(all[std::size_t(0.99 * (all.size() - 1))], 1e-6f);
+    const float scale = heat_scale(std::move(all));
     results.heat_scale[n] = scale;
     for (const UniformRun& r : results.runs)
       if (r.spp == n) ctx.write_png(r.error_file, heat_rgb(maps[r.sampler], scale));

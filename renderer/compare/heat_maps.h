@@ -19,6 +19,10 @@ Vec3 heat(float t);
 // The ramp's colours of `values` (each scaled by 1 / scale) as display RGB.
 std::vector<float> heat_rgb(const std::vector<float>& values, float scale);
 
+// The scale of heat maps that share one: the 99th percentile of `values` (brighter ones clip),
+// at least 1e-6 so that an all-zero map stays the ramp's zero colour.
+float heat_scale(std::vector<float> values);
+
 // Writes every run's error map (run.error_file) and fills results.heat_scale. Needs
 // results.reference and results.runs.
 void write_heat_maps(const ReportContext& ctx, CompareResults& results);

@@ -6,7 +6,8 @@ error_spectra.png (radially averaged power of the error images), used_spectra.pn
 periodogram of the samples the renders used, per family), errors/heat-N.png (the
 error heat maps at N spp with their colour bar), screen_vs_spp.png (blurred RMSE, low-frequency
 share and FLIP against spp), errors/flip-ldr-N.png and errors/flip-hdr-N.png (FLIP maps with
-their colour bar), spectra/spectrum-N.png (2-D error spectra with their colour bar), with --adaptive adaptive_vs_spp.png (the
+their colour bar), spectra/spectrum-N.png (2-D error spectra with their colour bar),
+errors/blurred-heat-N.png (the blurred-error heat maps with their colour bar), with --adaptive adaptive_vs_spp.png (the
 threshold sweep against uniform sampling) and images/adaptive-samples.png (sample counts),
 and index.html."""
 import html
@@ -69,6 +70,8 @@ def main(out):
     plot_spectra(out, r)
     plot_used_spectra(out, r)
     plot_heat_maps(out, r)
+    if r.get("blurred_error_maps"):
+        plot_blurred_heat_maps(out, r)
     if runs and "blurred_rmse" in runs[0]:
         plot_screen_measures(out, r)
         plot_flip_maps(out, r)
@@ -225,6 +228,37 @@ def plot_heat_maps(out, r):
                   for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
         sm = plt.cm.ScalarMappable(norm=Normalize(0, r["error_maps"]["scale"][str(n)]), cmap=cmap)
         panels_with_colorbar(out, r, heat_map_file(n), panels, sm, "|luminance error| per pixel", extend="max")
+
+
+def blurred_heat_map_file(n):
+    return "errors/blurred-heat-%d.png" % n
+
+
+def plot_blurred_heat_maps(out, r):
+    """One figure per spp: every sampler's blurred-error heat map on the shared scale of that spp."""
+    cmap, b = heat_colormap(r), r["blurred_error_maps"]
+    for n in r["spp"]:
+        panels = [(u["blurred_error_map"], "%s, %d spp: blurred error" % (s, n))
+                  for s in r["samplers"] for u in r["runs"] if u["spp"] == n and u["sampler"] == s]
+        sm = plt.cm.ScalarMappable(norm=Normalize(0, b["scale"][str(n)]), cmap=cmap)
+        panels_with_colorbar(out, r, blurred_heat_map_file(n), panels, sm,
+                             "|blurred luminance error| (sigma %g px)" % b["sigma"], extend="max")
+
+
+def write_demonstration_html(p, r):
+    """The demonstration sheet: what the project exists to show, first."""
+    d = r.get("demonstration")
+    if not d:
+        return
+    c = d["crop"]
+    p.append("<h2>Demonstration</h2><figure><img src='%s'><figcaption>Rows: samplers; columns: samples per pixel. "
+             "Each cell: seed 0's render of the %d&times;%d square at (%d, %d) (%s), zoomed %d&times;, and beside it "
+             "the luminance of its error blurred by a Gaussian of &sigma; = %g px (what the eye integrates), on "
+             "one heat scale for the whole sheet (0 to %.3g, the 99th percentile of its cells; brighter is "
+             "clipped). Last column: the reference. Error the blur removes sat at high frequencies (blue "
+             "noise); error that survives it is what the eye sees.</figcaption></figure>" % (
+                 html.escape(d["file"]), c["size"], c["size"], c["x"], c["y"], html.escape(d["crop_rule"]),
+                 c["zoom"], d["sigma"], d["scale"]))
 
 
 SCREEN_MEASURES = [  # (title, value of a run as (mean, ci95), log y axis)
@@ -401,6 +435,7 @@ def write_html(out, r):
         p.append("<p><b>Biased:</b> the renders use path regularisation (<code>--regularize</code>: "
                  "near-specular lobes roughened after the first non-specular bounce); the reference does not, "
                  "so bias&sup2; includes the regularisation's bias.</p>")
+    write_demonstration_html(p, r)
     p.append("<h2>Convergence</h2><img src='rmse_vs_spp.png'> <img src='rmse_vs_time.png'>")
     p.append("<h3>RMSE at equal samples (mean over seeds &plusmn; 95%% interval)</h3><table><tr><th>spp</th>%s</tr>" %
              "".join("<th>%s</th>" % e(s) for s in samplers))
@@ -490,6 +525,14 @@ def write_html(out, r):
                  "%d spp. All samplers share one colour scale at this spp (0 to the 99th percentile of their "
                  "errors, %.3g; brighter is clipped), so they compare directly; scales differ between spp."
                  "</figcaption></figure><br>" % (e(heat_map_file(n)), n, r["error_maps"]["scale"][str(n)]))
+    if r.get("blurred_error_maps"):
+        b = r["blurred_error_maps"]
+        p.append("<h2>Blurred-error heat maps</h2>")
+        for n in spps:
+            p.append("<figure><img src='%s'><figcaption>Seed 0's luminance error blurred by a Gaussian of &sigma; = "
+                     "%g px at %d spp, one colour scale for all samplers at this spp (0 to the 99th percentile, "
+                     "%.3g; brighter is clipped).</figcaption></figure><br>" % (
+                         e(blurred_heat_map_file(n)), b["sigma"], n, b["scale"][str(n)]))
     if r.get("adaptive"):
         p.append("<h2>Adaptive refinement at equal total samples</h2><table><tr><th>sampler</th><th>metric</th>"
                  "<th>threshold</th><th>mean spp</th><th>rounds</th><th>adaptive RMSE</th>"

@@ -1,5 +1,6 @@
 #include "renderer/compare/results_json.h"
 
+#include "renderer/compare/blurred_heat_maps.h"
 #include "renderer/compare/heat_maps.h"
 #include "sampling/core/atomic_file.h"
 
@@ -155,9 +156,39 @@ json run_json(const UniformRun& r) {
             {"per_seed", per_seed},
             {"image", r.image_file},
             {"error_map", r.error_file},
+            {"blurred_error_map", r.blurred_error_file},
             {"spectrum", {{"frequency", r.spectrum.frequency}, {"power", r.spectrum.power}}}};
   j.update(screen_json(r));
   return j;
+}
+
+// The blurred-error maps' scales and the demonstration sheet (null when not drawn), into `j`.
+void add_demonstration(const CompareResults& results, json& j) {
+  json scale = json::object();
+  for (const auto& [n, s] : results.blurred_heat_scale) scale[std::to_string(n)] = s;
+  j["blurred_error_maps"] = {
+      {"quantity", "seed 0's |Y(blur(image) - blur(reference))| per pixel (linear), Gaussian blur"},
+      {"sigma", kBlurredMapSigma},
+      {"scale", scale},
+      {"scale_rule", "the 99th percentile over every sampler's map at that spp; brighter is clipped"}};
+  const DemonstrationSheet& d = results.demonstration;
+  if (!d.drawn) {
+    j["demonstration"] = nullptr;
+    return;
+  }
+  j["demonstration"] = {
+      {"file", d.file},
+      {"width", d.width},
+      {"height", d.height},
+      {"rows", "samplers, in the order of \"samplers\""},
+      {"columns", "spp, in the order of \"spp\"; then the reference's crop"},
+      {"cell", "seed 0's image crop (left) and its blurred-error heat map crop (right)"},
+      {"crop", {{"x", d.window[0]}, {"y", d.window[1]}, {"size", d.window[2]}, {"zoom", d.zoom}}},
+      {"crop_rule", d.window_given ? "--demo-crop" : "the detail window (crop_window)"},
+      {"sigma", kBlurredMapSigma},
+      {"scale", d.scale},
+      {"scale_rule", "one heat scale for the whole sheet: the 99th percentile of its cells' blurred errors"},
+      {"labelled", d.labelled}};
 }
 
 // The screen-space measures' settings and the scales of their pictures, into `j`.
@@ -274,6 +305,7 @@ json results_json(const ReportContext& ctx, const CompareResults& results) {
   for (const UniformRun& r : results.runs) jr.push_back(run_json(r));
   j["runs"] = jr;
   add_screen_settings(results, j);
+  add_demonstration(results, j);
   add_convergence(results.convergence, j);
   if (o.adaptive) add_adaptive(o, results, j);
   return j;

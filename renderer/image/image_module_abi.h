@@ -8,7 +8,7 @@
 extern "C" {
 
 // Bumped whenever a field or a signature below changes.
-#define PDRT_IMAGE_MODULE_ABI 2
+#define PDRT_IMAGE_MODULE_ABI 3
 
 // One string attribute of the image ("pdrt:sampler", "oiio:ColorSpace", "compression", ...).
 struct PdrtImageAttribute {
@@ -63,6 +63,18 @@ struct PdrtTextureLookup {
   int wrap;    // PdrtTextureWrap
 };
 
+// One line of text drawn into (or, with pixels null, only measured for) a caller's image.
+struct PdrtImageText {
+  float* pixels;  // width * height * 3 display RGB floats, top row first; null: measure only
+  int width, height;
+  int x, y;          // the left end of the text's baseline, in pixels
+  int size;          // the font's size in pixels
+  float rgb[3];      // the text's colour
+  const char* text;  // one line, UTF-8
+  const char* font;  // a font's name or file ("DejaVuSans"); null or "": OpenImageIO's default
+  int advance;       // set by draw_text(): the text's width in pixels
+};
+
 struct PdrtImageModule {
   int abi;  // PDRT_IMAGE_MODULE_ABI
   // Both return 0 on success; otherwise a one-line message goes to `error` (NUL-terminated,
@@ -76,6 +88,9 @@ struct PdrtImageModule {
   int (*texture_open)(void* system, PdrtTextureOpen* open, void** handle, char* error, size_t error_size);
   // Thread-safe; writes RGB (one-channel images replicated). Returns 0, or nonzero and black.
   int (*texture_lookup)(void* system, void* handle, const PdrtTextureLookup* lookup, float rgb[3]);
+  // Draws (or measures) one line of text with OpenImageIO's FreeType text; 0, or nonzero with
+  // `error` set when no font is found.
+  int (*draw_text)(PdrtImageText* text, char* error, size_t error_size);
 };
 
 // The module's one exported symbol.

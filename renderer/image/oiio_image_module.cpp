@@ -204,8 +204,28 @@ int texture_lookup(void* system, void* handle, const PdrtTextureLookup* l, float
   return ok ? 0 : 1;
 }
 
-const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI,  write_image,  read_image,    texture_system_create,
-                                 texture_system_destroy, texture_open, texture_lookup};
+// ---- text (the labels of the report's sheets) ------------------------------------------------
+
+int draw_text(PdrtImageText* t, char* error, size_t error_size) {
+  try {
+    const char* font = t->font ? t->font : "";
+    const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(t->text, t->size, font);
+    if (!box.defined()) return fail(error, error_size, std::string("no font \"") + font + "\": " + OIIO::geterror());
+    t->advance = box.xend - box.xbegin;
+    if (!t->pixels) return 0;
+    OIIO::ImageBuf dst(OIIO::ImageSpec(t->width, t->height, 3, OIIO::TypeDesc::FLOAT), t->pixels);
+    if (!OIIO::ImageBufAlgo::render_text(dst, t->x, t->y, t->text, t->size, font, {t->rgb, 3}))
+      return fail(error, error_size, dst.geterror());
+    return 0;
+  } catch (const std::exception& e) {
+    return fail(error, error_size, e.what());
+  } catch (...) {
+    return fail(error, error_size, "unknown error in the image module");
+  }
+}
+
+const PdrtImageModule kModule = {PDRT_IMAGE_MODULE_ABI,  write_image,  read_image,     texture_system_create,
+                                 texture_system_destroy, texture_open, texture_lookup, draw_text};
 
 }  // namespace
 

@@ -376,6 +376,41 @@ TEST(CliRender, AdaptiveFlagsRefineAndStatsReportTheSppDistribution) {
   EXPECT_EQ(pixels, j["width"].get<int64_t>() * j["height"].get<int64_t>());
 }
 
+// --spp alone asks for that many samples in every pixel, also of a scene that refines
+// adaptively (env-lit does), and says so; an adaptive option keeps the scene's refinement.
+TEST(CliRender, SppAloneRendersUniformlyOverAnAdaptiveSceneAndSaysSo) {
+  fs::path d = scratch_dir("render_spp_over_adaptive");
+  fs::path scene = d / "adaptive.json";
+  std::ofstream(scene) << R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {"width": 12, "height": 8},
+  "sampler": {"spp": 4, "adaptive": {"min_spp": 2, "max_spp": 64, "threshold": 0.001}},
+  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
+  "materials": {"m": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+}
+)";
+  const fs::path stats = d / "stats.json";
+  auto r =
+      run_pdrt("render " + scene.string() + " --spp 3 -q -o " + (d / "a.exr").string() + " --stats " + stats.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("pdrt render: --spp 3 renders that many samples in every pixel: the scene's adaptive "
+                       "refinement (sampler.adaptive) is off; --adaptive keeps it"),
+            std::string::npos)
+      << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_FALSE(j.contains("adaptive")) << j.dump();
+  EXPECT_EQ(j["samples"].get<int64_t>(), 12 * 8 * 3);
+  r = run_pdrt("render " + scene.string() + " --spp 3 --adaptive -q -o " + (d / "b.exr").string() + " --stats " +
+               stats.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("--spp 3 renders"), std::string::npos) << r.err;
+  j = nlohmann::json::parse(std::ifstream(stats));
+  ASSERT_TRUE(j.contains("adaptive")) << j.dump();
+  EXPECT_EQ(j["adaptive"]["max_spp"], 64);
+  EXPECT_GT(j["samples"].get<int64_t>(), 12 * 8 * 2);  // the threshold keeps most pixels refining
+}
+
 TEST(CliRender, FramebufferTooLargeForMemoryIsRefused) {
   fs::path d = scratch_dir("render_huge");
   fs::path scene = write_scene(d, R"("width": 65536, "height": 65536)");

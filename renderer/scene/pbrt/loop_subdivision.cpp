@@ -30,11 +30,12 @@ Vec3 cross_d(const Point& a, const Point& b, double* len) {
 
 }  // namespace
 
-MeshData loop_subdivide(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, int levels) {
+MeshData loop_subdivide(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, int levels,
+                        int64_t max_triangles) {
   const int64_t faces = int64_t(indices.size() / 3);
-  if (levels > 0 && faces > (kMaxSubdividedTriangles >> std::min(2 * levels, 62)))
+  if (levels > 0 && faces > (max_triangles >> std::min(2 * levels, 62)))
     throw InputError(std::to_string(faces) + " triangles subdivided " + std::to_string(levels) + " times exceed " +
-                     std::to_string(kMaxSubdividedTriangles) + " triangles");
+                     std::to_string(max_triangles) + " triangles");
   std::vector<int> per_face(size_t(faces), 3);
   std::vector<Far::Index> verts(indices.begin(), indices.end());
   Far::TopologyDescriptor desc;

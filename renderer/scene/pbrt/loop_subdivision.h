@@ -11,13 +11,16 @@
 
 namespace pdrt {
 
-// Most triangles a subdivided mesh may have (each level multiplies the count by 4).
-inline constexpr int64_t kMaxSubdividedTriangles = int64_t(1) << 26;
+// Most triangles a subdivided mesh may have by default (each level multiplies the count by 4):
+// a few lines of text ask for 4^levels times their faces, and refinement peaks at about 300
+// bytes a triangle (2^22: 1.2 GB; one face at levels 12 would take 4.8 GB).
+inline constexpr int64_t kMaxSubdividedTriangles = int64_t(1) << 22;
 
 // positions and triangle indices (3 per face, in range) of the control mesh; levels >= 0.
 // Returns the refined mesh with positions, unit normals on the side the control faces' winding
 // gives (counter-clockwise), and triangles. Throws InputError (without a location) when
-// OpenSubdiv refuses the topology.
-MeshData loop_subdivide(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, int levels);
+// OpenSubdiv refuses the topology or the result would exceed max_triangles.
+MeshData loop_subdivide(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, int levels,
+                        int64_t max_triangles = kMaxSubdividedTriangles);
 
 }  // namespace pdrt

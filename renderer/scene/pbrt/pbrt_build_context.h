@@ -37,6 +37,7 @@ struct PbrtBuild {
   explicit PbrtBuild(bool strict_) : strict(strict_) {}
 
   bool strict;
+  PbrtLimits limits;
   PbrtImport out;
   PbrtGraphicsState gs;
   PbrtCameraState camera;

@@ -8,7 +8,7 @@ namespace {
 
 class Builder {
  public:
-  explicit Builder(bool strict) : b_(strict) {}
+  Builder(bool strict, const PbrtLimits& limits) : b_(strict) { b_.limits = limits; }
 
   PbrtImport run(const std::vector<PbrtDirective>& ds) {
     apply_pbrt_defaults(b_.out.scene);
@@ -180,8 +180,8 @@ class Builder {
 
 }  // namespace
 
-PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict) {
-  PbrtImport out = Builder(strict).run(directives);
+PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict, const PbrtLimits& limits) {
+  PbrtImport out = Builder(strict, limits).run(directives);
   // pbrt's sphere has its pole on +z and its azimuth from +x toward +y; pdrt's has the pole on
   // +y and the azimuth from +x toward +z. Swapping y and z in object space (a mirror, harmless
   // to a sphere) gives every texel the direction pbrt gives it.

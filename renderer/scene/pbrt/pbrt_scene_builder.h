@@ -6,9 +6,11 @@
 // (pbrt_build_context.h), which maps each camera, film, filter, sampler, integrator, texture,
 // material, light and shape onto pdrt's (docs/pbrt-import.md). What pdrt cannot represent is listed in the report, one
 // line each, "file:line:col: what (what pdrt does instead)"; with `strict` the first such line is an error.
+#include "renderer/scene/pbrt/loop_subdivision.h"
 #include "renderer/scene/pbrt/pbrt_parser.h"
 #include "renderer/scene/scene_desc.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,9 +21,15 @@ struct PbrtImport {
   std::vector<std::string> report;  // unsupported features and unused parameters, in file order
 };
 
+// Bounds on the work a few lines of a scene file may ask for (a fuzzer lowers them to what one
+// of its inputs may cost).
+struct PbrtLimits {
+  int64_t max_subdivided_triangles = kMaxSubdividedTriangles;  // per `loopsubdiv` shape
+};
+
 // Throws InputError for malformed or contradictory input (and, when strict, for the first
 // report line).
-PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict);
+PbrtImport build_pbrt_scene(const std::vector<PbrtDirective>& directives, bool strict, const PbrtLimits& limits = {});
 
 // parse_pbrt_file + build_pbrt_scene; scene.file is set.
 PbrtImport load_pbrt_scene(const std::filesystem::path& file, bool strict);

@@ -152,7 +152,8 @@ void subdivide(PbrtBuild& b, const PbrtDirective& d, MeshInput& in) {
     b.fail(ps.find("levels")->at, "\"integer levels\" must be in [0, 12], got " + std::to_string(levels));
   MeshData m;
   try {
-    m = loop_subdivide(in.P, std::vector<uint32_t>(in.idx.begin(), in.idx.end()), int(levels));
+    m = loop_subdivide(in.P, std::vector<uint32_t>(in.idx.begin(), in.idx.end()), int(levels),
+                       b.limits.max_subdivided_triangles);
   } catch (const InputError& e) {
     b.fail(d.at, std::string("Shape \"loopsubdiv\": ") + e.what());
   }

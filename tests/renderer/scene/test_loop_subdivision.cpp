@@ -115,5 +115,7 @@ TEST(LoopSubdivision, RefusesMoreTrianglesThanTheLimit) {
   std::vector<Vec3> p;
   std::vector<uint32_t> idx;
   octahedron(&p, &idx);
-  EXPECT_THROW(loop_subdivide(p, idx, 12), InputError);  // 8 * 4^12 > 2^26
+  EXPECT_THROW(loop_subdivide(p, idx, 10), InputError);  // 8 * 4^10 > 2^22
+  EXPECT_THROW(loop_subdivide(p, idx, 2, 8 * 16 - 1), InputError);
+  EXPECT_EQ(loop_subdivide(p, idx, 2, 8 * 16).indices.size(), size_t(3 * 8 * 16));
 }

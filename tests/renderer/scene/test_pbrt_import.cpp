@@ -662,6 +662,30 @@ TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
   }
 }
 
+// Found by the long run of tests/fuzz/fuzz_pbrt.cpp (the input as found): one triangle at
+// levels 12 asked for 4^12 triangles, 4.8 GB and 40 s of refinement for three lines of text.
+TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {
+  const std::filesystem::path file =
+      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "oom-loopsubdiv-levels-12.pbrt";
+  try {
+    build_pbrt_scene(parse_pbrt_file(file), false);
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("oom-loopsubdiv-levels-12.pbrt:3:1: Shape \"loopsubdiv\": 1 triangles "
+                                         "subdivided 12 times exceed 4194304 triangles"),
+              std::string::npos)
+        << e.what();
+  }
+  // A lower limit, as the fuzzer sets it, refuses a smaller mesh; the default takes it.
+  const std::string one = std::string(kCamera) +
+                          "WorldBegin\nShape \"loopsubdiv\" \"integer levels\" 2 \"point3 P\" [0 0 0  1 0 0  0 1 0] "
+                          "\"integer indices\" [0 1 2]\n";
+  PbrtLimits limits;
+  limits.max_subdivided_triangles = 15;
+  EXPECT_THROW(build_pbrt_scene(parse_pbrt_text(one, "s.pbrt", "."), false, limits), InputError);
+  EXPECT_EQ(import(one).scene.shapes.at(0).mesh.indices.size(), 3u * 16);
+}
+
 TEST(PbrtImport, ReportsAKindOnceWithTheCountAndLastPlaceOfTheRest) {
   const PbrtImport im = import(std::string(kCamera) +
                                "WorldBegin\n"

@@ -127,12 +127,13 @@ PreparedCompare prepare_compare(const CompareRequest& r, bool check_budget) {
     const PixelRect crop = crop_pixels(scene.film.crop_window, scene.film.width, scene.film.height);
     validate_demo_crop(c, crop.width(), crop.height());
   }
-  // Every sampler at every count, before the reference: the screen-space samplers' pixel order.
+  // Every sampler at every count, before the reference: the screen-space samplers' pixel order,
+  // the image-plane sampler's reconstruction and spp.
   for (const std::string& name : c.samplers)
     for (int spp : c.spp) {
       SamplerDesc d = rendered.sampler;
       d.type = name, d.spp = spp, d.adaptive.enabled = false;
-      if (std::string p = pixel_order_problem(d, rendered.film); !p.empty())
+      if (std::string p = sampler_problem(d, rendered.film); !p.empty())
         throw UsageError("--samplers/--spp: sampler " + p);
     }
   if (check_budget) {

@@ -9,6 +9,9 @@ namespace pdrt {
 int64_t PixelRenderer::run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps,
                            PixelSampleState* pd) const {
   CameraSampleRule rule{filter, mode};
+  const int64_t budget = end;
+  if (const Sampler& s = ps.sampler(); s.pixel_counts_vary())
+    begin = s.samples_in_pixel(x, y, begin), end = s.samples_in_pixel(x, y, end);
   int64_t first = begin & ~int64_t(3), last = end;
   if (mode == Reconstruction::Rank) {
     rule.rank_candidates = rank_candidates(filter, end);
@@ -56,8 +59,9 @@ int64_t PixelRenderer::run(int x, int y, int64_t begin, int64_t end, Film& film,
       }
     }
   }
-  film.at(x - ox, y - oy).prefix = end;
+  film.at(x - ox, y - oy).prefix = budget;
   if (mode == Reconstruction::Rank) film.at(x - ox, y - oy).norm = rule.rank_candidates * filter.mean_value();
+  if (expected) film.at(x - ox, y - oy).norm = double(budget) * expected->at(x, y);
   return rays;
 }
 

@@ -3,6 +3,7 @@
 // integrator, and the reconstruction that files each radiance in the film (its own pixel, or
 // splatted over the filter's support, Cook §4.2).
 #include "renderer/render/embree_scene.h"
+#include "renderer/render/expected_splat_weight.h"
 #include "renderer/render/film.h"
 #include "renderer/render/filter.h"
 #include "renderer/render/path_integrator.h"
@@ -20,6 +21,9 @@ struct PixelRenderer {
   const Filter& filter;
   Reconstruction mode;
   int ox = 0, oy = 0;  // the film's pixel (0, 0) in image pixels (crop window)
+  // Set when splatting a sampler whose pixels' counts vary (`poisson-ip`): a pixel's estimate
+  // divides by spp times its expected weight (expected_splat_weight.h).
+  const ExpectedSplatWeight* expected = nullptr;
 
   // Pixels beyond its own that a splatted sample can reach (film point in [x, x + 1)).
   int splat_margin() const { return int(std::ceil(filter.radius())) + 1; }
@@ -34,7 +38,9 @@ struct PixelRenderer {
   // independent of the ones that chose when to stop. Each film's `halves` buffers split it by
   // the parity of i >> 1.
   // Under rank selection [begin, end) is a budget: every candidate of the larger prefix is
-  // visited, and those kept now but not before are traced.
+  // visited, and those kept now but not before are traced. So it is for a sampler whose
+  // pixels' counts vary: the pixel traces its samples [samples_in_pixel(begin),
+  // samples_in_pixel(end)).
   int64_t run(int x, int y, int64_t begin, int64_t end, Film& film, Film* decide, PixelSampleState& ps,
               PixelSampleState* pd) const;
 

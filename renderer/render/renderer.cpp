@@ -69,8 +69,17 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   Filter filter(desc.film.filter);
   RenderFilms films(region.rect.width(), region.rect.height(), split);
   const std::unique_ptr<Sampler> decider = split ? make_decision_sampler(desc.sampler, desc.film, sampler) : nullptr;
-  const PixelRenderer pixels{camera,         scene,         integrator, filter, desc.film.filter.reconstruction,
-                             region.rect.x0, region.rect.y0};
+  std::optional<ExpectedSplatWeight> expected;
+  if (sampler.pixel_counts_vary() && desc.film.filter.reconstruction == Reconstruction::Splat)
+    expected.emplace(filter, desc.film.width, desc.film.height);
+  const PixelRenderer pixels{camera,
+                             scene,
+                             integrator,
+                             filter,
+                             desc.film.filter.reconstruction,
+                             region.rect.x0,
+                             region.rect.y0,
+                             expected ? &*expected : nullptr};
   clock.build_done();
 
   const LocalProcessGroup alone;

@@ -1,6 +1,7 @@
 #include "renderer/scene/render_settings.h"
 
 #include "renderer/scene/crop_window.h"
+#include "sampling/samplers/image_plane_pattern.h"
 #include "sampling/core/errors.h"
 
 #include <sstream>
@@ -39,6 +40,28 @@ std::string pixel_order_problem(const SamplerDesc& d, const FilmDesc& f) {
          std::to_string(kPixelOrderBits) + " (fewer samples per pixel or a smaller image)";
 }
 
+std::string image_plane_problem(const SamplerDesc& d, const FilmDesc& f) {
+  SamplerKind kind{};
+  if (!parse_sampler(d.type, &kind) || !samples_image_plane(kind)) return "";
+  const std::string name = "\"" + d.type + "\"";
+  if (d.adaptive.enabled)
+    return name + " cannot refine adaptively (its pixels' samples are one image-plane pattern's, whose counts a " +
+           "pixel cannot raise alone)";
+  if (f.filter.reconstruction != Reconstruction::Splat)
+    return name + " needs reconstruction \"" + reconstruction_name(Reconstruction::Splat) +
+           "\" (its pixels take varying counts of one image-plane pattern's samples), got \"" +
+           reconstruction_name(f.filter.reconstruction) + "\"";
+  if (d.spp > kImagePlanePoints)
+    return name + " takes at most " + std::to_string(kImagePlanePoints) +
+           " spp (the points of its image-plane pattern), got " + std::to_string(d.spp);
+  return "";
+}
+
+std::string sampler_problem(const SamplerDesc& d, const FilmDesc& f) {
+  if (std::string p = pixel_order_problem(d, f); !p.empty()) return p;
+  return image_plane_problem(d, f);
+}
+
 std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
   using Setting = SettingsProblem::Setting;
   const AdaptiveDesc& ad = s.sampler.adaptive;
@@ -50,6 +73,8 @@ std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s) {
     return SettingsProblem{Setting::CropWindow, "film.crop_window " + p};
   if (std::string p = pixel_order_problem(s.sampler, s.film); !p.empty())
     return SettingsProblem{Setting::PixelOrder, "sampler " + p};
+  if (std::string p = image_plane_problem(s.sampler, s.film); !p.empty())
+    return SettingsProblem{Setting::ImagePlane, "sampler " + p};
   return std::nullopt;
 }
 
@@ -58,6 +83,7 @@ void check_render_settings(const SceneDesc& s) {
   if (!p) return;
   if (p->setting == SettingsProblem::Setting::CropWindow || p->setting == SettingsProblem::Setting::PixelOrder)
     throw InputError(s.film.size_where + ": " + p->message);
+  if (p->setting == SettingsProblem::Setting::ImagePlane) throw InputError(s.sampler.type_where + ": " + p->message);
   throw InputError(p->message);
 }
 

@@ -26,8 +26,17 @@ std::string crop_window_problem(const FilmDesc& film);
 // the first pass's (adaptive min_spp).
 std::string pixel_order_problem(const SamplerDesc& sampler, const FilmDesc& film);
 
+// sampler.type "poisson-ip" (samples_image_plane): "\"poisson-ip\" needs reconstruction
+// \"splat\" (...), got \"importance\"", "... cannot refine adaptively (...)", "... takes at most
+// 65536 spp (...), got 100000"; spp is the render's.
+std::string image_plane_problem(const SamplerDesc& sampler, const FilmDesc& film);
+
+// The sampler's rules above (pixel order, then image plane): compare asks them of every sampler
+// and count it sweeps.
+std::string sampler_problem(const SamplerDesc& sampler, const FilmDesc& film);
+
 struct SettingsProblem {
-  enum class Setting { AdaptiveSpp, AdaptiveDecision, CropWindow, PixelOrder } setting;
+  enum class Setting { AdaptiveSpp, AdaptiveDecision, CropWindow, PixelOrder, ImagePlane } setting;
   // The setting named as outside a file: "adaptive: min_spp ...", "adaptive decision \"split\"
   // needs ...", "film.crop_window covers no pixel ...".
   std::string message;
@@ -37,7 +46,8 @@ struct SettingsProblem {
 std::optional<SettingsProblem> render_settings_problem(const SceneDesc& s);
 
 // InputError with the problem's message (the crop window's and the pixel order's after
-// film.size_where, which names the film's size in the scene file).
+// film.size_where, which names the film's size in the scene file; the image plane's after
+// sampler.type_where).
 void check_render_settings(const SceneDesc& s);
 
 }  // namespace pdrt

@@ -77,6 +77,7 @@ struct AdaptiveDesc {
 
 struct SamplerDesc {
   std::string type = sampler_name(SamplerKind::Poisson);  // one of kSamplerNames
+  std::string type_where = "sampler.type";                // "scene.json:5:13: sampler.type" for messages
   int spp = 16;
   uint64_t seed = 0;
   AdaptiveDesc adaptive;

@@ -265,7 +265,7 @@ void SceneParser::film(const JsonObject& o) {
 void SceneParser::sampler(const JsonObject& o) {
   o.allow({"type", "spp", "seed", "adaptive"});
   SamplerDesc& s = scene_.sampler;
-  if (auto n = o.get("type")) s.type = sampler_name(n->choice(kSamplerNames));
+  if (auto n = o.get("type")) s.type = sampler_name(n->choice(kSamplerNames)), s.type_where = n->where();
   if (auto n = o.get("spp")) s.spp = int(n->integer_in(kSppRange));
   if (auto n = o.get("seed")) s.seed = n->integer_in(kSeedRange);
   if (auto n = o.get("adaptive")) {

@@ -3,6 +3,7 @@
 
 #include "sampling/core/bit_reverse.h"
 #include "sampling/core/errors.h"
+#include "sampling/samplers/image_plane_sampler.h"
 #include "sampling/samplers/poisson_sampler.h"
 #include "sampling/samplers/screen_poisson_sampler.h"
 #include "sampling/samplers/zsobol_sampler.h"
@@ -40,8 +41,9 @@ int64_t Sampler::samples_available(int, int) const { return std::numeric_limits<
 
 const std::vector<std::string>& sampler_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = all_sampler_names();
-    n.pop_back();  // regular, last in kSamplerNames
+    std::vector<std::string> n;
+    for (const NamedValue<SamplerKind>& s : kSamplerNames)
+      if (s.value != SamplerKind::Regular && !samples_image_plane(s.value)) n.push_back(s.name);
     return n;
   }();
   return names;
@@ -74,6 +76,8 @@ std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const Sam
       return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
     case SamplerKind::PoissonSS:
       return make_screen_poisson_sampler(seed, default_tables(), shape);
+    case SamplerKind::PoissonIP:
+      return make_image_plane_sampler(make_poisson_sampler(seed, default_tables()), shape, sampler_name(kind));
   }
   return nullptr;
 }

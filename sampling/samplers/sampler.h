@@ -128,6 +128,14 @@ class Sampler {
   // (prefix extension is exact below this); unlimited samplers return INT64_MAX.
   virtual int64_t samples_available(int px, int py) const;
 
+  // Samples pixel (px, py) takes in a render of `spp` samples per pixel: its indices are
+  // [0, samples_in_pixel(spp)), and a pass from spp a to b takes [samples_in_pixel(a),
+  // samples_in_pixel(b)). spp for every sampler but those whose pixels share one image-plane
+  // pattern (`poisson-ip`, image_plane_sampler.h), where the count varies about spp.
+  virtual int64_t samples_in_pixel(int, int, int64_t spp) const { return spp; }
+  // True for those: their pixels' estimates divide by the expected filter weight, not the sum.
+  virtual bool pixel_counts_vary() const { return false; }
+
  protected:
   explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_hash_seed(seed)) {}
   // The hash of (pixel, family, bounce) every value of that stream derives from.
@@ -234,15 +242,17 @@ class PixelSampleState {
   mutable PreparedStream slot_[kFamilyCount * kSlots];
 };
 
-// The Monte Carlo samplers (every kind but `regular`): unbiased over seeds, the ones every
-// sampler test covers; `compare` defaults to compare_default_sampler_names() of them.
+// The Monte Carlo samplers that render under every setting (every kind but `regular` and
+// `poisson-ip`, which renders only by splatting): unbiased over seeds, the ones every sampler
+// test covers; `compare` defaults to compare_default_sampler_names() of them.
 const std::vector<std::string>& sampler_names();
-// Every name `make_sampler` accepts: sampler_names() and `regular`.
+// Every name `make_sampler` accepts: sampler_names(), `poisson-ip` and `regular`.
 const std::vector<std::string>& all_sampler_names();
 std::string sampler_name_list();  // "random, jitter, ..., regular"
 
-// What a sampler that arranges samples across pixels (zsobol, poisson-ss) needs of the render: the
-// samples per pixel of its first pass (the block each pixel takes) and the film's size.
+// What a sampler that arranges samples across pixels (zsobol, poisson-ss, poisson-ip) needs of the
+// render: the samples per pixel of its first pass (the block each pixel takes; poisson-ip's
+// period) and the film's size.
 struct SamplerShape {
   int64_t samples_per_pixel = 16;
   int width = 1024, height = 1024;

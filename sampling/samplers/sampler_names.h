@@ -13,13 +13,13 @@ namespace pdrt {
 // sampler.type, --sampler, --samplers, help texts and messages all read it). Every kind but
 // `regular` is a Monte Carlo sampler, unbiased over seeds; `regular` is Cook's regular sampling
 // (the same deterministic pattern in every pixel; biased, for aliasing demos).
-enum class SamplerKind { Random, Jitter, Poisson, Poisson065, Sobol, Pmj02bn, ZSobol, PoissonSS, Regular };
+enum class SamplerKind { Random, Jitter, Poisson, Poisson065, Sobol, Pmj02bn, ZSobol, PoissonSS, PoissonIP, Regular };
 inline constexpr NamedValue<SamplerKind> kSamplerNames[] = {
-    {SamplerKind::Random, "random"},   {SamplerKind::Jitter, "jitter"},
-    {SamplerKind::Poisson, "poisson"}, {SamplerKind::Poisson065, "poisson-065"},
-    {SamplerKind::Sobol, "sobol"},     {SamplerKind::Pmj02bn, "pmj02bn"},
-    {SamplerKind::ZSobol, "zsobol"},   {SamplerKind::PoissonSS, "poisson-ss"},
-    {SamplerKind::Regular, "regular"}};
+    {SamplerKind::Random, "random"},        {SamplerKind::Jitter, "jitter"},
+    {SamplerKind::Poisson, "poisson"},      {SamplerKind::Poisson065, "poisson-065"},
+    {SamplerKind::Sobol, "sobol"},          {SamplerKind::Pmj02bn, "pmj02bn"},
+    {SamplerKind::ZSobol, "zsobol"},        {SamplerKind::PoissonSS, "poisson-ss"},
+    {SamplerKind::PoissonIP, "poisson-ip"}, {SamplerKind::Regular, "regular"}};
 // What `compare` sweeps unless told: the project's own and the classic baselines (the peers
 // pmj02bn and zsobol on request, so the default sweep's time stays as documented).
 inline constexpr SamplerKind kCompareDefaultSamplers[] = {
@@ -47,6 +47,9 @@ inline int pixel_order_bits(long long spp, int w, int h) {
   };
   return 2 * ceil_log2(w > h ? w : h) + ceil_log2(spp);
 }
+// `poisson-ip`: the pixel family from one image-plane Poisson-disk pattern across pixels
+// (image_plane_sampler.h); it renders only by splatting, without adaptive refinement.
+inline bool samples_image_plane(SamplerKind k) { return k == SamplerKind::PoissonIP; }
 // False for a name that is none of kSamplerNames.
 inline bool parse_sampler(const std::string& name, SamplerKind* out) { return parse_name_in(kSamplerNames, name, out); }
 

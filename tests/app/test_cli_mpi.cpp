@@ -196,6 +196,12 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageOverProgressivePasses) {
   expect_same_at_every_rank_count("passes-splat", scene_text("poisson", R"(, "reconstruction": "splat")", "", false));
 }
 
+// poisson-ip: pixels trace varying counts of one image-plane pattern, splatted over the tiles'
+// borders and divided by the expected weight, over three passes.
+TEST(CliMpi, RanksRenderTheSingleProcessImageWithTheImagePlaneSampler) {
+  expect_same_at_every_rank_count("image-plane", scene_text("poisson-ip", R"(, "reconstruction": "splat")", "", false));
+}
+
 TEST(CliMpi, StatsListEveryRanksShare) {
   const fs::path dir = scratch_dir("mpi-stats");
   std::ofstream(dir / "s.json") << scene_text("jitter", "", "shared");

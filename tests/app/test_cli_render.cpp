@@ -150,6 +150,53 @@ TEST(CliRender, SplitWithRankIsRefusedInOneWordingFromEveryEntry) {
   }
 }
 
+// `poisson-ip` without splatting, with adaptive refinement or past its pattern's spp is refused
+// before rendering in one line, nothing written: at sampler.type in a scene file (exit 1), as
+// a usage error when render's or compare's options make the combination (exit 2).
+TEST(CliRender, ImagePlaneSamplerRefusesWhatItCannotServe) {
+  const std::string needs =
+      "sampler \"poisson-ip\" needs reconstruction \"splat\" (its pixels take varying counts of one image-plane "
+      "pattern's samples), got \"importance\"";
+  fs::path d = scratch_dir("render_image_plane");
+  fs::path in_file = d / "ip.json";
+  std::ofstream(in_file) << R"({
+  "camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+  "film": {"width": 24, "height": 16},
+  "sampler": {"type": "poisson-ip", "spp": 4},
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+}
+)";
+  auto r = run_pdrt("render " + in_file.string() + " -o " + (d / "a.exr").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "pdrt: " + in_file.string() + ":4:23: sampler.type: " + needs + "\n");
+  fs::path plain = write_scene(d);
+  const std::string adaptive =
+      "sampler \"poisson-ip\" cannot refine adaptively (its pixels' samples are one image-plane pattern's, whose "
+      "counts a pixel cannot raise alone)";
+  const std::pair<std::string, std::string> cases[] = {
+      {"render " + plain.string() + " -o " + (d / "b.exr").string() + " --sampler poisson-ip", needs},
+      {"render " + plain.string() + " -o " + (d / "b.exr").string() +
+           " --sampler poisson-ip --reconstruction splat --adaptive",
+       adaptive},
+      {"render " + plain.string() + " -o " + (d / "b.exr").string() +
+           " --sampler poisson-ip --reconstruction splat --spp 70000",
+       "sampler \"poisson-ip\" takes at most 65536 spp (the points of its image-plane pattern), got 70000"},
+      {"compare " + plain.string() + " --out " + (d / "cmp").string() + " --no-plots --samplers poisson,poisson-ip",
+       "--samplers/--spp: sampler " + needs.substr(8)},
+      {"render " + plain.string() + " -o " + (d / "b.exr").string() + " --sampler poisson-xx", ""}};
+  for (const auto& [command, words] : cases) {
+    r = run_pdrt(command);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_EQ(pdrt::test::line_count(r.err), 1) << r.err;
+    if (!words.empty()) {
+      EXPECT_EQ(r.err, "pdrt: " + words + "\n") << command;
+    }
+  }
+  EXPECT_FALSE(fs::exists(d / "a.exr"));
+  EXPECT_FALSE(fs::exists(d / "b.exr"));
+  EXPECT_FALSE(fs::exists(d / "cmp"));
+}
+
 // "threads" is the count the render ran on: --threads 0 (the default) means all of them.
 TEST(CliRender, StatsReportTheThreadsUsedNotTheOption) {
   fs::path d = scratch_dir("render_threads");

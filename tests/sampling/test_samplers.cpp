@@ -138,6 +138,8 @@ TEST_P(EverySampler, FamiliesAreDecorrelatedAcrossPixels) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samplers, EverySampler, ::testing::ValuesIn(sampler_names()));
+// poisson-ip renders only by splatting, so sampler_names() leaves it out; as a sampler it is one of them.
+INSTANTIATE_TEST_SUITE_P(ImagePlane, EverySampler, ::testing::Values(std::string("poisson-ip")));
 
 // The index shuffle permutes [2^t, 2^(t+1)) within itself (so every power-of-two prefix keeps
 // its point set), its bulk form equals the per-index one, and it depends on the stream.

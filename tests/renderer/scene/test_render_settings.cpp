@@ -80,9 +80,11 @@ TEST(SettingsNames, ListsAndSamplersComeFromTheTables) {
   EXPECT_EQ(name_list(kAdaptiveDecisionNames, " | "), "shared | split");
   EXPECT_EQ(sampler_name_list(), name_list(kSamplerNames));
   EXPECT_EQ(all_sampler_names(), names_in(kSamplerNames));
-  // The Monte Carlo samplers: every one but regular, in table order.
+  // The Monte Carlo samplers that render under every setting: every one but regular and
+  // poisson-ip (splatting only), in table order.
   std::vector<std::string> mc = names_in(kSamplerNames);
   mc.erase(std::find(mc.begin(), mc.end(), sampler_name(SamplerKind::Regular)));
+  mc.erase(std::find(mc.begin(), mc.end(), sampler_name(SamplerKind::PoissonIP)));
   EXPECT_EQ(sampler_names(), mc);
   // Each sampler calls itself by its table name.
   for (const NamedValue<SamplerKind>& s : kSamplerNames) EXPECT_EQ(make_sampler(s.value, 1)->name(), s.name);

@@ -8,9 +8,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace pdrt {
@@ -35,6 +37,67 @@ struct Element {
   std::vector<Property> props;
   int line = 0;
 };
+
+// Significant digits of a run of digits: leading zeros cannot overflow a reader.
+size_t significant_digits(std::string_view d) {
+  const size_t first = d.find_first_not_of('0');
+  return first == std::string_view::npos ? 0 : d.size() - first;
+}
+
+// Why an ASCII body token is not a `type` value as Assimp 5.2 reads it, or "" if it is one.
+// Assimp reads a value by its property's type (digits for unsigned types, a sign and digits for
+// signed ones, its own float grammar with a 64-bit integer part) and never checks that the whole
+// token was used: the rest of a token is read as the line's next value. A coordinate of 20 digits
+// overflowed its integer reader, which then left the digits to be read as a list count and
+// allocated 20 GB (found with fuzz_ply), so every token must be one Assimp reads whole.
+std::string ascii_value_error(const std::string& tok, const std::string& type) {
+  const std::string quoted = "\"" + tok + "\"";
+  const bool real = type == "float" || type == "double" || type == "float32" || type == "float64";
+  const bool is_unsigned = type[0] == 'u';
+  std::string_view s = tok;
+  size_t i = 0;
+  auto digits = [&] {
+    const size_t from = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return s.substr(from, i - from);
+  };
+  const bool sign = i < s.size() && (s[i] == '+' || s[i] == '-');
+  if (!real) {
+    if (sign && !is_unsigned) ++i;
+    const std::string_view d = digits();
+    if (d.empty() || i != s.size()) return quoted + " is not a " + type + " (an integer)";
+    const int bits = 8 * scalar_size(type);
+    const double v = std::strtod(tok.c_str(), nullptr);
+    const double lo = is_unsigned ? 0 : -std::ldexp(1.0, bits - 1);
+    const double hi = is_unsigned ? std::ldexp(1.0, bits) - 1 : std::ldexp(1.0, bits - 1) - 1;
+    if (significant_digits(d) > 10 || v < lo || v > hi)
+      return quoted + " is out of range for a " + type + " (" + std::to_string(int64_t(lo)) + " to " +
+             std::to_string(int64_t(hi)) + ")";
+    return "";
+  }
+  if (sign) ++i;
+  std::string rest(s.substr(i));
+  for (char& c : rest) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (rest == "nan" || rest == "inf" || rest == "infinity") return "";
+  const std::string not_decimal = quoted + " is not a number (digits, a point, digits, an exponent)";
+  const std::string_view whole = digits();
+  bool any = !whole.empty();
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    any = !digits().empty() || any;
+  }
+  if (!any) return not_decimal;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    const std::string_view exponent = digits();
+    if (exponent.empty()) return not_decimal;
+    if (significant_digits(exponent) > 19) return quoted + " has an exponent of more than 19 digits";
+  }
+  if (i != s.size()) return not_decimal;
+  if (significant_digits(whole) > 19) return quoted + " has more than 19 digits before its point";
+  return "";
+}
 
 constexpr size_t kMaxHeader = 1 << 16;  // bytes: a header is a few hundred
 
@@ -103,6 +166,9 @@ class PlyChecker {
         e.count = std::strtoull(count.c_str(), &end, 10);
         if (e.name.empty() || count.empty() || *end || count[0] == '-')
           fail(line_no, 1, "an element line is \"element <name> <count>\"");
+        // Assimp 5.2 reads such a name's digits as the element's count (found with fuzz_ply).
+        if (std::isdigit(static_cast<unsigned char>(e.name[0])))
+          fail(line_no, int(line.find(e.name) + 1), "an element name must not start with a digit, got \"" + e.name + "\"");
         elements.push_back(e);
       } else if (w == "property") {
         if (elements.empty()) fail(line_no, 1, "a property before any element");
@@ -130,6 +196,25 @@ class PlyChecker {
     }
     if (!ended) fail(line_no, 1, "the PLY header has no end_header");
     if (format.empty()) fail(line_no, 1, "the PLY header has no format line");
+    refuse_unskippable_elements();
+  }
+
+  // Assimp 5.2 reads the count of vertex, face, tristrips, edge and material elements only; any
+  // other element counts 0 there, so the lines of its instances would be read as the next
+  // element's (found with fuzz_ply: list counts taken from other lines aborted and allocated
+  // 30 GB). Such an element may only come after every element with instances.
+  void refuse_unskippable_elements() const {
+    for (size_t i = 0; i < elements.size(); ++i) {
+      const std::string& n = elements[i].name;
+      if (elements[i].count == 0 || n == "vertex" || n == "face" || n == "tristrips" || n == "edge" || n == "material")
+        continue;
+      for (size_t j = i + 1; j < elements.size(); ++j)
+        if (elements[j].count > 0)
+          fail(elements[i].line, 1,
+               "element \"" + n + "\" has instances before element \"" + elements[j].name +
+                   "\", which Assimp 5.2 (pdrt's PLY reader) would misread: only vertex, face, tristrips, edge and "
+                   "material elements may come first");
+    }
   }
 
   // One line per element instance; a list's count says how many values follow it.
@@ -148,29 +233,28 @@ class PlyChecker {
         } while (body.find_first_not_of(" \t") == std::string::npos);
         std::istringstream v(body);
         size_t col = 0;
-        auto next = [&](bool integer) {
+        // The next token, which must be one Assimp reads whole as `type` (assimp_reads_whole).
+        auto next = [&](const std::string& type) {
           std::string tok;
           if (!(v >> tok))
             fail(line_no, int(body.size() + 1), e.name + " " + std::to_string(i) + " has too few values");
           col = size_t(v.tellg() == -1 ? body.size() : size_t(v.tellg())) - tok.size() + 1;
-          char* end = nullptr;
-          double x = std::strtod(tok.c_str(), &end);
-          if (*end) fail(line_no, int(col), "\"" + tok + "\" is not a number");
-          // 2^64 and above first: converting them to uint64_t is undefined (found with fuzz_ply).
-          if (integer && (!(x >= 0 && x < 18446744073709551616.0) || x != std::floor(x)))
-            fail(line_no, int(col), "a list count must be a non-negative integer, got \"" + tok + "\"");
-          return x;
+          const std::string why = ascii_value_error(tok, type);
+          if (!why.empty()) fail(line_no, int(col), why);
+          return tok;
         };
         for (const Property& p : e.props) {
           if (!p.list) {
-            next(false);
+            next(p.type);
             continue;
           }
-          const double n = next(true);
+          const std::string count = next(p.count_type);
+          const double n = std::strtod(count.c_str(), nullptr);
+          if (n < 0) fail(line_no, int(col), "a list count must be a non-negative integer, got \"" + count + "\"");
           if (n > 1e6) fail(line_no, int(col), "a list of " + std::to_string(uint64_t(n)) + " values");
           // Assimp 5.2 aborts (an assertion) triangulating a face without vertices (found with fuzz_ply).
           if (n == 0 && e.name == "face") fail(line_no, int(col), "face " + std::to_string(i) + " has an empty list");
-          for (uint64_t k = 0; k < uint64_t(n); ++k) next(false);
+          for (uint64_t k = 0; k < uint64_t(n); ++k) next(p.type);
         }
         std::string extra;
         if (v >> extra)

@@ -121,9 +121,17 @@ class PlyChecker {
   // Text lines hold no control characters but tabs: Assimp 5.2 crashes, leaks or loops forever
   // on NULs and vertical tabs in a header or an ASCII body, which the checks below would pass
   // (strtod stops at a NUL; >> splits at a vertical tab). Found with tests/fuzz/fuzz_ply.cpp.
+  // The header must be ASCII too, as PLY defines it: Assimp 5.2 looped forever on a header whose
+  // element name held a byte 0xa0 and whose end_header had no line feed (found with fuzz_ply).
   void refuse_control_characters(const std::string& text, int at_line, const char* part) const {
+    const bool ascii = std::string(part) == "header";
     for (size_t i = 0; i < text.size(); ++i) {
       const unsigned char c = static_cast<unsigned char>(text[i]);
+      if (ascii && c >= 0x80) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", c);
+        fail(at_line, int(i + 1), std::string("a byte that is not ASCII (") + hex + ") in the PLY header");
+      }
       if ((c < 0x20 && c != '\t') || c == 0x7f) {
         char hex[8];
         std::snprintf(hex, sizeof hex, "0x%02x", c);
@@ -189,6 +197,9 @@ class PlyChecker {
         if (name.empty()) fail(line_no, 1, "a property needs a name");
         elements.back().props.push_back(p);
       } else if (w == "end_header") {
+        // The body starts after its line feed; Assimp 5.2 looped forever without it on the
+        // header with a byte 0xa0 above (found with fuzz_ply).
+        if (in_.eof()) fail(line_no, int(line.size() + 1), "end_header must end with a line feed");
         ended = true;
       } else {
         fail(line_no, 1, "unknown PLY header keyword \"" + w + "\"");

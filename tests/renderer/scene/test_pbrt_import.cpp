@@ -677,6 +677,24 @@ TEST(PbrtImport, PlyElementsAssimpWouldMiscountAreRefused) {
   std::filesystem::remove_all(dir);
 }
 
+// Found by the long run of tests/fuzz/fuzz_ply.cpp (the input as found): Assimp 5.2 looped
+// forever on a header whose element name held a byte 0xa0 and whose end_header had no line feed.
+// PLY headers are ASCII lines: either fault alone is refused.
+TEST(PbrtImport, PlyHeaderNotAsciiOrWithoutItsLastLineFeedIsRefused) {
+  const std::filesystem::path data = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply";
+  EXPECT_EQ(ply_error(data / "hang-non-ascii-name-no-line-feed.ply", "t.ply"),
+            "t.ply:3:10: a byte that is not ASCII (0xa0) in the PLY header");
+  const std::filesystem::path dir = ply_dir();
+  const std::string tri =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header";
+  write_file(dir / "nolf.ply", tri);
+  EXPECT_EQ(ply_error(dir / "nolf.ply", "nolf.ply"), "nolf.ply:9:11: end_header must end with a line feed");
+  write_file(dir / "crlf.ply", tri + "\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n");
+  EXPECT_EQ(load_ply(dir / "crlf.ply", "crlf.ply").mesh.indices.size(), 3u);
+  std::filesystem::remove_all(dir);
+}
+
 // Assimp 5.2 reads an ASCII value by its property's type and reads the rest of a token as the
 // next value, so a token it would read only in part (a fraction for an int, a sign for an
 // unsigned type, a hexadecimal float) is refused where it stands; the forms it reads whole pass.

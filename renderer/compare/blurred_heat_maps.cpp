@@ -11,15 +11,10 @@ void write_blurred_heat_maps(const ReportContext& ctx, CompareResults& results) 
     r.blurred_error = blurred_error_map(r.image, blurred_reference, kBlurredMapSigma);
     r.blurred_error_file = "errors/" + r.sampler + "-" + std::to_string(r.spp) + "-blurred.png";
   }
-  for (int n : ctx.o.spp) {
-    std::vector<float> all;
-    for (const UniformRun& r : results.runs)
-      if (r.spp == n) all.insert(all.end(), r.blurred_error.begin(), r.blurred_error.end());
-    const float scale = heat_scale(std::move(all));
-    results.blurred_heat_scale[n] = scale;
-    for (const UniformRun& r : results.runs)
-      if (r.spp == n) ctx.write_png(r.blurred_error_file, heat_rgb(r.blurred_error, scale));
-  }
+  std::vector<std::vector<float>> maps;
+  for (const UniformRun& r : results.runs) maps.push_back(r.blurred_error);
+  results.blurred_heat_scale =
+      write_heat_pngs(ctx, results.runs, maps, [](const UniformRun& r) { return r.blurred_error_file; });
 }
 
 }  // namespace pdrt

@@ -1,6 +1,7 @@
 #include "renderer/compare/demonstration_sheet.h"
 
 #include "renderer/compare/heat_maps.h"
+#include "renderer/compare/zoomed_crop.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/image_text.h"
 #include "sampling/core/errors.h"
@@ -32,8 +33,7 @@ struct Canvas {
   // `value(cx, cy)` of every crop pixel, replicated zoom x zoom at (x0, y0).
   template <class F>
   void paste(int x0, int y0, const F& value) {
-    for (int y = 0; y < l.side; ++y)
-      for (int x = 0; x < l.side; ++x) set(x0 + x, y0 + y, value(x / l.zoom, y / l.zoom));
+    paste_zoomed(rgb, l.width, x0, y0, l.side / l.zoom, l.zoom, value);
   }
   // Text with its baseline's left end at (x, y); `centre` > 0 centres it in that width from x.
   void text(int x, int y, const std::string& s, int size = kTextSize, int centre = 0) {
@@ -124,10 +124,7 @@ DemoPicture demonstration_picture(const DemoInput& in) {
   pic.rgb.assign(std::size_t(3) * l.width * l.height, 1.0f);
   Canvas cv{l, pic.rgb};
   auto image_crop = [&](const Image& im) {
-    return [&im, W, wx = wx, wy = wy](int x, int y) {
-      const std::size_t i = 3 * (std::size_t(wy + y) * W + wx + x);
-      return Vec3(linear_to_srgb(im.rgb[i]), linear_to_srgb(im.rgb[i + 1]), linear_to_srgb(im.rgb[i + 2]));
-    };
+    return [&im, wx = wx, wy = wy](int x, int y) { return srgb_pixel(im, wx + x, wy + y); };
   };
   for (int r = 0; r < rows; ++r)
     for (int k = 0; k < cols; ++k) {

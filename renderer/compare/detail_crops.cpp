@@ -1,5 +1,6 @@
 #include "renderer/compare/detail_crops.h"
 
+#include "renderer/compare/zoomed_crop.h"
 #include "renderer/image/image_output.h"
 
 #include <algorithm>
@@ -42,12 +43,7 @@ void write_detail_crops(const ReportContext& ctx, CompareResults& results) {
   for (int n : ctx.o.spp) {
     std::vector<float> rgb(std::size_t(3) * CW * cw, 1.0f);
     auto paste = [&](const Image& im, int col) {
-      for (int y = 0; y < cw; ++y)
-        for (int x = 0; x < cw; ++x) {
-          std::size_t si = 3 * (std::size_t(win[1] + y / zoom) * ctx.width + win[0] + x / zoom);
-          std::size_t di = 3 * (std::size_t(y) * CW + col * (cw + gap) + x);
-          for (int k = 0; k < 3; ++k) rgb[di + k] = linear_to_srgb(im.rgb[si + k]);
-        }
+      paste_zoomed(rgb, CW, col * (cw + gap), 0, c, zoom, [&](int x, int y) { return srgb_pixel(im, win[0] + x, win[1] + y); });
     };
     int col = 0;
     for (const auto& name : ctx.o.samplers)

@@ -31,20 +31,23 @@ float heat_scale(std::vector<float> values) {
   return std::max(*at, 1e-6f);
 }
 
+std::map<int, float> write_heat_pngs(const ReportContext& ctx, const std::vector<UniformRun>& runs,
+                                     const std::vector<std::vector<float>>& maps,
+                                     const std::function<std::string(const UniformRun&)>& file_of) {
+  std::map<int, std::vector<float>> by_spp;
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    by_spp[runs[i].spp].insert(by_spp[runs[i].spp].end(), maps[i].begin(), maps[i].end());
+  std::map<int, float> scales;
+  for (auto& [n, values] : by_spp) scales[n] = heat_scale(std::move(values));
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    ctx.write_png(file_of(runs[i]), heat_rgb(maps[i], scales[runs[i].spp]));
+  return scales;
+}
+
 void write_heat_maps(const ReportContext& ctx, CompareResults& results) {
-  for (int n : ctx.o.spp) {
-    std::vector<float> all;
-    std::map<std::string, std::vector<float>> maps;
-    for (const UniformRun& r : results.runs)
-      if (r.spp == n) {
-        maps[r.sampler] = error_map(r.image, results.reference.image);
-        all.insert(all.end(), maps[r.sampler].begin(), maps[r.sampler].end());
-      }
-    const float scale = heat_scale(std::move(all));
-    results.heat_scale[n] = scale;
-    for (const UniformRun& r : results.runs)
-      if (r.spp == n) ctx.write_png(r.error_file, heat_rgb(maps[r.sampler], scale));
-  }
+  std::vector<std::vector<float>> maps;
+  for (const UniformRun& r : results.runs) maps.push_back(error_map(r.image, results.reference.image));
+  results.heat_scale = write_heat_pngs(ctx, results.runs, maps, [](const UniformRun& r) { return r.error_file; });
 }
 
 }  // namespace pdrt

@@ -6,6 +6,11 @@
 #include "renderer/compare/report_context.h"
 #include "renderer/scene/vec3.h"
 
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
 namespace pdrt {
 
 // The ramp in display RGB at t = 0, 1/4, ..., 1 (results.json carries it so the report's
@@ -22,6 +27,12 @@ std::vector<float> heat_rgb(const std::vector<float>& values, float scale);
 // The scale of heat maps that share one: the 99th percentile of `values` (brighter ones clip),
 // at least 1e-6 so that an all-zero map stays the ramp's zero colour.
 float heat_scale(std::vector<float> values);
+
+// Writes maps[i] as runs[i]'s PNG file_of(runs[i]) on the heat ramp, with one scale per spp
+// (heat_scale over that spp's maps, so the samplers compare); returns the scales by spp.
+std::map<int, float> write_heat_pngs(const ReportContext& ctx, const std::vector<UniformRun>& runs,
+                                     const std::vector<std::vector<float>>& maps,
+                                     const std::function<std::string(const UniformRun&)>& file_of);
 
 // Writes every run's error map (run.error_file) and fills results.heat_scale. Needs
 // results.reference and results.runs.

@@ -98,8 +98,12 @@ void tessellate_bilinear_patches(PbrtBuild& b, const PbrtDirective& d, MeshInput
   check_uv_count(b, d, m);
   constexpr int kMaxGrid = 64;
   constexpr double kTolerance = 1e-4;
+  // In double, and capped before the conversion to int: a patch of finite corners can still have
+  // an infinite twist or size in float (found with fuzz_pbrt: int(NaN) was undefined).
   auto grid_for = [&](double twist, double tol) {
-    return twist > 0 ? int(std::ceil(std::sqrt(twist / (4 * tol)))) : 1;
+    if (!(twist > 0)) return 1;
+    const double g = std::ceil(std::sqrt(twist / (4 * tol)));
+    return g >= 1 && g <= kMaxGrid ? int(g) : g < 1 ? 1 : kMaxGrid + 1;
   };
   MeshInput out;
   int64_t capped = 0;
@@ -200,12 +204,17 @@ bool mesh(PbrtBuild& b, const PbrtDirective& d, bool flip, ShapeDesc& s) {
     idx = {0, 1, 2};
   }
   if (t != "plymesh" && t != "loopsubdiv") m.uvs = ps.point2s("uv");
+  // Before tessellating bilinear patches, whose grid size is computed from the corners.
+  auto check_finite = [&] {
+    for (const Vec3& p : P)
+      if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+  };
+  check_finite();
   if (t == "bilinearmesh") tessellate_bilinear_patches(b, d, m);
   if (idx.size() % 3)
     b.fail(d.at, "\"integer indices\" needs a multiple of 3 values, got " + std::to_string(idx.size()));
   check_indices(b, d, idx, P.size());
-  for (const Vec3& p : P)
-    if (!is_finite(p)) b.fail(ps.find("P") ? ps.find("P")->at : d.at, "\"P\" holds a non-finite coordinate");
+  if (t == "bilinearmesh") check_finite();
   if (t == "loopsubdiv") subdivide(b, d, m);
   const PbrtLocation n_at = ps.find("N") ? ps.find("N")->at : d.at;
   check_normal_count(b, d, m);

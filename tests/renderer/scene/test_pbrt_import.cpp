@@ -779,6 +779,30 @@ TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {
   EXPECT_EQ(import(one).scene.shapes.at(0).mesh.indices.size(), 3u * 16);
 }
 
+// Found by the long run of tests/fuzz/fuzz_pbrt.cpp (the input as found): a bilinear patch with
+// a coordinate beyond float's range made the grid size NaN, and converting it to int was
+// undefined. Non-finite corners are refused before tessellating; corners so far apart that the
+// twist overflows float take the largest grid.
+TEST(PbrtImport, BilinearPatchWithAnInfiniteOrOverflowingCornerIsRefusedOrCapped) {
+  const std::filesystem::path file =
+      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "ubsan-bilinear-infinite-coordinate.pbrt";
+  try {
+    build_pbrt_scene(parse_pbrt_file(file), false);
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ubsan-bilinear-infinite-coordinate.pbrt:3:22: \"P\" holds a non-finite coordinate"),
+              std::string::npos)
+        << e.what();
+  }
+  const PbrtImport im = import(std::string(kCamera) +
+                               "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [-3e38 -3e38 0  3e38 -3e38 0  -3e38 3e38 0  "
+                               "3e38 3e38 1e38]\n");
+  bool capped = false;
+  for (const std::string& line : im.report) capped = capped || line.find("twisted beyond a 64 x 64 grid") != std::string::npos;
+  EXPECT_TRUE(capped);
+  for (const Vec3& p : im.scene.shapes.at(0).mesh.positions) ASSERT_TRUE(is_finite(p));
+}
+
 TEST(PbrtImport, ReportsAKindOnceWithTheCountAndLastPlaceOfTheRest) {
   const PbrtImport im = import(std::string(kCamera) +
                                "WorldBegin\n"

@@ -233,18 +233,21 @@ class PlyChecker {
     for (const Element& e : elements)
       for (uint64_t i = 0; i < e.count; ++i) {
         std::string body;
-        do {
-          if (!std::getline(in_, body))
-            fail(line_no + 1, 1,
-                 "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
-                     " (truncated)");
-          ++line_no;
-          if (!body.empty() && body.back() == '\r') body.pop_back();
-          refuse_control_characters(body, line_no, "body");
-        } while (body.find_first_not_of(" \t") == std::string::npos);
+        if (!std::getline(in_, body))
+          fail(line_no + 1, 1,
+               "the body ends at " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
+                   " (truncated)");
+        ++line_no;
+        if (!body.empty() && body.back() == '\r') body.pop_back();
+        refuse_control_characters(body, line_no, "body");
+        // Assimp 5.2 reads a line of spaces, or the second of two empty lines, as an element and
+        // every later line as the one before it (an abort on an empty face; found checking
+        // fuzz_ply's findings).
+        if (body.find_first_not_of(" \t") == std::string::npos)
+          fail(line_no, 1, "a blank line in the PLY body, where every line is one " + e.name);
         std::istringstream v(body);
         size_t col = 0;
-        // The next token, which must be one Assimp reads whole as `type` (assimp_reads_whole).
+        // The next token, which must be one Assimp reads whole as `type` (ascii_value_error).
         auto next = [&](const std::string& type) {
           std::string tok;
           if (!(v >> tok))

@@ -695,6 +695,24 @@ TEST(PbrtImport, PlyHeaderNotAsciiOrWithoutItsLastLineFeedIsRefused) {
   std::filesystem::remove_all(dir);
 }
 
+// Assimp 5.2 reads a line of spaces or tabs in an ASCII body, or the second of two empty lines,
+// as an element, and every later line as the one before it: with this face after the vertices it
+// aborted on an empty face. Every blank line in the body is refused; after the body it is harmless.
+TEST(PbrtImport, PlyBodyWithABlankLineIsRefused) {
+  const std::filesystem::path dir = ply_dir();
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uint int vertex_indices\nend_header\n";
+  for (const char* blank : {"", " ", "\t", "\r"}) {
+    write_file(dir / "b.ply", head + "0 0 0\n" + blank + "\n1 0 0\n0 1 0\n3 0 1 2\n");
+    EXPECT_EQ(ply_error(dir / "b.ply", "b.ply"), "b.ply:11:1: a blank line in the PLY body, where every line is one vertex")
+        << "blank line \"" << blank << "\"";
+  }
+  write_file(dir / "after.ply", head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n  \n\n");
+  EXPECT_EQ(load_ply(dir / "after.ply", "after.ply").mesh.indices.size(), 3u);
+  std::filesystem::remove_all(dir);
+}
+
 // Assimp 5.2 reads an ASCII value by its property's type and reads the rest of a token as the
 // next value, so a token it would read only in part (a fraction for an int, a sign for an
 // unsigned type, a hexadecimal float) is refused where it stands; the forms it reads whole pass.

@@ -43,7 +43,8 @@ void write_detail_crops(const ReportContext& ctx, CompareResults& results) {
   for (int n : ctx.o.spp) {
     std::vector<float> rgb(std::size_t(3) * CW * cw, 1.0f);
     auto paste = [&](const Image& im, int col) {
-      paste_zoomed(rgb, CW, col * (cw + gap), 0, c, zoom, [&](int x, int y) { return srgb_pixel(im, win[0] + x, win[1] + y); });
+      paste_zoomed(rgb, CW, col * (cw + gap), 0, c, zoom,
+                   [&](int x, int y) { return srgb_pixel(im, win[0] + x, win[1] + y); });
     };
     int col = 0;
     for (const auto& name : ctx.o.samplers)

@@ -39,8 +39,7 @@ std::map<int, float> write_heat_pngs(const ReportContext& ctx, const std::vector
     by_spp[runs[i].spp].insert(by_spp[runs[i].spp].end(), maps[i].begin(), maps[i].end());
   std::map<int, float> scales;
   for (auto& [n, values] : by_spp) scales[n] = heat_scale(std::move(values));
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    ctx.write_png(file_of(runs[i]), heat_rgb(maps[i], scales[runs[i].spp]));
+  for (std::size_t i = 0; i < runs.size(); ++i) ctx.write_png(file_of(runs[i]), heat_rgb(maps[i], scales[runs[i].spp]));
   return scales;
 }
 

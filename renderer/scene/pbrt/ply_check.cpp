@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -176,7 +176,8 @@ class PlyChecker {
           fail(line_no, 1, "an element line is \"element <name> <count>\"");
         // Assimp 5.2 reads such a name's digits as the element's count (found with fuzz_ply).
         if (std::isdigit(static_cast<unsigned char>(e.name[0])))
-          fail(line_no, int(line.find(e.name) + 1), "an element name must not start with a digit, got \"" + e.name + "\"");
+          fail(line_no, int(line.find(e.name) + 1),
+               "an element name must not start with a digit, got \"" + e.name + "\"");
         elements.push_back(e);
       } else if (w == "property") {
         if (elements.empty()) fail(line_no, 1, "a property before any element");

@@ -610,7 +610,8 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
       {"type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\nend_header\n",
        ":4:10: unknown PLY type \"real\""},
       {"ascii_short.ply", tri + "0 0 0\n1 0 0\n", ":12:1: the body ends at vertex 2 of 3 (truncated)"},
-      {"ascii_nan.ply", tri + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", ":11:3: \"x\" is not a number (digits, a point, digits, an exponent)"},
+      {"ascii_nan.ply", tri + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n",
+       ":11:3: \"x\" is not a number (digits, a point, digits, an exponent)"},
       {"ascii_long.ply", tri + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n", ":13:9: face 0 has more values than its properties"},
       {"short.ply", binary_triangles(4, true),
        ": byte " + std::to_string(full.size() - 7) + ": the body ends inside face 3 of 4 (truncated)"},
@@ -651,7 +652,8 @@ TEST(PbrtImport, PlyListCountBeyondEveryIntegerIsRefused) {
 TEST(PbrtImport, PlyCoordinateOfTwentyDigitsIsRefusedBeforeAssimpReadsIt) {
   const std::filesystem::path file =
       std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "oom-20-digit-coordinate-before-a-list.ply";
-  EXPECT_EQ(ply_error(file, "oom.ply"), "oom.ply:10:3: \"666666666666666666660\" has more than 19 digits before its point");
+  EXPECT_EQ(ply_error(file, "oom.ply"),
+            "oom.ply:10:3: \"666666666666666666660\" has more than 19 digits before its point");
 }
 
 // Found by the long run of tests/fuzz/fuzz_ply.cpp (the inputs as found; the second minimised):
@@ -667,7 +669,8 @@ TEST(PbrtImport, PlyElementsAssimpWouldMiscountAreRefused) {
        "t.ply:3:1: element \"cma\" has instances before element \"vertex\", which Assimp 5.2 (pdrt's PLY reader) "
        "would misread: only vertex, face, tristrips, edge and material elements may come first"},
   };
-  for (const auto& [name, error] : found) EXPECT_NE(ply_error(data / name, "t.ply").find(error), std::string::npos) << name;
+  for (const auto& [name, error] : found)
+    EXPECT_NE(ply_error(data / name, "t.ply").find(error), std::string::npos) << name;
   const std::filesystem::path dir = ply_dir();
   write_file(dir / "after.ply",
              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
@@ -705,7 +708,8 @@ TEST(PbrtImport, PlyBodyWithABlankLineIsRefused) {
       "element face 1\nproperty list uint int vertex_indices\nend_header\n";
   for (const char* blank : {"", " ", "\t", "\r"}) {
     write_file(dir / "b.ply", head + "0 0 0\n" + blank + "\n1 0 0\n0 1 0\n3 0 1 2\n");
-    EXPECT_EQ(ply_error(dir / "b.ply", "b.ply"), "b.ply:11:1: a blank line in the PLY body, where every line is one vertex")
+    EXPECT_EQ(ply_error(dir / "b.ply", "b.ply"),
+              "b.ply:11:1: a blank line in the PLY body, where every line is one vertex")
         << "blank line \"" << blank << "\"";
   }
   write_file(dir / "after.ply", head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n  \n\n");
@@ -808,15 +812,18 @@ TEST(PbrtImport, BilinearPatchWithAnInfiniteOrOverflowingCornerIsRefusedOrCapped
     build_pbrt_scene(parse_pbrt_file(file), false);
     FAIL() << "accepted " << file;
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("ubsan-bilinear-infinite-coordinate.pbrt:3:22: \"P\" holds a non-finite coordinate"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("ubsan-bilinear-infinite-coordinate.pbrt:3:22: \"P\" holds a non-finite coordinate"),
+        std::string::npos)
         << e.what();
   }
-  const PbrtImport im = import(std::string(kCamera) +
-                               "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [-3e38 -3e38 0  3e38 -3e38 0  -3e38 3e38 0  "
-                               "3e38 3e38 1e38]\n");
+  const PbrtImport im =
+      import(std::string(kCamera) +
+             "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [-3e38 -3e38 0  3e38 -3e38 0  -3e38 3e38 0  "
+             "3e38 3e38 1e38]\n");
   bool capped = false;
-  for (const std::string& line : im.report) capped = capped || line.find("twisted beyond a 64 x 64 grid") != std::string::npos;
+  for (const std::string& line : im.report)
+    capped = capped || line.find("twisted beyond a 64 x 64 grid") != std::string::npos;
   EXPECT_TRUE(capped);
   for (const Vec3& p : im.scene.shapes.at(0).mesh.positions) ASSERT_TRUE(is_finite(p));
 }

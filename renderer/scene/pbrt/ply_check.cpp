@@ -140,6 +140,15 @@ class PlyChecker {
     }
   }
 
+  // A header line's words past its fields: Assimp 5.2 reads some of them (an unknown element's
+  // name runs to the line's last space), so they are refused as PLY's grammar has none.
+  void refuse_more_words(std::istringstream& words, const std::string& line, const std::string& form) const {
+    std::string extra;
+    if (!(words >> extra)) return;
+    const size_t at = words.tellg() == -1 ? line.size() - extra.size() : size_t(words.tellg()) - extra.size();
+    fail(line_no, int(at + 1), "\"" + extra + "\" after the line's fields: " + form);
+  }
+
   // Header: lines up to "end_header".
   void header() {
     size_t header_bytes = 0;
@@ -158,13 +167,19 @@ class PlyChecker {
         if (w != "ply") fail(1, 1, "not a PLY file (the first line must be \"ply\")");
         continue;
       }
+      // Assimp 5.2 reads the format from the second line only, as PLY places it.
+      if (line_no == 2 && w != "format") fail(2, 1, "the second line must be \"format <format> 1.0\"");
       if (w.empty() || w == "comment" || w == "obj_info") continue;
       if (w == "format") {
+        // Assimp 5.2 takes the first and pdrt took the last: a binary body read as ASCII, or
+        // the other way round, crashed Assimp (found checking fuzz_ply's findings).
+        if (!format.empty()) fail(line_no, 1, "a second format line");
         std::string version;
         words >> format >> version;
         if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
           fail(line_no, 8, "unknown PLY format \"" + format + "\" (ascii, binary_little_endian, binary_big_endian)");
         if (version != "1.0") fail(line_no, 1, "unsupported PLY version \"" + version + "\" (1.0)");
+        refuse_more_words(words, line, "a format line is \"format <format> 1.0\"");
       } else if (w == "element") {
         Element e;
         e.line = line_no;
@@ -174,6 +189,7 @@ class PlyChecker {
         e.count = std::strtoull(count.c_str(), &end, 10);
         if (e.name.empty() || count.empty() || *end || count[0] == '-')
           fail(line_no, 1, "an element line is \"element <name> <count>\"");
+        refuse_more_words(words, line, "an element line is \"element <name> <count>\"");
         // Assimp 5.2 reads such a name's digits as the element's count (found with fuzz_ply).
         if (std::isdigit(static_cast<unsigned char>(e.name[0])))
           fail(line_no, int(line.find(e.name) + 1),
@@ -196,6 +212,9 @@ class PlyChecker {
         }
         if (!scalar_size(p.type)) fail(line_no, 10, "unknown PLY type \"" + p.type + "\"");
         if (name.empty()) fail(line_no, 1, "a property needs a name");
+        refuse_more_words(words, line,
+                          p.list ? "a list property is \"property list <count type> <type> <name>\""
+                                 : "a property is \"property <type> <name>\"");
         elements.back().props.push_back(p);
       } else if (w == "end_header") {
         // The body starts after its line feed; Assimp 5.2 looped forever without it on the

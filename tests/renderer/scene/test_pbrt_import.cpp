@@ -538,6 +538,15 @@ const char* kAsciiQuad =
     "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
     "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n0 1 0 0 0 1 0 1\n4 0 1 2 3\n";
 
+// The ASCII header of a triangle: three vertices (x, y, z) and one face whose list count is a
+// count_type, and the body that fills it.
+std::string ply_triangle_header(const std::string& count_type = "uchar") {
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+         "element face 1\nproperty list " +
+         count_type + " int vertex_indices\nend_header\n";
+}
+const char* kPlyTriangleBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
 std::string binary_triangles(int n_tri, bool truncate) {
   std::string h = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(3 * n_tri) +
                   "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(n_tri) +
@@ -595,9 +604,7 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
     std::string bytes;
     std::string what;  // after "<s.pbrt>:4:17: <dir>/<name>"
   };
-  const std::string tri =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string tri = ply_triangle_header();
   const std::string full = binary_triangles(4, false);
   const Case cases[] = {
       {"keyword.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_heade\n",
@@ -636,10 +643,7 @@ TEST(PbrtImport, BadPlyFilesAreRefusedNamingTheShapeAndThePlace) {
 // count that is not an integer of its type (its conversion to an integer was undefined).
 TEST(PbrtImport, PlyListCountBeyondEveryIntegerIsRefused) {
   const std::filesystem::path dir = ply_dir();
-  write_file(dir / "big.ply",
-             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
-             "1e30 0 1 2\n");
+  write_file(dir / "big.ply", ply_triangle_header() + "0 0 0\n1 0 0\n0 1 0\n1e30 0 1 2\n");
   write_file(dir / "s.pbrt", std::string(kCamera) + "WorldBegin\nShape \"plymesh\" \"string filename\" \"big.ply\"\n");
   EXPECT_EQ(file_import_error(dir / "s.pbrt"), (dir / "s.pbrt").string() + ":4:17: " + (dir / "big.ply").string() +
                                                    ":13:1: \"1e30\" is not a uchar (an integer)");
@@ -689,9 +693,8 @@ TEST(PbrtImport, PlyHeaderNotAsciiOrWithoutItsLastLineFeedIsRefused) {
   EXPECT_EQ(ply_error(data / "hang-non-ascii-name-no-line-feed.ply", "t.ply"),
             "t.ply:3:10: a byte that is not ASCII (0xa0) in the PLY header");
   const std::filesystem::path dir = ply_dir();
-  const std::string tri =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header";
+  std::string tri = ply_triangle_header();
+  tri.pop_back();  // end_header's line feed
   write_file(dir / "nolf.ply", tri);
   EXPECT_EQ(ply_error(dir / "nolf.ply", "nolf.ply"), "nolf.ply:9:11: end_header must end with a line feed");
   write_file(dir / "crlf.ply", tri + "\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n");
@@ -704,16 +707,14 @@ TEST(PbrtImport, PlyHeaderNotAsciiOrWithoutItsLastLineFeedIsRefused) {
 // aborted on an empty face. Every blank line in the body is refused; after the body it is harmless.
 TEST(PbrtImport, PlyBodyWithABlankLineIsRefused) {
   const std::filesystem::path dir = ply_dir();
-  const std::string head =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uint int vertex_indices\nend_header\n";
+  const std::string head = ply_triangle_header("uint");
   for (const char* blank : {"", " ", "\t", "\r"}) {
     write_file(dir / "b.ply", head + "0 0 0\n" + blank + "\n1 0 0\n0 1 0\n3 0 1 2\n");
     EXPECT_EQ(ply_error(dir / "b.ply", "b.ply"),
               "b.ply:11:1: a blank line in the PLY body, where every line is one vertex")
         << "blank line \"" << blank << "\"";
   }
-  write_file(dir / "after.ply", head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n  \n\n");
+  write_file(dir / "after.ply", head + kPlyTriangleBody + "  \n\n");
   EXPECT_EQ(load_ply(dir / "after.ply", "after.ply").mesh.indices.size(), 3u);
   std::filesystem::remove_all(dir);
 }
@@ -724,9 +725,9 @@ TEST(PbrtImport, PlyBodyWithABlankLineIsRefused) {
 // words are refused.
 TEST(PbrtImport, PlyHeaderLinesFollowPlysGrammar) {
   const std::filesystem::path dir = ply_dir();
+  // The triangle's header past its format line, and its body.
   const std::string body =
-      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
-      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+      ply_triangle_header().substr(std::string("ply\nformat ascii 1.0\n").size()) + kPlyTriangleBody;
   const std::pair<std::string, std::string> cases[] = {
       {"ply\nformat binary_little_endian 1.0\nformat ascii 1.0\n" + body, "3:1: a second format line"},
       {"ply\nformat ascii 1.0 x\n" + body,
@@ -754,9 +755,7 @@ TEST(PbrtImport, PlyHeaderLinesFollowPlysGrammar) {
 // unsigned type, a hexadecimal float) is refused where it stands; the forms it reads whole pass.
 TEST(PbrtImport, PlyAsciiValuesAssimpWouldReadInPartAreRefused) {
   const std::filesystem::path dir = ply_dir();
-  const std::string head =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string head = ply_triangle_header();
   auto body = [](const std::string& y, const std::string& face) {
     return "0 0 0\n1 " + y + " 0\n0 1 0\n" + face + "\n";
   };

@@ -1,7 +1,7 @@
 // `pdrt render` and `pdrt compare` from the command line: outputs, metadata, bad input.
 #include "tests/support/cli_runner.h"
 #include "tests/support/one_cpu.h"
-#include "tests/support/process_probe.h"
+#include "tests/support/terminal_child.h"
 #include "renderer/image/image_output.h"
 #include "sampling/samplers/sampler.h"
 
@@ -692,38 +692,30 @@ TEST(CliCompare, BadOptionsAreUsageErrors) {
 }
 
 // Ctrl-C: the render stops, the image so far is written and marked partial, exit 130. The
-// signal goes once pdrt handles SIGINT and has rendered for a CPU second, however loaded the
-// machine (a fixed delay could find it still loading, or done).
+// signal goes once pdrt shows its progress line on a terminal, i.e. once a tile is done,
+// however loaded the machine (a fixed delay or a CPU-time budget could find it still starting
+// up, or done).
 TEST(CliRender, InterruptWritesPartialImage) {
   fs::path d = scratch_dir("render_int");
   fs::path scene = write_scene(d, R"("width": 512, "height": 512)");
   fs::path out = d / "out.exr";
-  const std::string cmd = "exec '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " + out.string() +
-                          " --spp 4096 --allow-long-render --quiet 2>'" + (d / "err.txt").string() + "'";
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  const bool ready = pdrt::test::wait_until([&] { return pdrt::test::catches_signal(pid, SIGINT); }, 120) &&
-                     pdrt::test::wait_for_cpu_seconds(&pid, 1, 1.0);
-  ::kill(pid, ready ? SIGINT : SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(ready) << "pdrt never installed its SIGINT handler and rendered";
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  pdrt::test::TerminalChild child("exec '" + std::string(PDRT_BINARY) + "' render " + scene.string() + " -o " +
+                                  out.string() + " --spp 4096 --allow-long-render");
+  ASSERT_GT(child.pid(), 0) << "no pseudo-terminal";
+  const bool rendering = child.read_until("\033[Krender", 300);
+  ::kill(child.pid(), rendering ? SIGINT : SIGKILL);
+  const int status = child.finish(300);
+  ASSERT_TRUE(rendering) << "pdrt never showed its progress: " << child.text();
+  ASSERT_TRUE(WIFEXITED(status)) << child.text();
+  EXPECT_EQ(WEXITSTATUS(status), 130) << child.text();
   auto in = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(in) << "the partial image must be written";
   EXPECT_EQ(in->spec().get_string_attribute("pdrt:partial"), "true");
   // The summary counts the pixels that got samples, not a mean spp (issue 29).
-  std::stringstream err;
-  err << std::ifstream(d / "err.txt").rdbuf();
-  EXPECT_TRUE(
-      std::regex_search(err.str(), std::regex("wrote the partial image .*out\\.exr: [0-9]+ of 262144 pixels rendered "
-                                              "at [0-9]+(–[0-9]+)? spp \\(of 4096\\)")))
-      << err.str();
+  EXPECT_TRUE(std::regex_search(child.text(),
+                                std::regex("wrote the partial image .*out\\.exr: [0-9]+ of 262144 pixels rendered "
+                                           "at [0-9]+(–[0-9]+)? spp \\(of 4096\\)")))
+      << child.text();
 }
 
 // --time-limit: the render stops when it is reached and writes what it has, marked partial with

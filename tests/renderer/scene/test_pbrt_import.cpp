@@ -539,12 +539,13 @@ const char* kAsciiQuad =
     "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n0 1 0 0 0 1 0 1\n4 0 1 2 3\n";
 
 // The ASCII header of a triangle: three vertices (x, y, z) and one face whose list count is a
-// count_type, and the body that fills it.
+// count_type.
 std::string ply_triangle_header(const std::string& count_type = "uchar") {
   return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
          "element face 1\nproperty list " +
          count_type + " int vertex_indices\nend_header\n";
 }
+// The body that fills that header.
 const char* kPlyTriangleBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 std::string binary_triangles(int n_tri, bool truncate) {

@@ -74,8 +74,20 @@ BENCHMARK_CAPTURE(BM_Sampler, sobol, "sobol");
 
 // A path tracer's access pattern (issue 15 defect 4): per pixel 64 samples; each takes the
 // camera's pixel, time and lens values, then per vertex d < 8 the light pick, light, lobe,
-// gloss and roulette values, reaching vertex d with probability 0.8^d (a hash decides, the
+// gloss and roulette values, reaching vertex d with probability 0.8^d (the hash h decides, the
 // same for every sampler). Items are values, so ns per value compare across samplers.
+void path_sample(const pdrt::PixelSampleState& ps, uint64_t h, double* acc, int64_t* values) {
+  *acc += ps.get_2d(pdrt::Family::Pixel)[0] + ps.get_1d(pdrt::Family::Time, 0) + ps.get_2d(pdrt::Family::Lens)[0];
+  *values += 3;
+  for (int d = 0; d < 8 && (d == 0 || ((h >> (8 * d)) & 255) < 205); ++d) {  // 205/256 = 0.8
+    *acc += ps.get_1d(pdrt::Family::Time, 1 + 3 * d) + ps.get_2d(pdrt::Family::Light, d)[0] +
+            ps.get_1d(pdrt::Family::Time, 2 + 3 * d) + ps.get_2d(pdrt::Family::Gloss, d)[1] +
+            ps.get_1d(pdrt::Family::Time, 3 + 3 * d);
+    *values += 5;
+  }
+}
+
+// One pixel's 64 samples in one pass.
 void BM_PathPattern(benchmark::State& state, const char* name) {
   auto s = pdrt::make_sampler(name, 1);
   pdrt::PixelSampleState ps(*s);
@@ -87,20 +99,44 @@ void BM_PathPattern(benchmark::State& state, const char* name) {
     ps.set_pixel_pass(0, 64);
     for (int64_t i = 0; i < 64; ++i) {
       ps.start_pixel_sample(px, py, i);
-      acc += ps.get_2d(pdrt::Family::Pixel)[0] + ps.get_1d(pdrt::Family::Time, 0) + ps.get_2d(pdrt::Family::Lens)[0];
-      values += 3;
-      const uint64_t h = pdrt::mix64(uint64_t(pixel) * 64 + uint64_t(i));
-      for (int d = 0; d < 8 && (d == 0 || ((h >> (8 * d)) & 255) < 205); ++d) {  // 205/256 = 0.8
-        acc += ps.get_1d(pdrt::Family::Time, 1 + 3 * d) + ps.get_2d(pdrt::Family::Light, d)[0] +
-               ps.get_1d(pdrt::Family::Time, 2 + 3 * d) + ps.get_2d(pdrt::Family::Gloss, d)[1] +
-               ps.get_1d(pdrt::Family::Time, 3 + 3 * d);
-        values += 5;
-      }
+      path_sample(ps, pdrt::mix64(uint64_t(pixel) * 64 + uint64_t(i)), &acc, &values);
     }
   }
   benchmark::DoNotOptimize(acc);
   state.SetItemsProcessed(values);
 }
+// The same paths in a progressive render's passes (renderer/render/progressive_passes.h): the
+// pixels of a 16 x 16 tile each take samples [0, 4), then [4, 8), [8, 16), [16, 32), [32, 64),
+// a pass over all of them at a time, so every pass meets every pixel's streams afresh.
+void BM_PathPatternPasses(benchmark::State& state, const char* name) {
+  auto s = pdrt::make_sampler(name, 1);
+  pdrt::PixelSampleState ps(*s);
+  int64_t tile = 0, values = 0;
+  double acc = 0;
+  for (auto _ : state) {
+    ++tile;
+    for (int64_t begin = 0, end = 4; begin < 64; begin = end, end *= 2)
+      for (int p = 0; p < 256; ++p) {
+        const int px = int(tile & 15) * 16 + (p & 15), py = int(tile >> 4 & 15) * 16 + (p >> 4);
+        ps.set_pixel_pass(begin, end);
+        for (int64_t i = begin; i < end; ++i) {
+          ps.start_pixel_sample(px, py, i);
+          path_sample(ps, pdrt::mix64((uint64_t(tile) << 8 | uint64_t(p)) * 64 + uint64_t(i)), &acc, &values);
+        }
+      }
+  }
+  benchmark::DoNotOptimize(acc);
+  state.SetItemsProcessed(values);
+}
+BENCHMARK_CAPTURE(BM_PathPatternPasses, random, "random");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, jitter, "jitter");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, poisson, "poisson");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, poisson_065, "poisson-065");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, sobol, "sobol");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, pmj02bn, "pmj02bn");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, zsobol, "zsobol");
+BENCHMARK_CAPTURE(BM_PathPatternPasses, regular, "regular");
+
 BENCHMARK_CAPTURE(BM_PathPattern, random, "random");
 BENCHMARK_CAPTURE(BM_PathPattern, jitter, "jitter");
 BENCHMARK_CAPTURE(BM_PathPattern, poisson, "poisson");

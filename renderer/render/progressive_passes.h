@@ -6,10 +6,10 @@
 // a power of two up to the last pass (the stratified samplers' prefixes are best there). Two
 // differences, both for cost: the first pass is 4, not 1, because camera rays go to Embree in
 // packets of the samples [4j, 4j + 4) (pixel_renderer.h) and a pass ending inside a packet
-// traces its camera rays twice; and the sizes are not capped at pbrt-v4's 64, because a pass
-// prepares a pixel's sample streams from index 0 to its end (PixelSampleState::set_pixel_pass):
-// doubling passes prepare at most twice the values one pass does, capped ones a number
-// quadratic in the spp.
+// traces its camera rays twice; and the sizes are not capped at pbrt-v4's 64, because every
+// pass of a pixel prepares each of its sample streams anew (PixelSampleState::set_pixel_pass), a
+// fixed cost per stream and pass that doubling passes pay log2(spp) times per pixel, capped ones
+// spp / 64 times.
 #include <cstdint>
 #include <functional>
 

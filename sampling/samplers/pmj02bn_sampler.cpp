@@ -54,21 +54,22 @@ class Pmj02bnSampler final : public Sampler {
     return get_2d(px, py, index, f, bounce)[0];
   }
 
-  // Round 0 of the stream: the sequence's points through the stream's index shuffle, copied
-  // (two coordinates as one 8-byte word); the swap and the shift stay in the map, so a value is
-  // the same double as get_2d's.
+  // Round 0 of the stream: the window's points of the sequence through the stream's index
+  // shuffle, copied (two coordinates as one 8-byte word); the swap and the shift stay in the
+  // map, so a value is the same double as get_2d's.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     const uint64_t h = round_hash(px, py, f, bounce, 0);
     map_stream(h, out);
     const uint32_t* seq = out->coords;
-    const uint32_t n = std::min(out->want, kLength);
+    const uint32_t n = std::min(out->want, kLength), first = std::min(out->first, n);
     thread_local std::vector<uint32_t> perm;
-    perm.resize(n);
-    IndexShuffle(h ^ kShuffleSalt).fill(n, perm.data());
-    out->own.resize(2 * std::size_t(n));
-    for (uint32_t i = 0; i < n; ++i)
+    perm.resize(n - first);
+    IndexShuffle(h ^ kShuffleSalt).fill(first, n, perm.data());
+    out->own.resize(2 * std::size_t(n - first));
+    for (uint32_t i = 0; i < n - first; ++i)
       std::memcpy(out->own.data() + 2 * std::size_t(i), seq + 2 * std::size_t(perm[i]), 8);
     out->coords = out->own.data();
+    out->base = first;
     out->count = n;
     out->grows = n < kLength;
   }

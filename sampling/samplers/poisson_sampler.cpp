@@ -117,23 +117,24 @@ class PoissonSampler final : public Sampler {
     if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
     map_stream(px, py, f, bounce, 0, out);
     if (!stratified() || !power_of_two(out->count)) return;
-    // poisson: the table's points read through the stream's index shuffle, stored per
-    // stream; the stream's map (symmetry and shift) stays as map_stream set it, so a value is
-    // the same double as get_2d's.
+    // poisson: the window's points of the table read through the stream's index shuffle,
+    // stored per stream; the stream's map (symmetry and shift) stays as map_stream set it, so
+    // a value is the same double as get_2d's.
     const uint32_t* table = out->coords;
-    const uint32_t n = std::min(out->want, out->count);
+    const uint32_t n = std::min(out->want, out->count), first = std::min(out->first, n), m = n - first;
     const int dim = family_dim(f);
     thread_local std::vector<uint32_t> perm;
-    perm.resize(n);
-    IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(n, perm.data());
-    out->own.resize(std::size_t(n) * dim);
+    perm.resize(m);
+    IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(first, n, perm.data());
+    out->own.resize(std::size_t(m) * dim);
     uint32_t* own = out->own.data();
     if (dim == 2) {
-      for (uint32_t i = 0; i < n; ++i) std::memcpy(own + 2 * std::size_t(i), table + 2 * std::size_t(perm[i]), 8);
+      for (uint32_t i = 0; i < m; ++i) std::memcpy(own + 2 * std::size_t(i), table + 2 * std::size_t(perm[i]), 8);
     } else {
-      for (uint32_t i = 0; i < n; ++i) own[i] = table[perm[i]];
+      for (uint32_t i = 0; i < m; ++i) own[i] = table[perm[i]];
     }
     out->coords = own;
+    out->base = first;
     out->grows = n < out->count;
     out->count = n;
   }

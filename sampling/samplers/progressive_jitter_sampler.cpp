@@ -116,15 +116,16 @@ class ProgressiveJitterSampler final : public Sampler {
   }
 
   // The sequence level by level up to the next power of two past `want` (every parent comes
-  // before its children), then read through the index shuffle.
+  // before its children), then the window [first, want) read through the index shuffle.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     const uint64_t s = stream(px, py, f, bounce);
     const Keys key(s);
     const uint32_t n = out->want;
     const uint32_t all = std::bit_ceil(n);  // the points' index range (0 and 1 give 1)
+    const uint32_t first = std::min(out->first, n);
     thread_local std::vector<uint32_t> x, y, perm;
-    perm.resize(n);
-    IndexShuffle(s).fill(n, perm.data());
+    perm.resize(n - first);
+    IndexShuffle(s).fill(first, n, perm.data());
     x.resize(all);
     x[0] = hash32(key.x);
     if (family_dim(f) == 2) {
@@ -133,11 +134,12 @@ class ProgressiveJitterSampler final : public Sampler {
       for (int k = 0; (uint32_t(1) << (2 * k)) < all; ++k)
         level_2d(k, uint32_t(std::min<uint64_t>(uint64_t(1) << (2 * k + 2), all)), key, x.data(), y.data(),
                  x.data() + (std::size_t(1) << (2 * k)), y.data() + (std::size_t(1) << (2 * k)));
-      fill_prepared(out, n, 2, [&](uint32_t i, uint32_t* v) { v[0] = x[perm[i]], v[1] = y[perm[i]]; });
+      fill_prepared(out, first, n, 2,
+                    [&](uint32_t i, uint32_t* v) { v[0] = x[perm[i - first]], v[1] = y[perm[i - first]]; });
     } else {
       for (int k = 0; (uint32_t(1) << k) < all; ++k)
         level_1d(k, std::min(uint32_t(2) << k, all), key, x.data(), x.data() + (std::size_t(1) << k));
-      fill_prepared(out, n, 1, [&](uint32_t i, uint32_t* v) { v[0] = x[perm[i]]; });
+      fill_prepared(out, first, n, 1, [&](uint32_t i, uint32_t* v) { v[0] = x[perm[i - first]]; });
     }
   }
   // A value asked alone walks its chain of parents; a prepared one is a copy: preparing

@@ -22,7 +22,7 @@ class RandomSampler final : public Sampler {
   }
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     const uint64_t s = stream(px, py, f, bounce);
-    fill_prepared(out, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
+    fill_prepared(out, out->first, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
       const uint64_t h = value_bits(s, i);
       v[0] = uint32_t(h >> 32);
       if (family_dim(f) == 2) v[1] = uint32_t(h);

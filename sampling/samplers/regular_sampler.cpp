@@ -51,7 +51,7 @@ class RegularSampler final : public Sampler {
         p[2 * i] = van_der_corput(i) + 0x80000000u, p[2 * i + 1] = sobol_second(i) + 0x80000000u;
       return p;
     }();
-    fill_prepared(out, kStored, 2, nullptr);
+    fill_prepared(out, 0, kStored, 2, nullptr);
     out->coords = points.data();
     out->grows = false;
   }

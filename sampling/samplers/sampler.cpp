@@ -114,9 +114,10 @@ inline uint32_t shuffle32(uint32_t low, int top, uint32_t seed) {
   return (uint32_t(1) << top) | (reverse_bits32(x) >> (32 - top));
 }
 
+// out[low - from] for from <= low < to.
 __attribute__((target_clones("avx2", "default"))) void shuffle_block(uint32_t from, uint32_t to, int top, uint32_t seed,
                                                                      uint32_t* out) {
-  for (uint32_t low = from; low < to; ++low) out[low] = shuffle32(low, top, seed);
+  for (uint32_t low = from; low < to; ++low) out[low - from] = shuffle32(low, top, seed);
 }
 
 }  // namespace
@@ -135,12 +136,14 @@ uint64_t IndexShuffle::operator()(uint64_t index) const {
   return (uint64_t(1) << top) | (reverse_bits64(x) >> (64 - top));
 }
 
-void IndexShuffle::fill(uint32_t n, uint32_t* out) const {
-  for (uint32_t i = 0; i < std::min<uint32_t>(n, 2); ++i) out[i] = i;
+void IndexShuffle::fill(uint32_t first, uint32_t n, uint32_t* out) const {
+  for (uint32_t i = first; i < std::min<uint32_t>(n, 2); ++i) out[i - first] = i;
   for (int top = 1; top < 32 && (uint32_t(1) << top) < n; ++top) {
-    const uint32_t base = uint32_t(1) << top, end = std::min<uint64_t>(uint64_t(base) * 2, n) - base;
-    // shuffle_block writes out[low] for the block's `low`s, i.e. out + base.
-    shuffle_block(0, end, top, uint32_t(mix64(key_ + uint64_t(top))), out + base);
+    // The block of indices [2^top, 2^(top+1)) that the window [first, n) overlaps.
+    const uint32_t base = uint32_t(1) << top, end = uint32_t(std::min<uint64_t>(uint64_t(base) * 2, n));
+    if (end <= first) continue;
+    const uint32_t from = std::max(first, base);
+    shuffle_block(from - base, end - base, top, uint32_t(mix64(key_ + uint64_t(top))), out + (from - first));
   }
 }
 

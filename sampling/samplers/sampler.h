@@ -49,8 +49,10 @@ class IndexShuffle {
  public:
   explicit IndexShuffle(uint64_t stream) : key_(stream ^ 0x9c8d7e6f5a4b3c2dull) {}
   uint64_t operator()(uint64_t index) const;
-  // out[i] = (*this)(i) for i < n, a power of two at a time in a loop that vectorises.
-  void fill(uint32_t n, uint32_t* out) const;
+  // out[i - first] = (*this)(i) for first <= i < n, a power of two at a time in a loop that
+  // vectorises.
+  void fill(uint32_t first, uint32_t n, uint32_t* out) const;
+  void fill(uint32_t n, uint32_t* out) const { fill(0, n, out); }
 
  private:
   uint64_t key_;
@@ -61,39 +63,50 @@ inline uint64_t shuffle_index(uint64_t index, uint64_t stream) { return IndexShu
 
 // What a sampler can precompute for one (pixel, family, bounce) stream, so that a value is
 // one table read and an affine map (pbrt-v4 does such per-pixel work in StartPixelSample).
-// Axis k of value i: off[k] + mul[k] * uint32((coords[(i << shift) + src[k]] ^ xr[k]) + add[k])
+// Axis k of value i (base <= i < count):
+// off[k] + mul[k] * uint32((coords[((i - base) << shift) + src[k]] ^ xr[k]) + add[k])
 // (the xor is a digital shift, which keeps elementary intervals; the unsigned add is a
 // toroidal shift in 32-bit fixed point), clamped to [0, 1).
 // The numeric fields are left uninitialised on purpose: PixelSampleState keeps 320 of them
 // per thread and fills one only when its stream is first used. `own` holds the coordinates
 // when the sampler has to assemble them per pixel (coords then points into it).
-struct PreparedStream {
+// What value() reads fills the first 64 bytes, one cache line (the struct is aligned to it):
+// between two sample values the path tracer's own work evicts much of L1.
+struct alignas(64) PreparedStream {
   const uint32_t* coords;  // null: nothing prepared, ask the sampler
-  uint32_t count;          // indices below count are stored
+  uint32_t base = 0;       // indices from base on are stored ...
   uint8_t shift;           // log2 of the values per point
   uint8_t src[2];
   uint32_t xr[2], add[2];
   double off[2], mul[2];
-  uint32_t want;  // input: values the caller needs now; a sampler may prepare fewer
-  bool grows;     // preparing again with a larger `want` gives more values
+  uint32_t count;  // ... below count (a sampler that computes values prepares a window)
+  // Input: the caller needs indices [first, want) now. A sampler may prepare fewer above
+  // (count < want) and more below (base < first): one that computes its values prepares the
+  // window [first, want) alone, since a progressive render's later passes and the deep
+  // bounces few paths reach would otherwise recompute or waste the indices below.
+  uint32_t first = 0, want;
+  bool grows;  // preparing again with a larger `want` gives more values
   std::vector<uint32_t> own;
 
   double value(int64_t index, int k) const {
-    const uint32_t c = (coords[(std::size_t(index) << shift) + src[k]] ^ xr[k]) + add[k];
+    const uint32_t c = (coords[(std::size_t(index - base) << shift) + src[k]] ^ xr[k]) + add[k];
     return clamp_to_unit(off[k] + mul[k] * double(c));
   }
 };
+static_assert(offsetof(PreparedStream, count) == 64, "value()'s fields fill one cache line");
 
-// A PreparedStream holding n computed values per axis (dim 1 or 2) in 32-bit fixed point:
-// value(i, k) = v_k(i) / 2^32, where value(i, v) writes v_0 (and v_1) of index i.
-// With `value` null, own already holds the n * dim values.
+// A PreparedStream holding the computed values of indices [first, n) per axis (dim 1 or 2) in
+// 32-bit fixed point: value(i, k) = v_k(i) / 2^32, where value(i, v) writes v_0 (and v_1) of
+// index i. With `value` null, own already holds the (n - first) * dim values.
 template <class ValueFn>
-void fill_prepared(PreparedStream* out, uint32_t n, int dim, ValueFn&& value) {
+void fill_prepared(PreparedStream* out, uint32_t first, uint32_t n, int dim, ValueFn&& value) {
+  first = std::min(first, n);
   if constexpr (!std::is_same_v<std::decay_t<ValueFn>, std::nullptr_t>) {
-    out->own.resize(std::size_t(n) * dim);
-    for (uint32_t i = 0; i < n; ++i) value(i, out->own.data() + std::size_t(i) * dim);
+    out->own.resize(std::size_t(n - first) * dim);
+    for (uint32_t i = first; i < n; ++i) value(i, out->own.data() + std::size_t(i - first) * dim);
   }
   out->coords = out->own.data();
+  out->base = first;
   out->count = n;
   out->shift = dim == 2 ? 1 : 0;
   out->grows = true;
@@ -115,9 +128,10 @@ class Sampler {
   virtual Vec2 get_2d(int px, int py, int64_t index, Family family, int bounce) const = 0;
 
   // Fills `out` so that out->value(i, k) equals get_2d(px, py, i, family, bounce)[k] (or
-  // get_1d for k = 0) bit for bit for every i < out->count, at least the first out->want of
-  // them when `grows` is set; sets out->coords = nullptr when the sampler has no such form
-  // (the default). Every built-in sampler has one: a value then costs a table read.
+  // get_1d for k = 0) bit for bit for every i in [out->base, out->count), with base <=
+  // out->first and, when `grows` is set, count >= out->want; sets out->coords = nullptr when
+  // the sampler has no such form (the default). Every built-in sampler has one: a value then
+  // costs a table read. The caller sets base = 0 before the call.
   virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
   // True: preparing costs about what the values asked one by one would, so PixelSampleState
   // prepares only the streams most samples use and asks for deep ones value by value; false
@@ -147,9 +161,9 @@ class Sampler {
 };
 
 // The sampler state of the pixel sample being traced (pbrt-v4's StartPixelSample + Get1D/
-// Get2D on top of the pure functions): one per thread, reused across pixels. The streams of the current pixel are
-// prepared once, on first use, so the values of a pixel's later samples cost a table read (values are identical to the
-// Sampler's).
+// Get2D on top of the pure functions): one per thread, reused across pixels. A stream of the
+// current pixel is prepared on first use for the rest of the pass, so the values of the pass's
+// later samples cost a table read (values are identical to the Sampler's).
 class PixelSampleState {
  public:
   explicit PixelSampleState(const Sampler& s) : s_(&s) {}
@@ -157,13 +171,14 @@ class PixelSampleState {
   void start_pixel_sample(int px, int py, int64_t index) {
     if (px != px_ || py != py_) {
       px_ = px, py_ = py, ++epoch_;
-      for (uint32_t i = 0; i < touched_; ++i) ready_[touched_slot_[i]] = 0;
+      for (uint32_t i = 0; i < touched_; ++i) held_[touched_slot_[i]].span = 0;
       touched_ = 0;
     }
     index_ = index;
   }
-  // The current pass takes indices [begin, end) of the pixel's streams: a stream that most of
-  // its samples use is prepared for `end` values at once (without a pass: 16, doubling).
+  // The current pass takes indices [begin, end) of the pixel's streams: a stream that enough
+  // of its samples use is prepared from the index that first asks to `end` at once (without a
+  // pass: 16 values, doubling).
   void set_pixel_pass(int64_t begin, int64_t end) {
     begin_ = std::max<int64_t>(0, begin);
     budget_ = uint32_t(std::clamp<int64_t>(end, 1, kMaxBudget));
@@ -171,18 +186,18 @@ class PixelSampleState {
   double get_1d(Family f, int bounce = 0) const {
     SamplerScope scope;
     const int k = int(f) * kSlots + bounce;
-    if (unsigned(bounce) < unsigned(kSlots) && uint64_t(index_) < ready_[k]) return slot_[k].value(index_, 0);
+    if (unsigned(bounce) < unsigned(kSlots) && held_[k].holds(index_)) return slot_[k].value(index_, 0);
     const PreparedStream* p = prepared(f, bounce);
-    if (p && uint64_t(index_) < p->count) return p->value(index_, 0);
+    if (p) return p->value(index_, 0);
     return s_->get_1d(px_, py_, index_, f, bounce);
   }
   Vec2 get_2d(Family f, int bounce = 0) const {
     SamplerScope scope;
     const int k = int(f) * kSlots + bounce;
-    if (unsigned(bounce) < unsigned(kSlots) && uint64_t(index_) < ready_[k])
+    if (unsigned(bounce) < unsigned(kSlots) && held_[k].holds(index_))
       return {slot_[k].value(index_, 0), slot_[k].value(index_, 1)};
     const PreparedStream* p = prepared(f, bounce);
-    if (p && uint64_t(index_) < p->count) return {p->value(index_, 0), p->value(index_, 1)};
+    if (p) return {p->value(index_, 0), p->value(index_, 1)};
     return s_->get_2d(px_, py_, index_, f, bounce);
   }
 
@@ -199,29 +214,35 @@ class PixelSampleState {
 
  private:
   static constexpr int kSlots = kCachedSalts;
+  // The stream's prepared values when they hold the current index (preparing them if worth
+  // it), else null: the caller asks the sampler for the value alone.
   const PreparedStream* prepared(Family f, int bounce) const {
-    if (unsigned(bounce) >= unsigned(kSlots)) return nullptr;
+    if (unsigned(bounce) >= unsigned(kSlots) || index_ < 0 || index_ >= INT32_MAX) return nullptr;
     const int k = int(f) * kSlots + bounce;
     PreparedStream& p = slot_[k];
     if (epoch_of_[k] != epoch_) epoch_of_[k] = epoch_, uses_[k] = 0, p.coords = nullptr;
     if (uses_[k] == kDeclined) return nullptr;
     ++uses_[k];
-    if (!p.coords) {
+    const auto holds = [&] { return p.coords && uint64_t(index_) >= p.base && uint64_t(index_) < p.count; };
+    if (!holds()) {
+      if (p.coords && !p.grows) return nullptr;  // all the sampler stores; past it, values alone
       // A sampler that computes the values it prepares gains only on a stream that at least
       // half of the pass's samples so far have used (the camera's and the first bounces'); the
-      // deep bounces that few paths reach are asked value by value.
+      // deep bounces that few paths reach are asked value by value. The others prepare the
+      // window from this index to the pass's end.
       if (s_->prepare_computes(f) && 2 * int64_t(uses_[k]) < index_ - begin_ + 1) return nullptr;
-      p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(budget_, index_ + 1), INT32_MAX));
+      int64_t end = std::max<int64_t>(budget_, index_ + 1);
+      if (p.coords && index_ >= budget_) end = index_ + 2 * int64_t(p.want - p.first);  // no pass: doubling
+      p.first = uint32_t(index_), p.want = uint32_t(std::min<int64_t>(end, INT32_MAX)), p.base = 0;
       s_->prepare(px_, py_, f, bounce, &p);
-      if (!p.coords) uses_[k] = kDeclined;
-    } else if (p.grows && uint64_t(index_) >= p.count) {
-      // Doubling keeps the total preparation work linear in the samples used.
-      p.want = uint32_t(std::min<int64_t>(std::max<int64_t>(2 * int64_t(p.want), index_ + 1), INT32_MAX));
-      s_->prepare(px_, py_, f, bounce, &p);
+      if (!p.coords && uses_[k] == 1) uses_[k] = kDeclined;
+      if (!holds()) {
+        held_[k] = {0, 0};
+        return nullptr;
+      }
     }
-    if (!p.coords) return nullptr;
-    if (ready_[k] == 0 && p.count > 0) touched_slot_[touched_++] = uint16_t(k);
-    ready_[k] = p.count;  // later calls of this pixel below it take the fast path in get_1d / get_2d
+    if (listed_[k] != epoch_) listed_[k] = epoch_, touched_slot_[touched_++] = uint16_t(k);
+    held_[k] = {p.base, p.count - p.base};  // the pixel's later calls in it take the fast path
     return &p;
   }
   static constexpr uint32_t kDeclined = UINT32_MAX;        // the sampler has no prepared form
@@ -233,10 +254,16 @@ class PixelSampleState {
   int64_t index_ = 0;
   uint32_t epoch_ = 1;  // differs from the slots' initial 0 even before the first pixel
   mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{}, uses_{};
-  // The slots prepared for this pixel: values below ready_[k] are stored (0: ask prepared()),
-  // in one small array so that the common call reads one word before its value; touched_slot_
-  // lists the nonzero ones, cleared when the pixel changes.
-  mutable std::array<uint32_t, kFamilyCount * kSlots> ready_{};
+  // The slots prepared for this pixel: values of indices in [lo, lo + span) are stored (span
+  // 0: ask prepared()), in one small array so that the common call reads one 8-byte word
+  // before its value; touched_slot_ lists the nonzero spans, cleared when the pixel changes
+  // (listed_: the epoch in which a slot was listed, so it is listed once).
+  struct Held {
+    uint32_t lo, span;
+    bool holds(int64_t i) const { return uint64_t(i) - lo < span; }
+  };
+  mutable std::array<Held, kFamilyCount * kSlots> held_{};
+  mutable std::array<uint32_t, kFamilyCount * kSlots> listed_{};
   mutable std::array<uint16_t, kFamilyCount * kSlots> touched_slot_{};
   mutable uint32_t touched_ = 0;
   mutable PreparedStream slot_[kFamilyCount * kSlots];

@@ -180,7 +180,7 @@ class ScreenPoissonSampler final : public Sampler {
     return {unit_from_u32(v[0]), unit_from_u32(v[1])};
   }
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
-    fill_prepared(out, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
+    fill_prepared(out, out->first, out->want, family_dim(f), [&](uint32_t i, uint32_t* v) {
       const auto c = fixed(px, py, i, f, bounce);
       for (int k = 0; k < family_dim(f); ++k) v[k] = c[std::size_t(k)];
     });

@@ -8,7 +8,7 @@
 #include "sampling/samplers/owen_sobol.h"
 #include "sampling/samplers/sampler.h"
 
-#include <bit>
+#include <algorithm>
 
 namespace pdrt {
 namespace {
@@ -26,29 +26,25 @@ class SobolSampler final : public Sampler {
     const uint32_t j = uint32_t(IndexShuffle(s)(uint64_t(index)));
     return {unit_from_u32(sobol_0(j, s)), unit_from_u32(sobol_1(j, mix64(s)))};
   }
+  // The window [first, want) alone: the index shuffle, the second dimension from its byte
+  // tables and the two scrambles, each in a loop over the window that vectorises.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     const uint64_t s = stream(px, py, f, bounce);
-    const uint32_t n = out->want;
-    thread_local std::vector<uint32_t> perm;
+    const uint32_t first = std::min(out->first, out->want), n = out->want - first;
+    thread_local std::vector<uint32_t> perm, axis;
     perm.resize(n);
-    IndexShuffle(s).fill(n, perm.data());
+    IndexShuffle(s).fill(first, out->want, perm.data());
     out->own.resize(std::size_t(n) * family_dim(f));
     if (family_dim(f) == 1) {
       owen_scramble_all(n, perm.data(), s, out->own.data());
     } else {
-      // The second dimension in index order, each from an earlier one: d1(j) = d1(j - lowbit) ^ v_lowbit.
-      thread_local std::vector<uint32_t> d1, axis;
-      const uint32_t all = std::bit_ceil(n);  // the points' index range (0 and 1 give 1)
-      d1.resize(all);
-      d1[0] = 0;
-      for (uint32_t j = 1; j < all; ++j) d1[j] = d1[j & (j - 1)] ^ sobol_dim1_reversed(j & (0u - j));
       axis.resize(2 * std::size_t(n));
       owen_scramble_all(n, perm.data(), s, axis.data());
-      for (uint32_t i = 0; i < n; ++i) perm[i] = d1[perm[i]];
+      for (uint32_t i = 0; i < n; ++i) perm[i] = sobol_dim1_reversed(perm[i]);
       owen_scramble_all(n, perm.data(), mix64(s), axis.data() + n);
       for (uint32_t i = 0; i < n; ++i) out->own[2 * i] = axis[i], out->own[2 * i + 1] = axis[n + i];
     }
-    fill_prepared(out, n, family_dim(f), nullptr);
+    fill_prepared(out, first, out->want, family_dim(f), nullptr);
   }
   int64_t samples_available(int, int) const override { return int64_t(1) << 32; }
   // A value asked alone walks its index shuffle and two scrambles; a prepared one is a copy: preparing

@@ -135,32 +135,36 @@ class ZSobolSampler final : public Sampler {
   // sobol_index's values, each block's indices in order through a DigitCache (the pixel's
   // digits hashed once per block, the sample's once per distinct prefix), then each block's
   // scramble in a loop that vectorises.
+  // The window [first, want) alone (a progressive render's later passes), block by block.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     const int bits = 2 * k_ + m_, dim = family_dim(f);
-    const uint32_t mask = k_ == 0 ? 0u : (uint32_t(1) << k_) - 1, n = out->want;
+    const uint32_t mask = k_ == 0 ? 0u : (uint32_t(1) << k_) - 1, end = out->want;
+    const uint32_t first = std::min(out->first, end), n = end - first;
     const uint32_t pixel = bits == 0 ? 0 : uint32_t(uint64_t(morton2(uint32_t(px) & mask, uint32_t(py) & mask)) << m_);
     const uint64_t block_size = uint64_t(1) << m_, stream0 = sample_stream_from_hash(seed_hash_, 0, 0, f, bounce);
     thread_local std::vector<uint32_t> index, axis;
     index.resize(std::size_t(n) * dim), axis.resize(std::size_t(n) * dim);
     uint32_t* d1 = index.data() + n;  // the second dimension's unscrambled values
     DigitCache digits(bits);
-    for (uint64_t b0 = 0; b0 < n; b0 += block_size) {
-      const uint32_t count = uint32_t(std::min<uint64_t>(block_size, n - b0));
+    for (uint64_t b0 = first & ~(block_size - 1); b0 < end; b0 += block_size) {
+      // Indices [lo, hi) of the block starting at b0, stored from at = lo - first on.
+      const uint64_t lo = std::max<uint64_t>(b0, first), hi = std::min<uint64_t>(b0 + block_size, end);
+      const uint32_t count = uint32_t(hi - lo), at = uint32_t(lo - first);
       const uint64_t key = block_key(stream0, b0 >> m_);
       digits.reset(key);
-      for (uint32_t i = 0; i < count; ++i) index[b0 + i] = digits(pixel | i);
-      owen_scramble_all(count, index.data() + b0, key, axis.data() + b0);
+      for (uint32_t i = 0; i < count; ++i) index[at + i] = digits(pixel | uint32_t(lo - b0 + i));
+      owen_scramble_all(count, index.data() + at, key, axis.data() + at);
       if (dim == 1) continue;
       // The second dimension is linear over GF(2) in the index bits: the pixel's part (the same
       // through a block) once, the sample's m bits per value.
-      const uint32_t high = sobol_dim1_reversed(uint32_t(index[b0] & ~(block_size - 1)));
+      const uint32_t high = sobol_dim1_reversed(uint32_t(index[at] & ~(block_size - 1)));
       for (uint32_t i = 0; i < count; ++i)
-        d1[b0 + i] = high ^ sobol_dim1_reversed(uint32_t(index[b0 + i] & (block_size - 1)));
-      owen_scramble_all(count, d1 + b0, mix64(key), axis.data() + n + b0);
+        d1[at + i] = high ^ sobol_dim1_reversed(uint32_t(index[at + i] & (block_size - 1)));
+      owen_scramble_all(count, d1 + at, mix64(key), axis.data() + n + at);
     }
-    fill_prepared(out, n, dim, [&](uint32_t i, uint32_t* v) {
-      v[0] = axis[i];
-      if (dim == 2) v[1] = axis[n + i];
+    fill_prepared(out, first, end, dim, [&](uint32_t i, uint32_t* v) {
+      v[0] = axis[i - first];
+      if (dim == 2) v[1] = axis[n + i - first];
     });
   }
 

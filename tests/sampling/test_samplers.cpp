@@ -97,6 +97,39 @@ TEST_P(EverySampler, PixelSampleStateInPassesMatchesTheSamplerBitForBit) {
   EXPECT_GT(compared, 2000);
 }
 
+// prepare() for a window [first, want) of a stream (a later pass of a progressive render):
+// what it stores starts at or below `first`, reaches `want` when the stream grows, and equals
+// the pure functions bit for bit, for windows inside one power-of-two block, across blocks and
+// past the tables' 1024 and 2048 points.
+TEST_P(EverySampler, PreparedWindowMatchesTheSamplerBitForBit) {
+  const uint32_t windows[][2] = {{0, 4}, {4, 8}, {37, 100}, {64, 128}, {1000, 1100}, {1500, 3000}};
+  int64_t compared = 0;
+  for (const auto& w : windows)
+    for (int f = 0; f < kFamilyCount; ++f)
+      for (int bounce : {0, 3}) {
+        const Family fam = Family(f);
+        PreparedStream p;
+        p.first = w[0], p.want = w[1];
+        s->prepare(-3, 11, fam, bounce, &p);
+        if (!p.coords) continue;  // past what the sampler stores: values alone
+        ASSERT_LE(p.base, w[0]) << family_name(fam) << " " << w[0];
+        if (p.grows) {
+          ASSERT_GE(p.count, w[1]) << family_name(fam) << " " << w[0];
+        }
+        for (uint32_t i = p.base; i < p.count; ++i) {
+          if (family_dim(fam) == 1) {
+            ASSERT_EQ(p.value(i, 0), s->get_1d(-3, 11, i, fam, bounce)) << family_name(fam) << " " << i;
+          } else {
+            const Vec2 v = s->get_2d(-3, 11, i, fam, bounce);
+            ASSERT_EQ(p.value(i, 0), v[0]) << family_name(fam) << " " << i;
+            ASSERT_EQ(p.value(i, 1), v[1]) << family_name(fam) << " " << i;
+          }
+          ++compared;
+        }
+      }
+  EXPECT_GT(compared, 6 * 2 * 4 * 4);  // every window of at least the 2-D families
+}
+
 TEST_P(EverySampler, BouncesAndSeedsDrawDifferentValues) {
   auto other_seed = make_sampler(GetParam(), 43);
   int same_bounce = 0, same_seed = 0;
@@ -163,6 +196,14 @@ TEST(IndexShuffle, PermutesEveryPowerOfTwoBlockAndFillMatches) {
       ASSERT_FALSE(seen[j]) << i;
       seen[j] = true;
     }
+  }
+  // A window [first, n) equals the same indices of the whole fill.
+  const IndexShuffle shuffle(7);
+  std::vector<uint32_t> whole(3000), window(3000);
+  shuffle.fill(3000, whole.data());
+  for (uint32_t first : {0u, 1u, 2u, 3u, 37u, 64u, 1500u, 2999u}) {
+    shuffle.fill(first, 3000, window.data());
+    for (uint32_t i = first; i < 3000; ++i) ASSERT_EQ(window[i - first], whole[i]) << first << " " << i;
   }
   int same = 0;
   for (uint64_t i = 2; i < 1024; ++i) same += IndexShuffle(1)(i) == IndexShuffle(2)(i);

@@ -108,12 +108,16 @@ TEST(ZSobolSampler, MeanOverSeedsIsUniform) {
 }
 
 // Over several blocks, with an odd and an even count of index bits (3 + 10, 4 + 10) and a
-// pixel outside the image (it wraps).
+// pixel outside the image (it wraps); and windows that start inside a block (a later pass).
 TEST(ZSobolSampler, PreparedStreamMatchesValueByValue) {
   for (int spp : {8, 16}) {
     auto s = make_zsobol_sampler(21, {spp, 20, 12});
     for (Family f : {Family::Pixel, Family::Time})
-      for (int px : {7, 45}) EXPECT_EQ(test::prepared_mismatches(*s, px, 3, f, 1, 70), 0) << spp << " " << px;
+      for (int px : {7, 45}) {
+        EXPECT_EQ(test::prepared_mismatches(*s, px, 3, f, 1, 70), 0) << spp << " " << px;
+        for (uint32_t first : {4u, 13u, 16u, 69u})
+          EXPECT_EQ(test::prepared_mismatches(*s, px, 3, f, 1, 70, first), 0) << spp << " " << px << " " << first;
+      }
   }
 }
 

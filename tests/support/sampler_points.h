@@ -22,15 +22,16 @@ inline PointSet stream_points(const Sampler& s, const std::vector<std::array<int
   return ps;
 }
 
-// Values i < n of a (pixel, family, bounce) stream whose prepared form (Sampler::prepare with
-// want = n) differs from get_1d / get_2d, bit for bit; -1 when nothing was prepared.
-inline int prepared_mismatches(const Sampler& s, int px, int py, Family f, int bounce, uint32_t n) {
+// Values first <= i < n of a (pixel, family, bounce) stream whose prepared form
+// (Sampler::prepare of the window [first, n)) differs from get_1d / get_2d, bit for bit; -1
+// when nothing was prepared or the window was not.
+inline int prepared_mismatches(const Sampler& s, int px, int py, Family f, int bounce, uint32_t n, uint32_t first = 0) {
   PreparedStream p;
-  p.want = n;
+  p.first = first, p.want = n;
   s.prepare(px, py, f, bounce, &p);
-  if (!p.coords || p.count < n) return -1;
+  if (!p.coords || p.count < n || p.base > first) return -1;
   int bad = 0;
-  for (uint32_t i = 0; i < n; ++i) {
+  for (uint32_t i = first; i < n; ++i) {
     if (family_dim(f) == 1) {
       bad += p.value(i, 0) != s.get_1d(px, py, i, f, bounce);
     } else {

@@ -76,15 +76,21 @@ BENCHMARK_CAPTURE(BM_Sampler, sobol, "sobol");
 // camera's pixel, time and lens values, then per vertex d < 8 the light pick, light, lobe,
 // gloss and roulette values, reaching vertex d with probability 0.8^d (the hash h decides, the
 // same for every sampler). Items are values, so ns per value compare across samplers.
-void path_sample(const pdrt::PixelSampleState& ps, uint64_t h, double* acc, int64_t* values) {
-  *acc += ps.get_2d(pdrt::Family::Pixel)[0] + ps.get_1d(pdrt::Family::Time, 0) + ps.get_2d(pdrt::Family::Lens)[0];
-  *values += 3;
+// Sample h's values: their sum (so that none is optimised away) and their count.
+struct PathValues {
+  double sum;
+  int count;
+};
+inline PathValues path_sample(const pdrt::PixelSampleState& ps, uint64_t h) {
+  double sum = ps.get_2d(pdrt::Family::Pixel)[0] + ps.get_1d(pdrt::Family::Time, 0) + ps.get_2d(pdrt::Family::Lens)[0];
+  int count = 3;
   for (int d = 0; d < 8 && (d == 0 || ((h >> (8 * d)) & 255) < 205); ++d) {  // 205/256 = 0.8
-    *acc += ps.get_1d(pdrt::Family::Time, 1 + 3 * d) + ps.get_2d(pdrt::Family::Light, d)[0] +
-            ps.get_1d(pdrt::Family::Time, 2 + 3 * d) + ps.get_2d(pdrt::Family::Gloss, d)[1] +
-            ps.get_1d(pdrt::Family::Time, 3 + 3 * d);
-    *values += 5;
+    sum += ps.get_1d(pdrt::Family::Time, 1 + 3 * d) + ps.get_2d(pdrt::Family::Light, d)[0] +
+           ps.get_1d(pdrt::Family::Time, 2 + 3 * d) + ps.get_2d(pdrt::Family::Gloss, d)[1] +
+           ps.get_1d(pdrt::Family::Time, 3 + 3 * d);
+    count += 5;
   }
+  return {sum, count};
 }
 
 // One pixel's 64 samples in one pass.
@@ -99,7 +105,8 @@ void BM_PathPattern(benchmark::State& state, const char* name) {
     ps.set_pixel_pass(0, 64);
     for (int64_t i = 0; i < 64; ++i) {
       ps.start_pixel_sample(px, py, i);
-      path_sample(ps, pdrt::mix64(uint64_t(pixel) * 64 + uint64_t(i)), &acc, &values);
+      const PathValues v = path_sample(ps, pdrt::mix64(uint64_t(pixel) * 64 + uint64_t(i)));
+      acc += v.sum, values += v.count;
     }
   }
   benchmark::DoNotOptimize(acc);
@@ -121,7 +128,8 @@ void BM_PathPatternPasses(benchmark::State& state, const char* name) {
         ps.set_pixel_pass(begin, end);
         for (int64_t i = begin; i < end; ++i) {
           ps.start_pixel_sample(px, py, i);
-          path_sample(ps, pdrt::mix64((uint64_t(tile) << 8 | uint64_t(p)) * 64 + uint64_t(i)), &acc, &values);
+          const PathValues v = path_sample(ps, pdrt::mix64((uint64_t(tile) << 8 | uint64_t(p)) * 64 + uint64_t(i)));
+          acc += v.sum, values += v.count;
         }
       }
   }

@@ -88,8 +88,10 @@ struct alignas(64) PreparedStream {
   bool grows;  // preparing again with a larger `want` gives more values
   std::vector<uint32_t> own;
 
-  double value(int64_t index, int k) const {
-    const uint32_t c = (coords[(std::size_t(index - base) << shift) + src[k]] ^ xr[k]) + add[k];
+  double value(int64_t index, int k) const { return stored(std::size_t(index - base), k); }
+  // Axis k of the r-th stored value, i.e. of index base + r.
+  double stored(std::size_t r, int k) const {
+    const uint32_t c = (coords[(r << shift) + src[k]] ^ xr[k]) + add[k];
     return clamp_to_unit(off[k] + mul[k] * double(c));
   }
 };
@@ -186,7 +188,10 @@ class PixelSampleState {
   double get_1d(Family f, int bounce = 0) const {
     SamplerScope scope;
     const int k = int(f) * kSlots + bounce;
-    if (unsigned(bounce) < unsigned(kSlots) && held_[k].holds(index_)) return slot_[k].value(index_, 0);
+    if (unsigned(bounce) < unsigned(kSlots)) {
+      const uint64_t r = uint64_t(index_) - held_[k].lo;  // the stored value's rank
+      if (r < held_[k].span) return slot_[k].stored(r, 0);
+    }
     const PreparedStream* p = prepared(f, bounce);
     if (p) return p->value(index_, 0);
     return s_->get_1d(px_, py_, index_, f, bounce);
@@ -194,8 +199,10 @@ class PixelSampleState {
   Vec2 get_2d(Family f, int bounce = 0) const {
     SamplerScope scope;
     const int k = int(f) * kSlots + bounce;
-    if (unsigned(bounce) < unsigned(kSlots) && held_[k].holds(index_))
-      return {slot_[k].value(index_, 0), slot_[k].value(index_, 1)};
+    if (unsigned(bounce) < unsigned(kSlots)) {
+      const uint64_t r = uint64_t(index_) - held_[k].lo;
+      if (r < held_[k].span) return {slot_[k].stored(r, 0), slot_[k].stored(r, 1)};
+    }
     const PreparedStream* p = prepared(f, bounce);
     if (p) return {p->value(index_, 0), p->value(index_, 1)};
     return s_->get_2d(px_, py_, index_, f, bounce);
@@ -260,7 +267,6 @@ class PixelSampleState {
   // (listed_: the epoch in which a slot was listed, so it is listed once).
   struct Held {
     uint32_t lo, span;
-    bool holds(int64_t i) const { return uint64_t(i) - lo < span; }
   };
   mutable std::array<Held, kFamilyCount * kSlots> held_{};
   mutable std::array<uint32_t, kFamilyCount * kSlots> listed_{};

@@ -44,6 +44,7 @@ class ImagePlaneSampler final : public Sampler {
     // The pixel's offsets are stored in order: the prepared stream reads them in place.
     const uint32_t c = cell(px, py);
     out->coords = offset_.data() + 2 * std::size_t(start_[c]);
+    out->base = 0;
     out->count = start_[c + 1] - start_[c];
     out->shift = 1;
     out->grows = false;

@@ -88,6 +88,7 @@ class Pmj02bnSampler final : public Sampler {
   // The stream's sequence, axis swap and digital shift (a 1-D stream reads one axis).
   static void map_stream(uint64_t h, PreparedStream* out) {
     out->coords = sequence(uint32_t(((h >> 32) * kSequences) >> 32));
+    out->base = 0;
     out->count = kLength;
     out->shift = 1;
     out->grows = false;

@@ -181,6 +181,7 @@ class PoissonSampler final : public Sampler {
     const unsigned sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
     const uint64_t s = opt_.shift ? mix64(h ^ kShiftSalt) : 0;
     out->coords = pooled ? pool_[table] : t.coords[table].data();
+    out->base = 0;
     out->count = t.params.points;
     out->shift = t.dim == 2 ? 1 : 0;
     out->grows = false;

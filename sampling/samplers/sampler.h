@@ -52,7 +52,6 @@ class IndexShuffle {
   // out[i - first] = (*this)(i) for first <= i < n, a power of two at a time in a loop that
   // vectorises.
   void fill(uint32_t first, uint32_t n, uint32_t* out) const;
-  void fill(uint32_t n, uint32_t* out) const { fill(0, n, out); }
 
  private:
   uint64_t key_;
@@ -133,7 +132,7 @@ class Sampler {
   // get_1d for k = 0) bit for bit for every i in [out->base, out->count), with base <=
   // out->first and, when `grows` is set, count >= out->want; sets out->coords = nullptr when
   // the sampler has no such form (the default). Every built-in sampler has one: a value then
-  // costs a table read. The caller sets base = 0 before the call.
+  // costs a table read.
   virtual void prepare(int px, int py, Family family, int bounce, PreparedStream* out) const;
   // True: preparing costs about what the values asked one by one would, so PixelSampleState
   // prepares only the streams most samples use and asks for deep ones value by value; false
@@ -240,7 +239,7 @@ class PixelSampleState {
       if (s_->prepare_computes(f) && 2 * int64_t(uses_[k]) < index_ - begin_ + 1) return nullptr;
       int64_t end = std::max<int64_t>(budget_, index_ + 1);
       if (p.coords && index_ >= budget_) end = index_ + 2 * int64_t(p.want - p.first);  // no pass: doubling
-      p.first = uint32_t(index_), p.want = uint32_t(std::min<int64_t>(end, INT32_MAX)), p.base = 0;
+      p.first = uint32_t(index_), p.want = uint32_t(std::min<int64_t>(end, INT32_MAX));
       s_->prepare(px_, py_, f, bounce, &p);
       if (!p.coords && uses_[k] == 1) uses_[k] = kDeclined;
       if (!holds()) {

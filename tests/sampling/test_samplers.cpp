@@ -181,7 +181,7 @@ TEST(IndexShuffle, PermutesEveryPowerOfTwoBlockAndFillMatches) {
     const IndexShuffle shuffle(stream);
     const uint32_t n = 5000;
     std::vector<uint32_t> bulk(n);
-    shuffle.fill(n, bulk.data());
+    shuffle.fill(0, n, bulk.data());
     std::vector<bool> seen(8192, false);
     for (uint32_t i = 0; i < 8192; ++i) {
       const uint64_t j = shuffle(i);
@@ -200,7 +200,7 @@ TEST(IndexShuffle, PermutesEveryPowerOfTwoBlockAndFillMatches) {
   // A window [first, n) equals the same indices of the whole fill.
   const IndexShuffle shuffle(7);
   std::vector<uint32_t> whole(3000), window(3000);
-  shuffle.fill(3000, whole.data());
+  shuffle.fill(0, 3000, whole.data());
   for (uint32_t first : {0u, 1u, 2u, 3u, 37u, 64u, 1500u, 2999u}) {
     shuffle.fill(first, 3000, window.data());
     for (uint32_t i = first; i < 3000; ++i) ASSERT_EQ(window[i - first], whole[i]) << first << " " << i;

@@ -113,16 +113,17 @@ void BM_PathPattern(benchmark::State& state, const char* name) {
   state.SetItemsProcessed(values);
 }
 // The same paths in a progressive render's passes (renderer/render/progressive_passes.h): the
-// pixels of a 16 x 16 tile each take samples [0, 4), then [4, 8), [8, 16), [16, 32), [32, 64),
-// a pass over all of them at a time, so every pass meets every pixel's streams afresh.
-void BM_PathPatternPasses(benchmark::State& state, const char* name) {
+// pixels of a 16 x 16 tile each take samples [0, 4), then [4, 8), [8, 16), ... up to spp (one
+// pass [0, spp) below 4), a pass over all of them at a time, so every pass meets every pixel's
+// streams afresh.
+void tile_in_passes(benchmark::State& state, const char* name, int64_t spp) {
   auto s = pdrt::make_sampler(name, 1);
   pdrt::PixelSampleState ps(*s);
   int64_t tile = 0, values = 0;
   double acc = 0;
   for (auto _ : state) {
     ++tile;
-    for (int64_t begin = 0, end = 4; begin < 64; begin = end, end *= 2)
+    for (int64_t begin = 0, end = std::min<int64_t>(4, spp); begin < spp; begin = end, end = std::min(2 * end, spp))
       for (int p = 0; p < 256; ++p) {
         const int px = int(tile & 15) * 16 + (p & 15), py = int(tile >> 4 & 15) * 16 + (p >> 4);
         ps.set_pixel_pass(begin, end);
@@ -136,6 +137,8 @@ void BM_PathPatternPasses(benchmark::State& state, const char* name) {
   benchmark::DoNotOptimize(acc);
   state.SetItemsProcessed(values);
 }
+// 64 spp.
+void BM_PathPatternPasses(benchmark::State& state, const char* name) { tile_in_passes(state, name, 64); }
 BENCHMARK_CAPTURE(BM_PathPatternPasses, random, "random");
 BENCHMARK_CAPTURE(BM_PathPatternPasses, jitter, "jitter");
 BENCHMARK_CAPTURE(BM_PathPatternPasses, poisson, "poisson");
@@ -144,6 +147,22 @@ BENCHMARK_CAPTURE(BM_PathPatternPasses, sobol, "sobol");
 BENCHMARK_CAPTURE(BM_PathPatternPasses, pmj02bn, "pmj02bn");
 BENCHMARK_CAPTURE(BM_PathPatternPasses, zsobol, "zsobol");
 BENCHMARK_CAPTURE(BM_PathPatternPasses, regular, "regular");
+
+// The sample counts of compare's sweeps (1, 4 and 16 spp): each pass prepares a pixel's streams
+// for a few values, so the per-stream cost of preparing weighs on every value.
+void BM_PathPatternFewSamples(benchmark::State& state, const char* name) {
+  tile_in_passes(state, name, state.range(0));
+}
+#define PDRT_FEW(id, name) BENCHMARK_CAPTURE(BM_PathPatternFewSamples, id, name)->Arg(1)->Arg(4)->Arg(16)
+PDRT_FEW(random, "random");
+PDRT_FEW(jitter, "jitter");
+PDRT_FEW(poisson, "poisson");
+PDRT_FEW(poisson_065, "poisson-065");
+PDRT_FEW(sobol, "sobol");
+PDRT_FEW(pmj02bn, "pmj02bn");
+PDRT_FEW(zsobol, "zsobol");
+PDRT_FEW(regular, "regular");
+#undef PDRT_FEW
 
 BENCHMARK_CAPTURE(BM_PathPattern, random, "random");
 BENCHMARK_CAPTURE(BM_PathPattern, jitter, "jitter");

@@ -45,14 +45,22 @@ void inverse_symmetry_pixel(unsigned sym, int P, int& a, int& b) {
 uint32_t pick(uint64_t h, uint32_t n) { return uint32_t(((h >> 32) * uint64_t(n)) >> 32); }
 
 // A keyed permutation of [0, n): rounds of xor, odd multiply and xor-shift, each a bijection
-// modulo 2^bits, then cycle walking into [0, n) (Black & Rogaway 2002).
-uint32_t permute(uint32_t i, uint32_t n, uint64_t key) {
+// modulo 2^bits, then cycle walking into [0, n) (Black & Rogaway 2002). The rounds' keys are
+// hashed from one key once (PermuteKey), as every stream of a pixel permutes with the same.
+struct PermuteKey {
+  uint64_t round[3];
+};
+PermuteKey permute_key(uint64_t key) {
+  PermuteKey k;
+  for (int r = 0; r < 3; ++r) k.round[r] = mix64(key + uint64_t(r) * 0x9e3779b97f4a7c15ull);
+  return k;
+}
+uint32_t permute(uint32_t i, uint32_t n, const PermuteKey& key) {
   if (n <= 1) return 0;
   const int bits = 32 - __builtin_clz(n - 1);
   const uint32_t mask = bits >= 32 ? ~0u : (1u << bits) - 1;
   do {
-    for (int r = 0; r < 3; ++r) {
-      const uint64_t k = mix64(key + uint64_t(r) * 0x9e3779b97f4a7c15ull);
+    for (uint64_t k : key.round) {
       i = (i ^ uint32_t(k)) & mask;
       i = (i * (uint32_t(k >> 32) | 1u)) & mask;
       i ^= i >> ((bits + 1) / 2);
@@ -60,6 +68,10 @@ uint32_t permute(uint32_t i, uint32_t n, uint64_t key) {
   } while (i >= n);
   return i;
 }
+
+// Distinct for every sampler made in the process (a thread's memo of one sampler's keys must
+// not serve another that happens to reuse its address).
+std::atomic<uint64_t> g_next_sampler_id{1};
 
 // std::has_single_bit without the popcount library call of a build for baseline x86-64.
 constexpr bool power_of_two(uint32_t n) { return n && !(n & (n - 1)); }
@@ -69,7 +81,8 @@ int mod(int a, int b) { return a - floor_div(a, b) * b; }
 
 class PoissonSampler final : public Sampler {
  public:
-  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {
+  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o)
+      : Sampler(seed), tables_(t), opt_(o), id_(g_next_sampler_id++) {
     // `poisson`'s untiled 2-D families hold tables of one kind (owen-pd, same size), so they
     // are read as one pool: 4x the tables per stream for the same generation time, and no two
     // 2-D streams of a path share one (docs/sampling.md, "Tables without replacement").
@@ -97,8 +110,8 @@ class PoissonSampler final : public Sampler {
     const uint32_t m = tables_.family[int(f)]->params.points;
     if (f == Family::Pixel && uint64_t(index) >= m) warn_past_prefix(px, py, m);
     const uint64_t round = uint64_t(index) / m;
-    map_stream(px, py, f, bounce, round, &p);
-    index = table_index(px, py, f, bounce, round, uint64_t(index) % m);
+    const uint64_t h = map_stream(px, py, f, bounce, round, &p);
+    index = table_index(f, h, round, uint64_t(index) % m);
     return {p.value(index, 0), p.value(index, 1)};
   }
 
@@ -107,15 +120,15 @@ class PoissonSampler final : public Sampler {
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
     const uint64_t round = uint64_t(index) / m;
-    map_stream(px, py, f, bounce, round, &p);
-    return p.value(table_index(px, py, f, bounce, round, uint64_t(index) % m), 0);
+    const uint64_t h = map_stream(px, py, f, bounce, round, &p);
+    return p.value(table_index(f, h, round, uint64_t(index) % m), 0);
   }
 
   // get_2d/get_1d read values through the same PreparedStream (and, for poisson, the same
   // index shuffle), so the fast path is exact.
   void prepare(int px, int py, Family f, int bounce, PreparedStream* out) const override {
     if (f == Family::Pixel && tiled()) return pixel_stream(px, py, bounce, out);
-    map_stream(px, py, f, bounce, 0, out);
+    const uint64_t h = map_stream(px, py, f, bounce, 0, out);
     if (!stratified() || !power_of_two(out->count)) return;
     // poisson: the window's points of the table read through the stream's index shuffle,
     // stored per stream; the stream's map (symmetry and shift) stays as map_stream set it, so
@@ -123,9 +136,11 @@ class PoissonSampler final : public Sampler {
     const uint32_t* table = out->coords;
     const uint32_t n = std::min(out->want, out->count), first = std::min(out->first, n), m = n - first;
     const int dim = family_dim(f);
-    thread_local std::vector<uint32_t> perm;
-    perm.resize(m);
-    IndexShuffle(shuffle_key(px, py, f, bounce, 0)).fill(first, n, perm.data());
+    uint32_t few[64];  // a low-spp pass's window needs no heap
+    thread_local std::vector<uint32_t> many;
+    if (m > 64) many.resize(m);
+    uint32_t* perm = m > 64 ? many.data() : few;
+    IndexShuffle(shuffle_key(h, 0)).fill(first, n, perm);
     out->own.resize(std::size_t(m) * dim);
     uint32_t* own = out->own.data();
     if (dim == 2) {
@@ -161,19 +176,22 @@ class PoissonSampler final : public Sampler {
   // of salts below the table count T: table perm(bounce) of the pixel's permutation, so the
   // streams of one path never share a table. Deeper salts reuse the permutation under
   // another key, and later rounds pick by hash: such streams differ only by symmetry and shift.
-  void map_stream(int px, int py, Family f, int bounce, uint64_t round, PreparedStream* out) const {
+  // Returns the stream's hash (stream(px, py, f, bounce)).
+  uint64_t map_stream(int px, int py, Family f, int bounce, uint64_t round, PreparedStream* out) const {
     const SampleTable& t = *tables_.family[int(f)];
     const bool pooled = !pool_.empty() && f != Family::Time;
     // Pooled: the 2-D families share one permutation of the pool, salt b of family f at
     // slot 4 b + f's place, so no two 2-D streams of a path share a table up to depth 16.
     const uint32_t T = pooled ? uint32_t(pool_.size()) : t.table_count();
     const uint32_t b = pooled ? 4 * uint32_t(bounce) + plane_place(f) : uint32_t(bounce);
-    uint64_t h = stream(px, py, f, bounce);
+    const uint32_t slot = power_of_two(T) ? b & (T - 1) : b % T,
+                   group = power_of_two(T) ? b >> std::countr_zero(T) : b / T;
+    const uint64_t hs = stream(px, py, f, bounce);
+    uint64_t h = hs;
     uint32_t table;
     if (round == 0) {
       // The pixel's allocation, shared by its salts (and, pooled, by its 2-D families).
-      const uint64_t key = stream(px, py, pooled ? Family::Pixel : f, -1);
-      table = permute(b % T, T, hash_combine(key, b / T));
+      table = permute(slot, T, allocation(px, py, pooled ? Family::Pixel : f, group));
     } else {
       h = hash_combine(h, round);
       table = pick(h, T);
@@ -206,6 +224,24 @@ class PoissonSampler final : public Sampler {
         out->mul[k] = flip ? -kFixed : kFixed;
       }
     }
+    return hs;
+  }
+
+  // The keys of the allocation of pixel (px, py)'s streams of `fam` (Pixel: the 2-D pool) for
+  // salts [group T, (group + 1) T). A pixel's streams are prepared one after another, so the
+  // thread keeps the last keys it hashed per family (a path alternates the pool and time).
+  const PermuteKey& allocation(int px, int py, Family fam, uint32_t group) const {
+    struct Memo {
+      uint64_t sampler = 0;
+      int px = 0, py = 0;
+      uint32_t group = 0;
+      PermuteKey key;
+    };
+    thread_local Memo memos[kFamilyCount];
+    Memo& memo = memos[int(fam)];
+    if (memo.sampler != id_ || memo.px != px || memo.py != py || memo.group != group)
+      memo = {id_, px, py, group, permute_key(hash_combine(stream(px, py, fam, -1), group))};
+    return memo.key;
   }
 
   // The pixel family: round r of a pixel is the points of its tile's pattern r (table,
@@ -304,13 +340,14 @@ class PoissonSampler final : public Sampler {
   // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
   // keep their point sets, so their strata and distances. `poisson-065` keeps the tables'
   // own order, which is what makes its every prefix Poisson-disk at rho 0.65.
-  uint64_t shuffle_key(int px, int py, Family f, int bounce, uint64_t round) const {
-    return hash_combine(stream(px, py, f, bounce), round ^ 0x73687566666c6532ull);
+  static uint64_t shuffle_key(uint64_t stream_hash, uint64_t round) {
+    return hash_combine(stream_hash, round ^ 0x73687566666c6532ull);
   }
   // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
-  int64_t table_index(int px, int py, Family f, int bounce, uint64_t round, uint64_t j) const {
+  // j's place in the table of stream hash h (map_stream's).
+  int64_t table_index(Family f, uint64_t h, uint64_t round, uint64_t j) const {
     if (!stratified() || !power_of_two(tables_.family[int(f)]->params.points)) return int64_t(j);
-    return int64_t(IndexShuffle(shuffle_key(px, py, f, bounce, round))(j));
+    return int64_t(IndexShuffle(shuffle_key(h, round))(j));
   }
 
   // Pixel tables of a P x P tile (P > 1) keep the Poisson-disk property across pixel borders;
@@ -330,6 +367,7 @@ class PoissonSampler final : public Sampler {
 
   TableSet tables_;
   PoissonOptions opt_;
+  uint64_t id_;                        // allocation()'s memo key
   std::vector<const uint32_t*> pool_;  // `poisson`'s 2-D tables of every family, when pooled
 };
 

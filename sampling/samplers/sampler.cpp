@@ -142,8 +142,12 @@ void IndexShuffle::fill(uint32_t first, uint32_t n, uint32_t* out) const {
     // The block of indices [2^top, 2^(top+1)) that the window [first, n) overlaps.
     const uint32_t base = uint32_t(1) << top, end = uint32_t(std::min<uint64_t>(uint64_t(base) * 2, n));
     if (end <= first) continue;
-    const uint32_t from = std::max(first, base);
-    shuffle_block(from - base, end - base, top, uint32_t(mix64(key_ + uint64_t(top))), out + (from - first));
+    const uint32_t from = std::max(first, base), seed = uint32_t(mix64(key_ + uint64_t(top)));
+    if (end - from <= 2) {  // one or two indices: no call through the clone's resolver
+      for (uint32_t i = from; i < end; ++i) out[i - first] = shuffle32(i - base, top, seed);
+    } else {
+      shuffle_block(from - base, end - base, top, seed, out + (from - first));
+    }
   }
 }
 

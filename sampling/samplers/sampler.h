@@ -226,28 +226,32 @@ class PixelSampleState {
     if (unsigned(bounce) >= unsigned(kSlots) || index_ < 0 || index_ >= INT32_MAX) return nullptr;
     const int k = int(f) * kSlots + bounce;
     PreparedStream& p = slot_[k];
-    if (epoch_of_[k] != epoch_) epoch_of_[k] = epoch_, uses_[k] = 0, p.coords = nullptr;
-    if (uses_[k] == kDeclined) return nullptr;
-    ++uses_[k];
+    Book& b = book_[k];
+    if (b.epoch != epoch_) b.epoch = epoch_, b.uses = 0, p.coords = nullptr;
+    if (b.uses == kDeclined) return nullptr;
+    ++b.uses;
     const auto holds = [&] { return p.coords && uint64_t(index_) >= p.base && uint64_t(index_) < p.count; };
     if (!holds()) {
       if (p.coords && !p.grows) return nullptr;  // all the sampler stores; past it, values alone
+      // The pass's last sample reads each stream once: preparing it would only add the
+      // bookkeeping (at 1 spp, every value).
+      if (index_ + 1 == budget_) return nullptr;
       // A sampler that computes the values it prepares gains only on a stream that at least
       // half of the pass's samples so far have used (the camera's and the first bounces'); the
       // deep bounces that few paths reach are asked value by value. The others prepare the
       // window from this index to the pass's end.
-      if (s_->prepare_computes(f) && 2 * int64_t(uses_[k]) < index_ - begin_ + 1) return nullptr;
+      if (s_->prepare_computes(f) && 2 * int64_t(b.uses) < index_ - begin_ + 1) return nullptr;
       int64_t end = std::max<int64_t>(budget_, index_ + 1);
       if (p.coords && index_ >= budget_) end = index_ + 2 * int64_t(p.want - p.first);  // no pass: doubling
       p.first = uint32_t(index_), p.want = uint32_t(std::min<int64_t>(end, INT32_MAX));
       s_->prepare(px_, py_, f, bounce, &p);
-      if (!p.coords && uses_[k] == 1) uses_[k] = kDeclined;
+      if (!p.coords && b.uses == 1) b.uses = kDeclined;
       if (!holds()) {
         held_[k] = {0, 0};
         return nullptr;
       }
     }
-    if (listed_[k] != epoch_) listed_[k] = epoch_, touched_slot_[touched_++] = uint16_t(k);
+    if (b.listed != epoch_) b.listed = epoch_, touched_slot_[touched_++] = uint16_t(k);
     held_[k] = {p.base, p.count - p.base};  // the pixel's later calls in it take the fast path
     return &p;
   }
@@ -259,16 +263,20 @@ class PixelSampleState {
   int64_t begin_ = 0;
   int64_t index_ = 0;
   uint32_t epoch_ = 1;  // differs from the slots' initial 0 even before the first pixel
-  mutable std::array<uint32_t, kFamilyCount * kSlots> epoch_of_{}, uses_{};
+  // Per slot, in one 12-byte record (one cache line where three arrays took three): the pixel
+  // (epoch) its uses count, the uses this pass, the epoch in which it was listed in touched_slot_.
+  struct Book {
+    uint32_t epoch, uses, listed;
+  };
+  mutable std::array<Book, kFamilyCount * kSlots> book_{};
   // The slots prepared for this pixel: values of indices in [lo, lo + span) are stored (span
   // 0: ask prepared()), in one small array so that the common call reads one 8-byte word
   // before its value; touched_slot_ lists the nonzero spans, cleared when the pixel changes
-  // (listed_: the epoch in which a slot was listed, so it is listed once).
+  // (Book::listed: a slot is listed once per pixel).
   struct Held {
     uint32_t lo, span;
   };
   mutable std::array<Held, kFamilyCount * kSlots> held_{};
-  mutable std::array<uint32_t, kFamilyCount * kSlots> listed_{};
   mutable std::array<uint16_t, kFamilyCount * kSlots> touched_slot_{};
   mutable uint32_t touched_ = 0;
   mutable PreparedStream slot_[kFamilyCount * kSlots];

@@ -47,6 +47,38 @@ TEST_P(EverySampler, ReplaysInAnyOrderAndFromAnyThread) {
   EXPECT_EQ(forward, threaded);
 }
 
+// A sampler may keep per-thread caches of what a pixel's streams share (poisson's table
+// allocation): two samplers alternating in one thread, and a sampler made where a destroyed
+// one lived, must each give what a fresh thread computes.
+TEST_P(EverySampler, ThreadCachesServeOnlyTheirSampler) {
+  // Each value of `a` then the same of `b` (b may be null), one pixel at a time.
+  const auto values = [](const Sampler& a, const Sampler* b) {
+    std::vector<double> va, vb;
+    for (int px : {4, 5})
+      for (int64_t i : {0, 3})
+        for (int f = 0; f < kFamilyCount; ++f)
+          for (int bounce : {0, 1, 5}) {
+            va.push_back(a.get_1d(px, 2, i, Family(f), bounce));
+            if (b) vb.push_back(b->get_1d(px, 2, i, Family(f), bounce));
+          }
+    return std::make_pair(va, vb);
+  };
+  const auto fresh = [&](const Sampler& x) {
+    std::vector<double> v;
+    std::thread([&] { v = values(x, nullptr).first; }).join();
+    return v;
+  };
+  auto other = make_sampler(GetParam(), 43);
+  const std::vector<double> want_s = fresh(*s), want_other = fresh(*other);
+  ASSERT_NE(want_s, want_other);
+  const auto got = values(*s, other.get());
+  EXPECT_EQ(got.first, want_s);
+  EXPECT_EQ(got.second, want_other);
+  other.reset();
+  auto again = make_sampler(GetParam(), 44);  // often at the address `other` had
+  EXPECT_EQ(values(*again, s.get()).first, fresh(*again));
+}
+
 // PixelSampleState prepares each stream once per pixel; its values must equal the pure
 // functions bit for bit, in any pixel order, for every family and bounce salt (including
 // salts past its cache and indices past a table's length).

@@ -191,9 +191,7 @@ class PixelSampleState {
       const uint64_t r = uint64_t(index_) - held_[k].lo;  // the stored value's rank
       if (r < held_[k].span) return slot_[k].stored(r, 0);
     }
-    const PreparedStream* p = prepared(f, bounce);
-    if (p) return p->value(index_, 0);
-    return s_->get_1d(px_, py_, index_, f, bounce);
+    return get_1d_slow(f, bounce);
   }
   Vec2 get_2d(Family f, int bounce = 0) const {
     SamplerScope scope;
@@ -202,9 +200,7 @@ class PixelSampleState {
       const uint64_t r = uint64_t(index_) - held_[k].lo;
       if (r < held_[k].span) return {slot_[k].stored(r, 0), slot_[k].stored(r, 1)};
     }
-    const PreparedStream* p = prepared(f, bounce);
-    if (p) return {p->value(index_, 0), p->value(index_, 1)};
-    return s_->get_2d(px_, py_, index_, f, bounce);
+    return get_2d_slow(f, bounce);
   }
 
   // A hash of (seed, pixel, sample index, bounce) for a decision that needs an unbounded number
@@ -220,6 +216,18 @@ class PixelSampleState {
 
  private:
   static constexpr int kSlots = kCachedSalts;
+  // A value outside the held windows: prepared() or the sampler's own (out of line, so that
+  // the common call above saves no registers).
+  [[gnu::noinline]] double get_1d_slow(Family f, int bounce) const {
+    const PreparedStream* p = prepared(f, bounce);
+    if (p) return p->value(index_, 0);
+    return s_->get_1d(px_, py_, index_, f, bounce);
+  }
+  [[gnu::noinline]] Vec2 get_2d_slow(Family f, int bounce) const {
+    const PreparedStream* p = prepared(f, bounce);
+    if (p) return {p->value(index_, 0), p->value(index_, 1)};
+    return s_->get_2d(px_, py_, index_, f, bounce);
+  }
   // The stream's prepared values when they hold the current index (preparing them if worth
   // it), else null: the caller asks the sampler for the value alone.
   const PreparedStream* prepared(Family f, int bounce) const {

@@ -8,7 +8,7 @@
 
 namespace pdrt {
 
-thread_local volatile std::sig_atomic_t g_in_sampler __attribute__((tls_model("initial-exec"))) = 0;
+constinit thread_local volatile std::sig_atomic_t g_in_sampler __attribute__((tls_model("initial-exec"))) = 0;
 
 namespace {
 

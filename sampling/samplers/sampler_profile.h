@@ -14,7 +14,7 @@ namespace pdrt {
 
 // Set while this thread computes sample values. initial-exec: a plain fs-relative store
 // (pdrt's libraries are linked statically, never dlopen'ed).
-extern thread_local volatile std::sig_atomic_t g_in_sampler __attribute__((tls_model("initial-exec")));
+extern thread_local constinit volatile std::sig_atomic_t g_in_sampler __attribute__((tls_model("initial-exec")));
 
 struct SamplerScope {
   SamplerScope() {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <string>
 #include <vector>
@@ -75,6 +76,7 @@ class DigitCache {
  public:
   explicit DigitCache(int bits) : bits_(bits), levels_(bits / 2) {}
   void reset(uint64_t key) { key_ = key, above_.fill(UINT64_MAX), last_above_ = UINT64_MAX, have_ = false; }
+  void reset(int bits, uint64_t key) { bits_ = bits, levels_ = bits / 2, reset(key); }
   uint32_t operator()(uint32_t z) {
     const int lo = bits_ & 1;
     int level = 0;
@@ -109,9 +111,13 @@ class DigitCache {
   std::array<uint8_t, 16> perm_{};
 };
 
+// Distinct for every sampler made in the process (a thread's digit memo of one sampler must
+// not serve another that happens to reuse its address).
+std::atomic<uint64_t> g_next_zsobol_id{1};
+
 class ZSobolSampler final : public Sampler {
  public:
-  ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed) {
+  ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed), id_(g_next_zsobol_id++) {
     if (o.samples_per_pixel < 1) throw UsageError("sampler zsobol: samples per pixel must be >= 1");
     if (o.width < 1 || o.height < 1) throw UsageError("sampler zsobol: the image must have at least one pixel");
     m_ = ceil_log2(o.samples_per_pixel);
@@ -145,13 +151,12 @@ class ZSobolSampler final : public Sampler {
     thread_local std::vector<uint32_t> index, axis;
     index.resize(std::size_t(n) * dim), axis.resize(std::size_t(n) * dim);
     uint32_t* d1 = index.data() + n;  // the second dimension's unscrambled values
-    DigitCache digits(bits);
     for (uint64_t b0 = first & ~(block_size - 1); b0 < end; b0 += block_size) {
       // Indices [lo, hi) of the block starting at b0, stored from at = lo - first on.
       const uint64_t lo = std::max<uint64_t>(b0, first), hi = std::min<uint64_t>(b0 + block_size, end);
       const uint32_t count = uint32_t(hi - lo), at = uint32_t(lo - first);
       const uint64_t key = block_key(stream0, b0 >> m_);
-      digits.reset(key);
+      DigitCache& digits = digit_cache(key);
       for (uint32_t i = 0; i < count; ++i) index[at + i] = digits(pixel | uint32_t(lo - b0 + i));
       owen_scramble_all(count, index.data() + at, key, axis.data() + at);
       if (dim == 1) continue;
@@ -180,8 +185,24 @@ class ZSobolSampler final : public Sampler {
     *key = block_key(sample_stream_from_hash(seed_hash_, 0, 0, f, bounce), block);
     const uint32_t low = uint32_t(uint64_t(index) & ((uint64_t(1) << m_) - 1));
     const uint32_t z = m_ + 2 * k_ == 0 ? 0 : (morton2(uint32_t(px) & mask, uint32_t(py) & mask) << m_) | low;
-    return zsobol_sobol_index(z, 2 * k_ + m_, *key);
+    return digit_cache(*key)(z);
   }
+  // The thread's DigitCache of a block key. Consecutive pixels share their Morton index's upper
+  // digits, so a cache kept per key from pixel to pixel rehashes only the digits below the
+  // highest bit that changed (a pixel's value alone hashed all 2k + m of them). 256 caches by
+  // the key's top bits (a path's few dozen keys rarely share one); a cache serves one key of
+  // one sampler at a time.
+  DigitCache& digit_cache(uint64_t key) const {
+    struct Memo {
+      uint64_t sampler = 0, key = 0;
+      DigitCache cache{0};
+    };
+    thread_local std::array<Memo, 256> memos;
+    Memo& m = memos[key >> 56];
+    if (m.sampler != id_ || m.key != key) m.sampler = id_, m.key = key, m.cache.reset(2 * k_ + m_, key);
+    return m.cache;
+  }
+  uint64_t id_;
   int m_ = 0;  // log2 of the block of samples a pixel takes
   int k_ = 0;  // bits per pixel coordinate
 };

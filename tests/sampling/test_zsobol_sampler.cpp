@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <thread>
 #include <vector>
 
 namespace pdrt {
@@ -119,6 +120,33 @@ TEST(ZSobolSampler, PreparedStreamMatchesValueByValue) {
           EXPECT_EQ(test::prepared_mismatches(*s, px, 3, f, 1, 70, first), 0) << spp << " " << px << " " << first;
       }
   }
+}
+
+// A thread keeps each block key's Morton digits from pixel to pixel (rehashing only those
+// below the highest changed bit): a value must not depend on which pixels came before it.
+TEST(ZSobolSampler, ValuesDoNotDependOnThePixelsAskedBefore) {
+  auto s = make_zsobol_sampler(5, {4, 64, 64});
+  std::vector<std::array<int, 2>> raster, shuffled;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) raster.push_back({x, y});
+  shuffled = raster;
+  for (std::size_t i = shuffled.size() - 1; i > 0; --i) std::swap(shuffled[i], shuffled[(i * 7919 + 13) % (i + 1)]);
+  // Values per pixel, each pixel asked in `order`, in a thread of its own (fresh caches).
+  const auto values = [&](const std::vector<std::array<int, 2>>& order) {
+    std::vector<double> v(raster.size() * 6 * 3);
+    std::thread([&] {
+      const int64_t indices[6] = {0, 1, 3, 5, 17, 64};  // blocks 0, 1, 4 and 16
+      for (const auto& p : order)
+        for (int k = 0; k < 6; ++k) {
+          const int64_t i = indices[k];
+          const std::size_t at = (std::size_t(p[1] * 16 + p[0]) * 6 + std::size_t(k)) * 3;
+          const Vec2 u = s->get_2d(p[0], p[1], i, Family::Light, 1);
+          v[at] = u[0], v[at + 1] = u[1], v[at + 2] = s->get_1d(p[0], p[1], i, Family::Time, 4);
+        }
+    }).join();
+    return v;
+  };
+  EXPECT_EQ(values(raster), values(shuffled));
 }
 
 TEST(ZSobolSampler, RefusesImagesItCannotOrder) {

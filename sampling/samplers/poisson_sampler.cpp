@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace pdrt {
@@ -109,9 +110,9 @@ class PoissonSampler final : public Sampler {
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
     if (f == Family::Pixel && uint64_t(index) >= m) warn_past_prefix(px, py, m);
-    const uint64_t round = uint64_t(index) / m;
+    const auto [round, j] = split_index(uint64_t(index), m);
     const uint64_t h = map_stream(px, py, f, bounce, round, &p);
-    index = table_index(f, h, round, uint64_t(index) % m);
+    index = table_index(f, h, round, j);
     return {p.value(index, 0), p.value(index, 1)};
   }
 
@@ -119,9 +120,9 @@ class PoissonSampler final : public Sampler {
     if (f != Family::Time) return get_2d(px, py, index, f, bounce)[0];
     PreparedStream p;
     const uint32_t m = tables_.family[int(f)]->params.points;
-    const uint64_t round = uint64_t(index) / m;
+    const auto [round, j] = split_index(uint64_t(index), m);
     const uint64_t h = map_stream(px, py, f, bounce, round, &p);
-    return p.value(table_index(f, h, round, uint64_t(index) % m), 0);
+    return p.value(table_index(f, h, round, j), 0);
   }
 
   // get_2d/get_1d read values through the same PreparedStream (and, for poisson, the same
@@ -340,13 +341,20 @@ class PoissonSampler final : public Sampler {
   // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
   // keep their point sets, so their strata and distances. `poisson-065` keeps the tables'
   // own order, which is what makes its every prefix Poisson-disk at rho 0.65.
+  // Sample index i of a stream of m-point tables: round i / m, point i mod m (by mask where m is
+  // a power of two, as the default tables are: a 64-bit division per value otherwise).
+  static std::pair<uint64_t, uint64_t> split_index(uint64_t i, uint32_t m) {
+    if (power_of_two(m)) return {i >> std::countr_zero(m), i & (m - 1)};
+    return {i / m, i % m};
+  }
   static uint64_t shuffle_key(uint64_t stream_hash, uint64_t round) {
     return hash_combine(stream_hash, round ^ 0x73687566666c6532ull);
   }
   // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
   // j's place in the table of stream hash h (map_stream's).
   int64_t table_index(Family f, uint64_t h, uint64_t round, uint64_t j) const {
-    if (!stratified() || !power_of_two(tables_.family[int(f)]->params.points)) return int64_t(j);
+    // (Indices 0 and 1 are their own shuffle: no key to hash.)
+    if (j < 2 || !stratified() || !power_of_two(tables_.family[int(f)]->params.points)) return int64_t(j);
     return int64_t(IndexShuffle(shuffle_key(h, round))(j));
   }
 

@@ -335,23 +335,24 @@ class PoissonSampler final : public Sampler {
     warn(line, "poisson: past the prefix");
   }
 
-  // `poisson` reads every stream through its own index shuffle (as jitter and sobol do): its
-  // stratified tables visit their strata in related orders (progressive jitter's fixed
-  // parent order in time, Sobol's index structure in 2-D) that a digital shift does not
-  // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
-  // keep their point sets, so their strata and distances. `poisson-065` keeps the tables'
-  // own order, which is what makes its every prefix Poisson-disk at rho 0.65.
   // Sample index i of a stream of m-point tables: round i / m, point i mod m (by mask where m is
   // a power of two, as the default tables are: a 64-bit division per value otherwise).
   static std::pair<uint64_t, uint64_t> split_index(uint64_t i, uint32_t m) {
     if (power_of_two(m)) return {i >> std::countr_zero(m), i & (m - 1)};
     return {i / m, i % m};
   }
+
+  // `poisson` reads every stream through its own index shuffle (as jitter and sobol do): its
+  // stratified tables visit their strata in related orders (progressive jitter's fixed
+  // parent order in time, Sobol's index structure in 2-D) that a digital shift does not
+  // change, so two streams of a pixel would otherwise move in lockstep. Power-of-two prefixes
+  // keep their point sets, so their strata and distances. `poisson-065` keeps the tables'
+  // own order, which is what makes its every prefix Poisson-disk at rho 0.65.
   static uint64_t shuffle_key(uint64_t stream_hash, uint64_t round) {
     return hash_combine(stream_hash, round ^ 0x73687566666c6532ull);
   }
-  // (The shuffle keeps [0, 2^k) but not a shorter table's range: those keep their order.)
-  // j's place in the table of stream hash h (map_stream's).
+  // j's place in the table of stream hash h (map_stream's). (The shuffle keeps [0, 2^k) but not
+  // a shorter table's range: those keep their order.)
   int64_t table_index(Family f, uint64_t h, uint64_t round, uint64_t j) const {
     // (Indices 0 and 1 are their own shuffle: no key to hash.)
     if (j < 2 || !stratified() || !power_of_two(tables_.family[int(f)]->params.points)) return int64_t(j);

@@ -101,8 +101,12 @@ void camera(PbrtBuild& b, const PbrtDirective& d, const PbrtTransformPair& camer
 // wins when both are given).
 void crop(PbrtBuild& b, const PbrtParams& ps) {
   FilmDesc& f = b.out.scene.film;
+  // A Film directive replaces the film (pbrt-v4): an earlier one's crop, in pixels of its
+  // size, does not carry over.
+  f.crop_window = FilmDesc{}.crop_window;
   const PbrtParam* cw = ps.find("cropwindow");
   const PbrtParam* pb = ps.find("pixelbounds");
+  if (!cw && !pb) return;
   if (pb) {
     std::vector<int64_t> px = ps.ints("pixelbounds");
     pb->used = true;

@@ -833,6 +833,30 @@ TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {
   EXPECT_EQ(import(one).scene.shapes.at(0).mesh.indices.size(), 3u * 16);
 }
 
+// Found by ctest's bounded run of tests/fuzz/fuzz_pbrt.cpp (the input as found): a second Film
+// kept the first one's pixelbounds crop, made for 1280 x 720, which covers no pixel of its 32 x
+// 24; the check that says so named the crop parameter of the second Film, which has none (a
+// null pointer). Each Film now starts from the whole frame, as pbrt-v4's replaces the film, so
+// the file reads on to its real error.
+TEST(PbrtImport, ASecondFilmDoesNotKeepTheFirstFilmsCrop) {
+  const std::filesystem::path file =
+      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "ubsan-second-film-keeps-first-crop.pbrt";
+  try {
+    build_pbrt_scene(parse_pbrt_file(file), false);
+    FAIL() << "accepted " << file;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ubsan-second-film-keeps-first-crop.pbrt:9:1: a second WorldBegin"),
+              std::string::npos)
+        << e.what();
+  }
+  const PbrtImport two = import(std::string(kCamera) +
+                                "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100 "
+                                "\"integer pixelbounds\" [10 20 5 15]\nFilm \"rgb\" \"integer xresolution\" 40 "
+                                "\"integer yresolution\" 30\nWorldBegin\nShape \"sphere\"\n");
+  EXPECT_EQ(two.scene.film.width, 40);
+  EXPECT_EQ(two.scene.film.crop_window, (std::array<float, 4>{0, 1, 0, 1}));
+}
+
 // Found by the long run of tests/fuzz/fuzz_pbrt.cpp (the input as found): a bilinear patch with
 // a coordinate beyond float's range made the grid size NaN, and converting it to int was
 // undefined. Non-finite corners are refused before tessellating; corners so far apart that the

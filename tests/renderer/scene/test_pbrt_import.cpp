@@ -58,6 +58,18 @@ std::string ply_error(const std::filesystem::path& file, const std::string& show
   return "";
 }
 
+// The InputError that building tests/data/fuzz/pbrt/`name` (an input a fuzzer found) gives.
+std::string fuzz_pbrt_error(const std::string& name) {
+  const std::filesystem::path file = std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / name;
+  try {
+    build_pbrt_scene(parse_pbrt_file(file), false);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted " << file;
+  return "";
+}
+
 const char* kCamera = "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" 30\n";
 
 // The report without its one line on colours pdrt multiplies per RGB channel, which must be there.
@@ -812,17 +824,11 @@ TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
 // Found by the long run of tests/fuzz/fuzz_pbrt.cpp (the input as found): one triangle at
 // levels 12 asked for 4^12 triangles, 4.8 GB and 40 s of refinement for three lines of text.
 TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {
-  const std::filesystem::path file =
-      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "oom-loopsubdiv-levels-12.pbrt";
-  try {
-    build_pbrt_scene(parse_pbrt_file(file), false);
-    FAIL() << "accepted " << file;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("oom-loopsubdiv-levels-12.pbrt:3:1: Shape \"loopsubdiv\": 1 triangles "
-                                         "subdivided 12 times exceed 4194304 triangles"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string e = fuzz_pbrt_error("oom-loopsubdiv-levels-12.pbrt");
+  EXPECT_NE(e.find("oom-loopsubdiv-levels-12.pbrt:3:1: Shape \"loopsubdiv\": 1 triangles subdivided 12 times exceed "
+                   "4194304 triangles"),
+            std::string::npos)
+      << e;
   // A lower limit, as the fuzzer sets it, refuses a smaller mesh; the default takes it.
   const std::string one = std::string(kCamera) +
                           "WorldBegin\nShape \"loopsubdiv\" \"integer levels\" 2 \"point3 P\" [0 0 0  1 0 0  0 1 0] "
@@ -839,16 +845,8 @@ TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {
 // null pointer). Each Film now starts from the whole frame, as pbrt-v4's replaces the film, so
 // the file reads on to its real error.
 TEST(PbrtImport, ASecondFilmDoesNotKeepTheFirstFilmsCrop) {
-  const std::filesystem::path file =
-      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "ubsan-second-film-keeps-first-crop.pbrt";
-  try {
-    build_pbrt_scene(parse_pbrt_file(file), false);
-    FAIL() << "accepted " << file;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("ubsan-second-film-keeps-first-crop.pbrt:9:1: a second WorldBegin"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string e = fuzz_pbrt_error("ubsan-second-film-keeps-first-crop.pbrt");
+  EXPECT_NE(e.find("ubsan-second-film-keeps-first-crop.pbrt:9:1: a second WorldBegin"), std::string::npos) << e;
   const PbrtImport two = import(std::string(kCamera) +
                                 "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100 "
                                 "\"integer pixelbounds\" [10 20 5 15]\nFilm \"rgb\" \"integer xresolution\" 40 "
@@ -862,17 +860,10 @@ TEST(PbrtImport, ASecondFilmDoesNotKeepTheFirstFilmsCrop) {
 // undefined. Non-finite corners are refused before tessellating; corners so far apart that the
 // twist overflows float take the largest grid.
 TEST(PbrtImport, BilinearPatchWithAnInfiniteOrOverflowingCornerIsRefusedOrCapped) {
-  const std::filesystem::path file =
-      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "pbrt" / "ubsan-bilinear-infinite-coordinate.pbrt";
-  try {
-    build_pbrt_scene(parse_pbrt_file(file), false);
-    FAIL() << "accepted " << file;
-  } catch (const InputError& e) {
-    EXPECT_NE(
-        std::string(e.what()).find("ubsan-bilinear-infinite-coordinate.pbrt:3:22: \"P\" holds a non-finite coordinate"),
-        std::string::npos)
-        << e.what();
-  }
+  const std::string e = fuzz_pbrt_error("ubsan-bilinear-infinite-coordinate.pbrt");
+  EXPECT_NE(e.find("ubsan-bilinear-infinite-coordinate.pbrt:3:22: \"P\" holds a non-finite coordinate"),
+            std::string::npos)
+      << e;
   const PbrtImport im =
       import(std::string(kCamera) +
              "WorldBegin\nShape \"bilinearmesh\" \"point3 P\" [-3e38 -3e38 0  3e38 -3e38 0  -3e38 3e38 0  "

@@ -139,39 +139,26 @@ void tile_in_passes(benchmark::State& state, const char* name, int64_t spp) {
 }
 // 64 spp.
 void BM_PathPatternPasses(benchmark::State& state, const char* name) { tile_in_passes(state, name, 64); }
-BENCHMARK_CAPTURE(BM_PathPatternPasses, random, "random");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, jitter, "jitter");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, poisson, "poisson");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, poisson_065, "poisson-065");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, sobol, "sobol");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, pmj02bn, "pmj02bn");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, zsobol, "zsobol");
-BENCHMARK_CAPTURE(BM_PathPatternPasses, regular, "regular");
 
 // The sample counts of compare's sweeps (1, 4 and 16 spp): each pass prepares a pixel's streams
 // for a few values, so the per-stream cost of preparing weighs on every value.
 void BM_PathPatternFewSamples(benchmark::State& state, const char* name) {
   tile_in_passes(state, name, state.range(0));
 }
-#define PDRT_FEW(id, name) BENCHMARK_CAPTURE(BM_PathPatternFewSamples, id, name)->Arg(1)->Arg(4)->Arg(16)
-PDRT_FEW(random, "random");
-PDRT_FEW(jitter, "jitter");
-PDRT_FEW(poisson, "poisson");
-PDRT_FEW(poisson_065, "poisson-065");
-PDRT_FEW(sobol, "sobol");
-PDRT_FEW(pmj02bn, "pmj02bn");
-PDRT_FEW(zsobol, "zsobol");
-PDRT_FEW(regular, "regular");
-#undef PDRT_FEW
-
-BENCHMARK_CAPTURE(BM_PathPattern, random, "random");
-BENCHMARK_CAPTURE(BM_PathPattern, jitter, "jitter");
-BENCHMARK_CAPTURE(BM_PathPattern, poisson, "poisson");
-BENCHMARK_CAPTURE(BM_PathPattern, poisson_065, "poisson-065");
-BENCHMARK_CAPTURE(BM_PathPattern, sobol, "sobol");
-BENCHMARK_CAPTURE(BM_PathPattern, pmj02bn, "pmj02bn");
-BENCHMARK_CAPTURE(BM_PathPattern, zsobol, "zsobol");
-BENCHMARK_CAPTURE(BM_PathPattern, regular, "regular");
+// The path-pattern benchmarks of every sampler.
+#define PDRT_PATH_PATTERNS(id, name)                 \
+  BENCHMARK_CAPTURE(BM_PathPattern, id, name);       \
+  BENCHMARK_CAPTURE(BM_PathPatternPasses, id, name); \
+  BENCHMARK_CAPTURE(BM_PathPatternFewSamples, id, name)->Arg(1)->Arg(4)->Arg(16)
+PDRT_PATH_PATTERNS(random, "random");
+PDRT_PATH_PATTERNS(jitter, "jitter");
+PDRT_PATH_PATTERNS(poisson, "poisson");
+PDRT_PATH_PATTERNS(poisson_065, "poisson-065");
+PDRT_PATH_PATTERNS(sobol, "sobol");
+PDRT_PATH_PATTERNS(pmj02bn, "pmj02bn");
+PDRT_PATH_PATTERNS(zsobol, "zsobol");
+PDRT_PATH_PATTERNS(regular, "regular");
+#undef PDRT_PATH_PATTERNS
 
 // Issue 16: a table set must generate in <= 10 s on one core; the build generates both.
 void BM_DefaultTablesOneCore(benchmark::State& state, pdrt::TableSetKind kind) {

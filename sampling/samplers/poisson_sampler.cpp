@@ -70,10 +70,6 @@ uint32_t permute(uint32_t i, uint32_t n, const PermuteKey& key) {
   return i;
 }
 
-// Distinct for every sampler made in the process (a thread's memo of one sampler's keys must
-// not serve another that happens to reuse its address).
-std::atomic<uint64_t> g_next_sampler_id{1};
-
 // std::has_single_bit without the popcount library call of a build for baseline x86-64.
 constexpr bool power_of_two(uint32_t n) { return n && !(n & (n - 1)); }
 
@@ -82,8 +78,7 @@ int mod(int a, int b) { return a - floor_div(a, b) * b; }
 
 class PoissonSampler final : public Sampler {
  public:
-  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o)
-      : Sampler(seed), tables_(t), opt_(o), id_(g_next_sampler_id++) {
+  PoissonSampler(uint64_t seed, const TableSet& t, PoissonOptions o) : Sampler(seed), tables_(t), opt_(o) {
     // `poisson`'s untiled 2-D families hold tables of one kind (owen-pd, same size), so they
     // are read as one pool: 4x the tables per stream for the same generation time, and no two
     // 2-D streams of a path share one (docs/sampling.md, "Tables without replacement").
@@ -240,8 +235,8 @@ class PoissonSampler final : public Sampler {
     };
     thread_local Memo memos[kFamilyCount];
     Memo& memo = memos[int(fam)];
-    if (memo.sampler != id_ || memo.px != px || memo.py != py || memo.group != group)
-      memo = {id_, px, py, group, permute_key(hash_combine(stream(px, py, fam, -1), group))};
+    if (memo.sampler != instance_ || memo.px != px || memo.py != py || memo.group != group)
+      memo = {instance_, px, py, group, permute_key(hash_combine(stream(px, py, fam, -1), group))};
     return memo.key;
   }
 
@@ -376,7 +371,6 @@ class PoissonSampler final : public Sampler {
 
   TableSet tables_;
   PoissonOptions opt_;
-  uint64_t id_;                        // allocation()'s memo key
   std::vector<const uint32_t*> pool_;  // `poisson`'s 2-D tables of every family, when pooled
 };
 

@@ -10,6 +10,7 @@
 #include "sampling/core/rng.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 
 namespace pdrt {
@@ -87,6 +88,11 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, uint64_t seed, co
   if (!parse_sampler(name, &kind))
     throw UsageError("sampler: unknown sampler '" + name + "' (known: " + sampler_name_list() + ")");
   return make_sampler(kind, seed, shape);
+}
+
+uint64_t Sampler::next_instance() {
+  static std::atomic<uint64_t> next{1};
+  return next++;
 }
 
 uint64_t sample_stream_from_hash(uint64_t seed_hash, int px, int py, Family family, int bounce) {

@@ -152,13 +152,19 @@ class Sampler {
   virtual bool pixel_counts_vary() const { return false; }
 
  protected:
-  explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_hash_seed(seed)) {}
+  explicit Sampler(uint64_t seed) : seed_(seed), seed_hash_(sample_hash_seed(seed)), instance_(next_instance()) {}
   // The hash of (pixel, family, bounce) every value of that stream derives from.
   uint64_t stream(int px, int py, Family family, int bounce) const {
     return sample_stream_from_hash(seed_hash_, px, py, family, bounce);
   }
   uint64_t seed_;
   uint64_t seed_hash_;  // mixed once here, not per sample
+  // Distinct for every sampler made in the process: the key of a sampler's per-thread caches
+  // (a cache of one must not serve another that happens to reuse its address).
+  uint64_t instance_;
+
+ private:
+  static uint64_t next_instance();
 };
 
 // The sampler state of the pixel sample being traced (pbrt-v4's StartPixelSample + Get1D/

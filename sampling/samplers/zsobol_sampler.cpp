@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <string>
 #include <vector>
@@ -111,13 +110,9 @@ class DigitCache {
   std::array<uint8_t, 16> perm_{};
 };
 
-// Distinct for every sampler made in the process (a thread's digit memo of one sampler must
-// not serve another that happens to reuse its address).
-std::atomic<uint64_t> g_next_zsobol_id{1};
-
 class ZSobolSampler final : public Sampler {
  public:
-  ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed), id_(g_next_zsobol_id++) {
+  ZSobolSampler(uint64_t seed, const SamplerShape& o) : Sampler(seed) {
     if (o.samples_per_pixel < 1) throw UsageError("sampler zsobol: samples per pixel must be >= 1");
     if (o.width < 1 || o.height < 1) throw UsageError("sampler zsobol: the image must have at least one pixel");
     m_ = ceil_log2(o.samples_per_pixel);
@@ -199,10 +194,9 @@ class ZSobolSampler final : public Sampler {
     };
     thread_local std::array<Memo, 256> memos;
     Memo& m = memos[key >> 56];
-    if (m.sampler != id_ || m.key != key) m.sampler = id_, m.key = key, m.cache.reset(2 * k_ + m_, key);
+    if (m.sampler != instance_ || m.key != key) m.sampler = instance_, m.key = key, m.cache.reset(2 * k_ + m_, key);
     return m.cache;
   }
-  uint64_t id_;
   int m_ = 0;  // log2 of the block of samples a pixel takes
   int k_ = 0;  // bits per pixel coordinate
 };

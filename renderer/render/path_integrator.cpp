@@ -1,5 +1,6 @@
 #include "renderer/render/path_integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -20,6 +21,8 @@ PathIntegrator::PathIntegrator(const EmbreeScene& scene, const LightSet& lights,
     : scene_(scene), lights_(lights), materials_(materials), settings_(settings) {
   if (settings.regularize && !materials.regularizes())
     throw std::logic_error("PathIntegrator: regularize needs a MaterialSet built with regularize");
+  const auto& ms = scene.desc().materials;
+  hits_can_emit_ = std::any_of(ms.begin(), ms.end(), [](const Material& m) { return m.type == MaterialType::Emitter; });
 }
 
 PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps) const { return trace(ray, ps, nullptr, false); }
@@ -40,13 +43,23 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
   const float time = ray.time;
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
-    ++res.rays;
     bool found;
-    if (depth == 0 && first) {
-      found = first_found;
-      if (found) hit = *first;
+    if (depth == settings_.max_depth && depth > 0 && !hits_can_emit_) {
+      // The last vertex scatters nothing and no surface emits: only an escaping ray adds light
+      // (none without an environment), and Embree's any-hit occlusion query costs less than the
+      // nearest hit.
+      if (!lights_.has_environment()) break;
+      ++res.rays;
+      if (scene_.occluded(ray)) break;
+      found = false;
     } else {
-      found = scene_.intersect(ray, &hit);
+      ++res.rays;
+      if (depth == 0 && first) {
+        found = first_found;
+        if (found) hit = *first;
+      } else {
+        found = scene_.intersect(ray, &hit);
+      }
     }
     if (!found) {
       const Vec3 env = lights_.has_environment() ? lights_.environment(ray.dir) : Vec3(0.0f);
@@ -57,6 +70,11 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
+    // The vertex at max_depth only emits: a surface that cannot needs no shading.
+    const std::vector<Material>& scene_materials = scene_.desc().materials;
+    if (depth == settings_.max_depth && depth > 0 &&
+        scene_materials[std::size_t(scene_.material(hit.shape))].type != MaterialType::Emitter)
+      break;
     const Vec3 wo_world = -ray.dir;
     const MaterialSet::Shading shading = materials_.at(hit, wo_world, time, settings_.regularize && any_non_delta);
     const Material& mat = *shading.material;

@@ -39,6 +39,9 @@ class PathIntegrator {
   const LightSet& lights_;
   const MaterialSet& materials_;
   IntegratorDesc settings_;
+  // Whether a ray's hit can emit (the scene has an emitter material): without one, the vertex
+  // at max_depth adds light only when its ray escapes, which an occlusion ray decides.
+  bool hits_can_emit_ = true;
 };
 
 }  // namespace pdrt

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 using namespace pdrt;
 using namespace pdrt::test;
@@ -40,16 +41,22 @@ TEST(RenderAnalytic, FurnaceDiffuseSphereShowsItsAlbedo) {
   EXPECT_LT(worst, 0.05) << "every pixel within ±10 % at 64 spp";
 }
 
-// A diffuse plane under a parallel quad light: radiance rho * Le * F(point -> light).
-TEST(RenderAnalytic, DiffusePlaneMatchesQuadLightIrradiance) {
-  const int W = 64;
-  SceneDesc s = base_scene(W, W, 256);
+// The plane y = 0 of albedo rho seen from above at max_depth 1, with a quad facing down over
+// [x0, x1] x [z0, z1] at height h (its material `quad_material`): 20 pixels match
+// rho * expected(F) within ±3 % at 256 spp, F the quad's form factor from the pixel's centre.
+namespace {
+
+struct PlaneUnderQuad {
+  float rho = 0.8f, x0 = -0.3f, x1 = 0.5f, z0 = -0.2f, z1 = 0.4f, h = 1.0f;
+};
+
+void expect_plane_under_quad(SceneDesc s, const PlaneUnderQuad& q, const Material& quad_material,
+                             const std::function<double(double)>& expected) {
+  const int W = s.film.width;
   s.camera.position = {0, 0.5f, 0}, s.camera.look_at = {0, 0, 0}, s.camera.up = {0, 0, -1};
   s.camera.vfov_deg = 90;  // sees [-0.5, 0.5]^2 of the plane y = 0
-  const float rho = 0.8f, Le = 2.0f, h = 1.0f;
-  s.shapes.push_back(quad({-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, add_material(s, diffuse(rho))));  // normal +y
-  // Light [-0.3,0.5]x[-0.2,0.4] in (x,z) at height h, facing down.
-  s.shapes.push_back(quad({-0.3f, h, -0.2f}, {0.8f, 0, 0}, {0, 0, 0.6f}, add_material(s, emitter(Le))));
+  s.shapes.push_back(quad({-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, add_material(s, diffuse(q.rho))));  // normal +y
+  s.shapes.push_back(quad({q.x0, q.h, q.z0}, {q.x1 - q.x0, 0, 0}, {0, 0, q.z1 - q.z0}, add_material(s, quad_material)));
   s.integrator.max_depth = 1;  // direct light only
   Image im = render_quietly(s).image;
   ThinLensCamera cam(s.camera, W, W);
@@ -62,13 +69,38 @@ TEST(RenderAnalytic, DiffusePlaneMatchesQuadLightIrradiance) {
       double cx = (x + 0.5) / W - 0.5, cz = (y + 0.5) / W - 0.5;
       auto g = cam.project({float(cx), 0, float(cz)});
       ASSERT_NEAR(g[0], x + 0.5, 1e-3);
-      double F = corner_form_factor(0.5 - cx, 0.4 - cz, h) - corner_form_factor(-0.3 - cx, 0.4 - cz, h) -
-                 corner_form_factor(0.5 - cx, -0.2 - cz, h) + corner_form_factor(-0.3 - cx, -0.2 - cz, h);
-      double expected = rho * Le * F;
-      EXPECT_NEAR(mean_rgb(im, x, y), expected, 0.03 * expected) << "pixel " << x << "," << y;  // ±3 %
+      const double e = q.rho * expected(rect_form_factor(cx, cz, q.x0, q.x1, q.z0, q.z1, q.h));
+      EXPECT_NEAR(mean_rgb(im, x, y), e, 0.03 * e) << "pixel " << x << "," << y;
       ++checked;
     }
   EXPECT_EQ(checked, 20);
+}
+
+}  // namespace
+
+// A diffuse plane under a parallel quad light: radiance rho * Le * F(point -> light).
+TEST(RenderAnalytic, DiffusePlaneMatchesQuadLightIrradiance) {
+  const float Le = 2.0f;
+  expect_plane_under_quad(base_scene(64, 64, 256), PlaneUnderQuad{}, emitter(Le), [&](double F) { return Le * F; });
+}
+
+// The same under a light much wider than the view: the light's area pdf is low, so MIS gives
+// most of the weight to BSDF-sampled rays that hit the light at the path's last vertex.
+TEST(RenderAnalytic, DiffusePlaneMatchesAWideLightReachedByBsdfSampling) {
+  const float Le = 2.0f;
+  PlaneUnderQuad q;
+  q.x0 = -6, q.x1 = 5, q.z0 = -5, q.z1 = 6, q.h = 0.7f;
+  expect_plane_under_quad(base_scene(64, 64, 256), q, emitter(Le), [&](double F) { return Le * F; });
+}
+
+// A uniform environment of radiance L and a black quad: radiance rho * L * (1 - F). With no
+// emitter in the scene, the BSDF-sampled ray at the last vertex is an occlusion query
+// (path_integrator.cpp): a ray the quad blocks must add nothing.
+TEST(RenderAnalytic, DiffusePlaneSeesTheEnvironmentAnOccluderLeavesOpen) {
+  const float L = 1.5f;
+  SceneDesc s = base_scene(64, 64, 256);
+  s.environment.radiance = Vec3(L);
+  expect_plane_under_quad(s, PlaneUnderQuad{}, diffuse(0.0f), [&](double F) { return L * (1 - F); });
 }
 
 // Cook Fig. 13: a white square moving during the shutter leaves a streak whose value is

@@ -35,7 +35,9 @@ SceneLights lights_from_scene(const EmbreeScene& scene, const TextureSet& textur
   }
   out.lights.insert(out.lights.end(), distant.begin(), distant.end());
   out.environment = EnvironmentLight(d.environment);
-  if (out.environment.irradiance > 0) out.lights.push_back(out.environment);
+  out.environment_sampled =
+      out.environment.irradiance > 0 && (out.environment.has_image() || d.integrator.sample_constant_environment);
+  if (out.environment_sampled) out.lights.push_back(out.environment);
   return out;
 }
 

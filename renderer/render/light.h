@@ -32,11 +32,13 @@ using Light = std::variant<TriangleLight, SphereLight, PointLight, SpotLight, Di
 
 struct SceneLights {
   // Light ids are the indices: one per emissive triangle or sphere in shape order, then the
-  // point and spot lights, then the distant lights, then the environment if it emits (the
-  // lights in the BVH first, those beside it after). Lights of zero power are left out.
+  // point and spot lights, then the distant lights, then the environment if it emits and is
+  // sampled (the lights in the BVH first, those beside it after). Lights of zero power are left out.
   std::vector<Light> lights;
   std::vector<int64_t> first_light;  // per shape: the id of its first light, or -1
   EnvironmentLight environment;      // what escaping rays see (black when there is none)
+  // Whether the environment is the last of `lights` (IntegratorDesc::sample_constant_environment).
+  bool environment_sampled = false;
 };
 
 // textures: the scene's, opened once (MaterialSet owns them); textured emitters read them.

@@ -10,7 +10,8 @@ LightSet::LightSet(const EmbreeScene& scene, const TextureSet& textures) : scene
   lights_ = std::move(s.lights);
   first_light_ = std::move(s.first_light);
   environment_ = std::move(s.environment);
-  environment_id_ = lights_.size() - (environment_.irradiance > 0 ? 1 : 0);
+  environment_sampled_ = s.environment_sampled;
+  environment_id_ = lights_.size() - (environment_sampled_ ? 1 : 0);
   std::vector<LightBounds> bounded;
   std::vector<InfiniteLightBounds> infinite;
   bounded.reserve(lights_.size());
@@ -51,7 +52,7 @@ float LightSet::pdf(const Vec3& ref, const Vec3& n, const SurfaceHit& hit, float
 }
 
 float LightSet::environment_pdf(const Vec3& ref, const Vec3& n, const Vec3& w) const {
-  if (!(environment_.irradiance > 0)) return 0.0f;
+  if (!environment_sampled_) return 0.0f;
   return selector_.select_pmf(ref, n, environment_id_) * environment_.pdf(w);
 }
 

@@ -49,6 +49,7 @@ class LightSet {
   std::vector<int64_t> first_light_;  // per shape: id of its first light, or -1
   EnvironmentLight environment_;
   std::size_t environment_id_ = 0;
+  bool environment_sampled_ = false;  // the environment is among lights_ (SceneLights)
   LightSelector selector_;
 };
 

@@ -308,6 +308,7 @@ void write_render_options(const SceneDesc& s, ojson& j) {
   j["sampler"] = sampler;
   j["integrator"] = {{"max_depth", s.integrator.max_depth}, {"rr_depth", s.integrator.rr_depth}};
   if (s.integrator.regularize) j["integrator"]["regularize"] = true;
+  if (!s.integrator.sample_constant_environment) j["integrator"]["sample_constant_environment"] = false;
 }
 
 ojson textures_json(const SceneDesc& s) {

@@ -256,3 +256,37 @@ TEST(LightSelection, EnvironmentAndSmallLightsStayUnbiased) {
   EXPECT_LT(se, 0.005 * expected);
   EXPECT_NEAR(mu, expected, 4 * se + 1e-4 * expected) << "se " << se;
 }
+
+// pbrt-v4's rule (IntegratorDesc::sample_constant_environment false, set by every pbrt import):
+// a constant environment is no light to sample. Escaping rays still see it, and BSDF sampling
+// finds it at MIS weight 1 (environment_pdf 0); every light sample lands on an emitter.
+TEST(LightSelection, ConstantEnvironmentLeftToBsdfSamplingIsNoLight) {
+  for (const bool sampled : {true, false}) {
+    SceneDesc s = many_lights(1, Vec3(0.0f), true);
+    s.integrator.sample_constant_environment = sampled;
+    EmbreeDevice device;
+    EmbreeScene scene(s, device);
+    TextureSet textures(scene.desc());
+    LightSet lights(scene, textures);
+    SCOPED_TRACE(sampled ? "sampled" : "left to BSDF sampling");
+    EXPECT_TRUE(lights.has_environment());
+    EXPECT_EQ(lights.environment_id(), lights.light_count() - (sampled ? 1 : 0));
+    const Vec3 ref(0.3f, 0, 0.2f), n(0, 1, 0);
+    const float pdf = lights.environment_pdf(ref, n, normalize(Vec3(0.2f, 1, 0.1f)));
+    if (sampled)
+      EXPECT_GT(pdf, 0.0f);
+    else
+      EXPECT_EQ(pdf, 0.0f);
+    Rng rng(3);
+    int at_infinity = 0;
+    for (int i = 0; i < 4000; ++i) {
+      LightSample ls;
+      if (lights.sample(ref, n, 0, float(rng.uniform()), {rng.uniform(), rng.uniform()}, &ls) && ls.at_infinity)
+        ++at_infinity;
+    }
+    if (sampled)
+      EXPECT_GT(at_infinity, 0);
+    else
+      EXPECT_EQ(at_infinity, 0);
+  }
+}

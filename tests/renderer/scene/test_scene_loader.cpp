@@ -280,6 +280,17 @@ TEST_F(SceneLoader, RegularizeMustBeABoolean) {
   EXPECT_ERROR(f, "s.json:4:32: integrator.regularize must be true or false, got 1");
 }
 
+// pbrt-v4's rule for a constant environment (BSDF sampling alone) is a scene's choice; pdrt's
+// default samples it, and a wrong type is refused at its position.
+TEST_F(SceneLoader, ConstantEnvironmentIsSampledUnlessTheSceneSaysNot) {
+  EXPECT_TRUE(
+      load_scene(scene(kHead + "  \"integrator\": {\"max_depth\": 4}\n}\n")).integrator.sample_constant_environment);
+  EXPECT_FALSE(load_scene(scene(kHead + "  \"integrator\": {\"sample_constant_environment\": false}\n}\n"))
+                   .integrator.sample_constant_environment);
+  fs::path f = scene(kHead + "  \"integrator\": {\"sample_constant_environment\": 0}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:49: integrator.sample_constant_environment must be true or false, got 0");
+}
+
 TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {
   SceneDesc s =
       load_scene(scene("{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"

@@ -44,7 +44,8 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
     bool found;
-    if (depth == settings_.max_depth && depth > 0 && !hits_can_emit_) {
+    const bool last = depth == settings_.max_depth && depth > 0;  // a vertex that can only emit
+    if (last && !hits_can_emit_) {
       // The last vertex scatters nothing and no surface emits: only an escaping ray adds light
       // (none without an environment), and Embree's any-hit occlusion query costs less than the
       // nearest hit.
@@ -70,11 +71,8 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
       }
       break;
     }
-    // The vertex at max_depth only emits: a surface that cannot needs no shading.
-    const std::vector<Material>& scene_materials = scene_.desc().materials;
-    if (depth == settings_.max_depth && depth > 0 &&
-        scene_materials[std::size_t(scene_.material(hit.shape))].type != MaterialType::Emitter)
-      break;
+    // A surface that cannot emit needs no shading at the last vertex.
+    if (last && scene_.desc().materials[std::size_t(scene_.material(hit.shape))].type != MaterialType::Emitter) break;
     const Vec3 wo_world = -ray.dir;
     const MaterialSet::Shading shading = materials_.at(hit, wo_world, time, settings_.regularize && any_non_delta);
     const Material& mat = *shading.material;

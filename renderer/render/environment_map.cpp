@@ -7,7 +7,8 @@
 
 namespace pdrt {
 
-EnvironmentMap::EnvironmentMap(int width, int height, std::vector<float> rgb, Vec3 scale, float rotation_deg)
+EnvironmentMap::EnvironmentMap(int width, int height, std::vector<float> rgb, Vec3 scale, float rotation_deg,
+                               EnvironmentSampling sampling)
     : width_(width), height_(height), rgb_(std::move(rgb)), scale_(scale) {
   const double r = double(rotation_deg) * M_PI / 180;
   cos_r_ = float(std::cos(r)), sin_r_ = float(std::sin(r));
@@ -22,22 +23,32 @@ EnvironmentMap::EnvironmentMap(int width, int height, std::vector<float> rgb, Ve
   // The cell means of the interpolated luminance (1/8, 6/8, 1/8 per axis: the integral of
   // the linear interpolant over a cell whose centre is a texel centre).
   constexpr double k[3] = {0.125, 0.75, 0.125};
-  std::vector<double> f(lum.size());
+  std::vector<double> cell(lum.size());
   double mean = 0;
   for (int y = 0; y < h; ++y) {
     const double t0 = M_PI * y / h, t1 = M_PI * (y + 1) / h;
-    const double sin_c = std::sin(M_PI * (y + 0.5) / h);
     const double solid_angle = 2 * M_PI / w * (std::cos(t0) - std::cos(t1));
     for (int x = 0; x < w; ++x) {
       double m = 0;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) m += k[dy + 1] * k[dx + 1] * at(x + dx, y + dy);
-      f[std::size_t(y) * w + x] = m * sin_c;
+      cell[std::size_t(y) * w + x] = m;
       mean += m * solid_angle;
     }
   }
   mean /= 4 * M_PI;
   irradiance_ = mean > 0 ? float(M_PI * mean) : 0.0f;
+  const bool compensated = sampling == EnvironmentSampling::Compensated;
+  const bool above_mean = std::any_of(cell.begin(), cell.end(), [&](double m) { return m > mean; });
+  std::vector<double> f(lum.size());
+  for (int y = 0; y < h; ++y) {
+    const double sin_c = std::sin(M_PI * (y + 0.5) / h);
+    for (int x = 0; x < w; ++x) {
+      const double m = cell[std::size_t(y) * w + x];
+      // Compensated with nothing above the mean: uniform over the sphere (pbrt-v4).
+      f[std::size_t(y) * w + x] = (!compensated ? m : above_mean ? std::max(m - mean, 0.0) : 1.0) * sin_c;
+    }
+  }
   distribution_ = PiecewiseConstant2D(f, std::size_t(w), std::size_t(h), 0, 1, 0, 1);
 }
 

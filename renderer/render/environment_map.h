@@ -9,10 +9,16 @@
 // texel grid: cell (i, j) holds the mean over the cell of the interpolated luminance (the
 // 3 x 3 texels around it, weights 1/8, 6/8, 1/8 per axis) times sin(theta) at the row's
 // centre. The mean, not the texel, because the interpolation spreads a texel over its
-// neighbours' cells: every direction of non-zero radiance then has a non-zero pdf. No
-// uniform blend and no compensation (pbrt-v4's allowIncompletePDF): light sampling alone
-// stays an unbiased estimator, and a constant map keeps a non-empty distribution
-// (docs/renderer.md). pdf(w) = p(u, v) / (2 pi^2 sin theta), the exact density of sample().
+// neighbours' cells: every direction of non-zero radiance then has a non-zero pdf, and light
+// sampling alone stays an unbiased estimator. pdf(w) = p(u, v) / (2 pi^2 sin theta), the
+// exact density of sample().
+//
+// Compensated sampling (EnvironmentSampling::Compensated, pbrt-v4's allowIncompletePDF) uses
+// max(cell mean - the map's solid-angle mean, 0) instead (Karlik et al. 2019, "MIS
+// compensation"): directions dimmer than average get pdf 0 and are left to BSDF sampling,
+// so it is only valid under MIS with a BSDF that can reach them. A constant map, with
+// nothing above its mean, is sampled uniformly over the sphere, as pbrt-v4 does.
+#include "renderer/scene/settings_names.h"
 #include "renderer/scene/vec3.h"
 #include "sampling/core/piecewise_constant.h"
 
@@ -25,7 +31,8 @@ class EnvironmentMap {
  public:
   EnvironmentMap() = default;
   // `rgb`: width * height linear RGB, top row first, finite and >= 0.
-  EnvironmentMap(int width, int height, std::vector<float> rgb, Vec3 scale, float rotation_deg);
+  EnvironmentMap(int width, int height, std::vector<float> rgb, Vec3 scale, float rotation_deg,
+                 EnvironmentSampling sampling = EnvironmentSampling::Full);
 
   bool empty() const { return width_ == 0; }
   // Radiance arriving from the world direction w (unit).

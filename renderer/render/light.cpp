@@ -34,9 +34,12 @@ SceneLights lights_from_scene(const EmbreeScene& scene, const TextureSet& textur
     }
   }
   out.lights.insert(out.lights.end(), distant.begin(), distant.end());
-  out.environment = EnvironmentLight(d.environment);
+  // Compensated: a constant environment has nothing above its mean (environment_map.h), and
+  // pbrt-v4's UniformInfiniteLight then takes no light samples at all.
+  const EnvironmentSampling sampling = d.integrator.environment_sampling;
+  out.environment = EnvironmentLight(d.environment, sampling);
   out.environment_sampled =
-      out.environment.irradiance > 0 && (out.environment.has_image() || d.integrator.sample_constant_environment);
+      out.environment.irradiance > 0 && (out.environment.has_image() || sampling == EnvironmentSampling::Full);
   if (out.environment_sampled) out.lights.push_back(out.environment);
   return out;
 }

@@ -37,7 +37,7 @@ struct SceneLights {
   std::vector<Light> lights;
   std::vector<int64_t> first_light;  // per shape: the id of its first light, or -1
   EnvironmentLight environment;      // what escaping rays see (black when there is none)
-  // Whether the environment is the last of `lights` (IntegratorDesc::sample_constant_environment).
+  // Whether the environment is the last of `lights` (IntegratorDesc::environment_sampling).
   bool environment_sampled = false;
 };
 

@@ -89,10 +89,10 @@ struct IntegratorDesc {
   // Path regularisation (biased, off by default): after the first non-delta scattering, vertices
   // shade with regularized(material) (render/bsdf.h), which roughens near-specular lobes.
   bool regularize = false;
-  // Whether next-event estimation samples a constant environment. pbrt-v4's path integrator
-  // does not (UniformInfiniteLight::SampleLi with allowIncompletePDF): BSDF sampling alone
-  // reaches it, at MIS weight 1. pbrt imports set false; an environment image is always sampled.
-  bool sample_constant_environment = true;
+  // How next-event estimation samples the environment (settings_names.h). Compensated is
+  // pbrt-v4's path integrator (allowIncompletePDF in UniformInfiniteLight and
+  // ImageInfiniteLight): every pbrt import sets it.
+  EnvironmentSampling environment_sampling = EnvironmentSampling::Full;
 };
 
 struct MeshData {

@@ -291,11 +291,12 @@ void SceneParser::sampler(const JsonObject& o) {
 }
 
 void SceneParser::integrator(const JsonObject& o) {
-  o.allow({"max_depth", "rr_depth", "regularize", "sample_constant_environment"});
+  o.allow({"max_depth", "rr_depth", "regularize", "environment_sampling"});
   if (auto n = o.get("max_depth")) scene_.integrator.max_depth = n->int_at_least(1);
   if (auto n = o.get("rr_depth")) scene_.integrator.rr_depth = n->int_at_least(1);
   if (auto n = o.get("regularize")) scene_.integrator.regularize = n->boolean();
-  if (auto n = o.get("sample_constant_environment")) scene_.integrator.sample_constant_environment = n->boolean();
+  if (auto n = o.get("environment_sampling"))
+    scene_.integrator.environment_sampling = n->choice(kEnvironmentSamplingNames);
 }
 
 int SceneParser::texture_named(const JsonNode& n) const {

@@ -308,7 +308,8 @@ void write_render_options(const SceneDesc& s, ojson& j) {
   j["sampler"] = sampler;
   j["integrator"] = {{"max_depth", s.integrator.max_depth}, {"rr_depth", s.integrator.rr_depth}};
   if (s.integrator.regularize) j["integrator"]["regularize"] = true;
-  if (!s.integrator.sample_constant_environment) j["integrator"]["sample_constant_environment"] = false;
+  if (s.integrator.environment_sampling != EnvironmentSampling::Full)
+    j["integrator"]["environment_sampling"] = environment_sampling_name(s.integrator.environment_sampling);
 }
 
 ojson textures_json(const SceneDesc& s) {

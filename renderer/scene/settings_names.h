@@ -37,15 +37,26 @@ enum class AdaptiveDecision { Shared, Split };
 inline constexpr NamedValue<AdaptiveDecision> kAdaptiveDecisionNames[] = {{AdaptiveDecision::Shared, "shared"},
                                                                           {AdaptiveDecision::Split, "split"}};
 
+// How next-event estimation samples the environment (integrator.environment_sampling):
+//   Full         a constant environment uniformly, an image in proportion to its luminance
+//   Compensated  pbrt-v4's path integrator (allowIncompletePDF; Karlik et al. 2019, "MIS
+//                compensation"): a constant environment is left to BSDF sampling, an image is
+//                sampled in proportion to max(luminance - its mean, 0)
+enum class EnvironmentSampling { Full, Compensated };
+inline constexpr NamedValue<EnvironmentSampling> kEnvironmentSamplingNames[] = {
+    {EnvironmentSampling::Full, "full"}, {EnvironmentSampling::Compensated, "compensated"}};
+
 static_assert(covers_in_order(kReconstructionNames) && std::size(kReconstructionNames) == 3);
 static_assert(covers_in_order(kAdaptiveMetricNames) && std::size(kAdaptiveMetricNames) == 3);
 static_assert(covers_in_order(kAdaptiveVarianceNames) && std::size(kAdaptiveVarianceNames) == 2);
 static_assert(covers_in_order(kAdaptiveDecisionNames) && std::size(kAdaptiveDecisionNames) == 2);
+static_assert(covers_in_order(kEnvironmentSamplingNames) && std::size(kEnvironmentSamplingNames) == 2);
 
 inline const char* reconstruction_name(Reconstruction r) { return name_in(kReconstructionNames, r); }
 inline const char* adaptive_metric_name(AdaptiveMetricKind m) { return name_in(kAdaptiveMetricNames, m); }
 inline const char* adaptive_variance_name(AdaptiveVariance v) { return name_in(kAdaptiveVarianceNames, v); }
 inline const char* adaptive_decision_name(AdaptiveDecision d) { return name_in(kAdaptiveDecisionNames, d); }
+inline const char* environment_sampling_name(EnvironmentSampling e) { return name_in(kEnvironmentSamplingNames, e); }
 
 // False for a name the table lacks.
 inline bool parse_reconstruction(const std::string& name, Reconstruction* out) {

@@ -9,9 +9,9 @@ namespace pdrt {
 // hemisphere on either side of n delivers E = pi L; an image, pi times its mean luminance
 // over the sphere. No scene-size term: the lights' importance falls with distance, the
 // environment's does not.
-EnvironmentLight::EnvironmentLight(const EnvironmentDesc& d) {
+EnvironmentLight::EnvironmentLight(const EnvironmentDesc& d, EnvironmentSampling sampling) {
   if (d.has_map()) {
-    map = std::make_shared<const EnvironmentMap>(d.width, d.height, d.rgb, d.scale, d.rotation_deg);
+    map = std::make_shared<const EnvironmentMap>(d.width, d.height, d.rgb, d.scale, d.rotation_deg, sampling);
     irradiance = map->irradiance_estimate();
   } else {
     constant = d.radiance;

@@ -1,8 +1,8 @@
 #pragma once
 // The environment: radiance arriving from every direction, constant or an image
 // (environment_map.h). A constant one is sampled uniformly over the sphere of directions, an
-// image by its luminance x sin(theta). Beside the light BVH, its importance is what it
-// delivers to a surface: pi x its (solid-angle mean) luminance.
+// image by its luminance x sin(theta) (or that less its mean, compensated). Beside the light
+// BVH, its importance is what it delivers to a surface: pi x its (solid-angle mean) luminance.
 #include "renderer/render/environment_map.h"
 #include "renderer/render/light_bounds.h"
 #include "renderer/render/lights/light_sample.h"
@@ -19,7 +19,9 @@ struct EnvironmentLight {
   float irradiance = 0;                       // pi x (mean) luminance, 0 if it emits nothing
 
   EnvironmentLight() = default;
-  explicit EnvironmentLight(const EnvironmentDesc& d);
+  // sampling: how next-event estimation samples an image (environment_map.h); whether a
+  // constant environment is sampled at all is the light set's choice (lights_from_scene).
+  explicit EnvironmentLight(const EnvironmentDesc& d, EnvironmentSampling sampling = EnvironmentSampling::Full);
 
   bool has_image() const { return map && !map->empty(); }
   // Whether rays that escape see any light, and the radiance from the unit direction w.

@@ -263,8 +263,8 @@ void apply_pbrt_defaults(SceneDesc& s) {
   s.film.width = 1280, s.film.height = 720;  // pbrt-v4's RGBFilm
   s.film.filter = {};
   s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f, s.film.filter.sigma = 0.5f;  // GaussianFilter
-  s.integrator.max_depth = 5;                        // VolPathIntegrator, the default integrator
-  s.integrator.sample_constant_environment = false;  // BSDF sampling finds a uniform infinite light
+  s.integrator.max_depth = 5;                                              // VolPathIntegrator, the default integrator
+  s.integrator.environment_sampling = EnvironmentSampling::Compensated;    // allowIncompletePDF
   s.sampler.type = sampler_name(SamplerKind::ZSobol), s.sampler.spp = 16;  // ZSobolSampler
 }
 

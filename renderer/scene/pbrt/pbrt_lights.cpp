@@ -61,6 +61,9 @@ void image_light(PbrtBuild& b, const PbrtDirective& d, float scale) {
     e_v = sum * 4 * kPbrtPi / (double(n) * n);
     if (e_v > 0) scale *= float(*e / e_v);
   }
+  b.note(f.at, "\"" + name +
+                   "\" is resampled to pdrt's equirectangular map and interpolated, where pbrt-v4 shows its nearest "
+                   "texel: texel edges seen directly are soft");
   const Mat4 to_light = *inv;
   EnvironmentImage eq = octahedral_to_equirect(img, [&](const Vec3& w) { return to_light.vector(w); });
   EnvironmentDesc& env = b.out.scene.environment;

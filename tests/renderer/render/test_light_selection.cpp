@@ -257,13 +257,13 @@ TEST(LightSelection, EnvironmentAndSmallLightsStayUnbiased) {
   EXPECT_NEAR(mu, expected, 4 * se + 1e-4 * expected) << "se " << se;
 }
 
-// pbrt-v4's rule (IntegratorDesc::sample_constant_environment false, set by every pbrt import):
-// a constant environment is no light to sample. Escaping rays still see it, and BSDF sampling
+// pbrt-v4's rule (EnvironmentSampling::Compensated, set by every pbrt import): a constant
+// environment is no light to sample. Escaping rays still see it, and BSDF sampling
 // finds it at MIS weight 1 (environment_pdf 0); every light sample lands on an emitter.
 TEST(LightSelection, ConstantEnvironmentLeftToBsdfSamplingIsNoLight) {
   for (const bool sampled : {true, false}) {
     SceneDesc s = many_lights(1, Vec3(0.0f), true);
-    s.integrator.sample_constant_environment = sampled;
+    s.integrator.environment_sampling = sampled ? EnvironmentSampling::Full : EnvironmentSampling::Compensated;
     EmbreeDevice device;
     EmbreeScene scene(s, device);
     TextureSet textures(scene.desc());

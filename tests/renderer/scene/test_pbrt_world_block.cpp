@@ -136,6 +136,19 @@ TEST(PbrtWorldBlock, InfiniteLightImageBecomesTheEquirectangularEnvironment) {
                                 << "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float scale\" 1.5\n"
                                 << "AttributeEnd\nShape \"sphere\"\n";
   PbrtImport im = load_pbrt_scene(dir / "s.pbrt", false);
+  // pbrt-v4 looks up the nearest texel, pdrt interpolates its resampled map: reported, and
+  // refused by --strict.
+  const std::string note = (dir / "s.pbrt").string() +
+                           ":6:24: \"sky.exr\" is resampled to pdrt's equirectangular map and interpolated, where "
+                           "pbrt-v4 shows its nearest texel: texel edges seen directly are soft";
+  EXPECT_EQ(im.report, std::vector<std::string>{note});
+  EXPECT_THROW(
+      try { load_pbrt_scene(dir / "s.pbrt", true); } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), note + " [--strict]");
+        throw;
+      },
+      InputError);
+  EXPECT_EQ(im.scene.integrator.environment_sampling, EnvironmentSampling::Compensated);
   const EnvironmentDesc& e = im.scene.environment;
   ASSERT_TRUE(e.has_map());
   EXPECT_EQ(e.width, 64);

@@ -280,15 +280,16 @@ TEST_F(SceneLoader, RegularizeMustBeABoolean) {
   EXPECT_ERROR(f, "s.json:4:32: integrator.regularize must be true or false, got 1");
 }
 
-// pbrt-v4's rule for a constant environment (BSDF sampling alone) is a scene's choice; pdrt's
-// default samples it, and a wrong type is refused at its position.
-TEST_F(SceneLoader, ConstantEnvironmentIsSampledUnlessTheSceneSaysNot) {
-  EXPECT_TRUE(
-      load_scene(scene(kHead + "  \"integrator\": {\"max_depth\": 4}\n}\n")).integrator.sample_constant_environment);
-  EXPECT_FALSE(load_scene(scene(kHead + "  \"integrator\": {\"sample_constant_environment\": false}\n}\n"))
-                   .integrator.sample_constant_environment);
-  fs::path f = scene(kHead + "  \"integrator\": {\"sample_constant_environment\": 0}\n}\n");
-  EXPECT_ERROR(f, "s.json:4:49: integrator.sample_constant_environment must be true or false, got 0");
+// pbrt-v4's environment sampling (MIS compensation) is a scene's choice; pdrt's default is
+// full sampling, and an unknown name is refused at its position.
+TEST_F(SceneLoader, EnvironmentSamplingIsFullUnlessTheSceneSaysCompensated) {
+  EXPECT_EQ(load_scene(scene(kHead + "  \"integrator\": {\"max_depth\": 4}\n}\n")).integrator.environment_sampling,
+            EnvironmentSampling::Full);
+  EXPECT_EQ(load_scene(scene(kHead + "  \"integrator\": {\"environment_sampling\": \"compensated\"}\n}\n"))
+                .integrator.environment_sampling,
+            EnvironmentSampling::Compensated);
+  fs::path f = scene(kHead + "  \"integrator\": {\"environment_sampling\": \"incomplete\"}\n}\n");
+  EXPECT_ERROR(f, "s.json:4:42: integrator.environment_sampling must be one of full, compensated, got \"incomplete\"");
 }
 
 TEST_F(SceneLoader, FilterRadiusDefaultDependsOnType) {

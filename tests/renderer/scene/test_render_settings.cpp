@@ -73,6 +73,7 @@ TEST(SettingsNames, EveryValueRoundTripsThroughItsTable) {
   expect_round_trip(kAdaptiveMetricNames);
   expect_round_trip(kAdaptiveVarianceNames);
   expect_round_trip(kAdaptiveDecisionNames);
+  expect_round_trip(kEnvironmentSamplingNames);
 }
 
 TEST(SettingsNames, ListsAndSamplersComeFromTheTables) {

@@ -92,6 +92,7 @@ TEST(SceneWriter, AnImportedPbrtSceneRoundTripsToTheSameImage) {
   write_scene_json(s, dir / "s.json");
   EXPECT_TRUE(fs::exists(dir / "s.meshes" / "shape0.obj"));
   SceneDesc back = load_scene(dir / "s.json");
+  EXPECT_EQ(back.integrator.environment_sampling, EnvironmentSampling::Compensated);  // pbrt-v4's rule kept
   EXPECT_LT(image_difference(s, back), 1e-3);
   fs::remove_all(dir);
 }

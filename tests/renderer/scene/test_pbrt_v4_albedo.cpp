@@ -115,12 +115,13 @@ TEST(PbrtV4Albedo, RoughDielectricUnderAUniformInfiniteLight) {
 }
 
 // Under an image light, pbrt-v4 light-samples from the image less its average (MIS
-// compensation): the layered BxDF's f() bias then enters with a smaller light weight than
-// when sampled by the image itself, which put pdrt 1.6 % (coated diffuse) and 1.1 % (coated
-// conductor) below pbrt-v4 here.
+// compensation), which raises the light samples' MIS weight where the sky is bright, and with
+// it the share of the layered BxDF's f() bias. Sampled by the image itself, pdrt was 1.8 %
+// (coated diffuse) and 1.2 % (coated conductor) below pbrt-v4 here. ±0.4 %: 6 standard errors
+// of these renders (0.06-0.07 %; pbrt-v4's values have 0.01 %).
 TEST(PbrtV4Albedo, CoatedDiffuseUnderAnImageInfiniteLight) {
   const double a = under_the_sky("\"coateddiffuse\" \"rgb reflectance\" [0.5 0.5 0.5] \"float roughness\" 0.15", 1.0);
-  EXPECT_NEAR(a, 0.2139907, 0.006 * 0.2139907);
+  EXPECT_NEAR(a, 0.2139907, 0.004 * 0.2139907);
 }
 
 TEST(PbrtV4Albedo, CoatedConductorUnderAnImageInfiniteLight) {
@@ -128,5 +129,5 @@ TEST(PbrtV4Albedo, CoatedConductorUnderAnImageInfiniteLight) {
       "\"coatedconductor\" \"float interface.roughness\" 0.15 \"float interface.eta\" 1.5 "
       "\"rgb conductor.eta\" [0.2 0.2 0.2] \"rgb conductor.k\" [3 3 3] \"float conductor.roughness\" 0.3",
       1.0);
-  EXPECT_NEAR(a, 0.2627362, 0.006 * 0.2627362);
+  EXPECT_NEAR(a, 0.2627362, 0.004 * 0.2627362);
 }

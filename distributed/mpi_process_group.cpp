@@ -43,25 +43,60 @@ MpiProcessGroup& MpiProcessGroup::instance() {
   return group;
 }
 
-std::vector<std::vector<std::byte>> MpiProcessGroup::all_gather(const std::vector<std::byte>& mine) const {
-  // Sizes first, then the bytes; MPI counts are int, so a block over 2 GiB is refused.
+namespace {
+
+// MPI counts are int, so a block or an exchange over 2 GiB is refused.
+int block_size(const std::vector<std::byte>& mine, int rank) {
   if (mine.size() > size_t(std::numeric_limits<int>::max()))
-    throw InputError("rank " + std::to_string(rank_) + ": a block of " + std::to_string(mine.size()) +
+    throw InputError("rank " + std::to_string(rank) + ": a block of " + std::to_string(mine.size()) +
                      " bytes exceeds MPI's 2 GiB message limit");
-  const int n = int(mine.size());
-  std::vector<int> counts(static_cast<size_t>(size_)), displs(static_cast<size_t>(size_));
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  return int(mine.size());
+}
+
+// Displacements of the blocks of `counts` in one buffer; the buffer's size.
+size_t displacements(const std::vector<int>& counts, std::vector<int>* displs) {
   long long total = 0;
-  for (int r = 0; r < size_; ++r) {
+  displs->assign(counts.size(), 0);
+  for (size_t r = 0; r < counts.size(); ++r) {
     if (total > std::numeric_limits<int>::max()) throw InputError("an exchange over 2 GiB exceeds MPI's message limit");
-    displs[size_t(r)] = int(total);
-    total += counts[size_t(r)];
+    (*displs)[r] = int(total);
+    total += counts[r];
   }
-  std::vector<std::byte> all(static_cast<size_t>(total));
+  return size_t(total);
+}
+
+std::vector<std::vector<std::byte>> split(const std::vector<std::byte>& all, const std::vector<int>& counts,
+                                          const std::vector<int>& displs) {
+  std::vector<std::vector<std::byte>> out(counts.size());
+  for (size_t r = 0; r < counts.size(); ++r)
+    out[r].assign(all.begin() + displs[r], all.begin() + displs[r] + counts[r]);
+  return out;
+}
+
+}  // namespace
+
+// Sizes first, then the bytes.
+std::vector<std::vector<std::byte>> MpiProcessGroup::all_gather(const std::vector<std::byte>& mine) const {
+  const int n = block_size(mine, rank_);
+  std::vector<int> counts(static_cast<size_t>(size_)), displs;
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::vector<std::byte> all(displacements(counts, &displs));
   MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, MPI_COMM_WORLD);
-  std::vector<std::vector<std::byte>> out(static_cast<size_t>(size_));
-  for (int r = 0; r < size_; ++r)
-    out[size_t(r)].assign(all.begin() + displs[size_t(r)], all.begin() + displs[size_t(r)] + counts[size_t(r)]);
+  return split(all, counts, displs);
+}
+
+GatheredBytes MpiProcessGroup::gather_to_lead(const std::vector<std::byte>& mine) const {
+  const int n = block_size(mine, rank_);
+  const bool lead = rank_ == 0;
+  std::vector<int> counts(lead ? static_cast<size_t>(size_) : 0), displs;
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  GatheredBytes out;
+  if (lead) {
+    out.bytes.resize(displacements(counts, &displs));
+    out.begin.assign(displs.begin(), displs.end());
+    out.begin.push_back(out.bytes.size());
+  }
+  MPI_Gatherv(mine.data(), n, MPI_BYTE, out.bytes.data(), counts.data(), displs.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
   return out;
 }
 

@@ -25,6 +25,7 @@ class MpiProcessGroup final : public ProcessGroup {
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   std::vector<std::vector<std::byte>> all_gather(const std::vector<std::byte>& mine) const override;
+  GatheredBytes gather_to_lead(const std::vector<std::byte>& mine) const override;
 
  private:
   MpiProcessGroup();

@@ -62,7 +62,8 @@ int render_adaptive_rounds(const AdaptiveDesc& ad, const RenderRegion& region, R
   {
     // Round 0 in progressive passes, so that a stopped render has every pixel at some spp.
     Progress progress("render (adaptive, round 0)", passes.work([&](int, int) { return int64_t(ad.min_spp); }), quiet);
-    if (render_progressive(passes, ad.min_spp, progress, on_pass) < ad.min_spp) return rounds;
+    // Every rank decides the next rounds from the whole film.
+    if (render_progressive(passes, ad.min_spp, progress, on_pass, FilmsTo::Everyone) < ad.min_spp) return rounds;
   }
   AdaptiveMetric metric(ad);
   // In film coordinates (the rendered rectangle); the image mean is the crop's.

@@ -32,11 +32,13 @@ inline int pass_count(int64_t spp) {
 
 class Progress;
 class TilePasses;
+enum class FilmsTo;
 
 // Renders every pixel from 0 to `spp` samples in those passes, on `progress` (the whole render's
 // work: budget samples of this rank's pixels); calls `on_pass` (if set) with the spp after each
 // complete pass. Returns the spp every pixel reached: `spp`, or less when a pass was stopped.
+// `last`: the ranks that read the films after the last pass (tile_passes.h).
 int64_t render_progressive(TilePasses& passes, int64_t spp, Progress& progress,
-                           const std::function<void(int64_t)>& on_pass);
+                           const std::function<void(int64_t)>& on_pass, FilmsTo last);
 
 }  // namespace pdrt

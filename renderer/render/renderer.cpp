@@ -104,7 +104,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     Progress progress("render", passes.work([spp](int, int) { return spp; }), quiet);
     const int64_t first = next_pass_end(0, spp);
     progress.expect(res.stats.estimate.seconds, passes.work([first](int, int) { return first; }));
-    render_progressive(passes, spp, progress, opt.on_pass);
+    render_progressive(passes, spp, progress, opt.on_pass, FilmsTo::Lead);  // rank 0 writes the image
   }
   res.stats.passes_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count();
   res.stats.sampler_profile = profiler.result();

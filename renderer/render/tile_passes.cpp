@@ -48,7 +48,7 @@ double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {
   return total;
 }
 
-bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share) {
+bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress, FilmsTo to) {
   std::atomic<bool> cancelled{false};
   for (const std::vector<int>& wave : tiles_.waves()) {
     const std::vector<std::size_t> own = own_tiles(wave);
@@ -63,8 +63,10 @@ bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& p
       }
     });
     if (group_.size() > 1) {  // after an exchange in which any rank was stopped, all stop
-      if (share || tiles_.spread() > 0)
+      if (to == FilmsTo::Everyone || tiles_.spread() > 0)
         cancelled = exchange_.exchange(wave, cancelled, mine_) || cancelled;
+      else if (to == FilmsTo::Lead)
+        cancelled = exchange_.exchange_to_lead(wave, cancelled, mine_) || cancelled;
       else if (exchange_.any_interrupted(cancelled, mine_))
         cancelled = true, exchange_.exchange(wave, true, mine_);
     }

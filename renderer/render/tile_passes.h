@@ -21,6 +21,9 @@ namespace pdrt {
 
 class Progress;
 
+// Which ranks need every rank's tiles after a pass (TilePasses::run).
+enum class FilmsTo { None, Lead, Everyone };
+
 class TilePasses {
  public:
   // `decider`: the decision samples' sampler under "split", else nullptr; `start`: when the
@@ -31,11 +34,12 @@ class TilePasses {
 
   // Pixel (x, y) of the film (film coordinates) gets samples up to end_of(x, y); `progress`
   // advances by the budget samples each tile adds. False when the pass was stopped.
-  // `share`: the films are read after the pass (the image, adaptive decisions), so every rank
-  // gets every rank's tiles; without it, and without splatting (no footprint reaches another
-  // rank's tile), the ranks only agree whether to stop, as each renders the same tiles in
-  // every pass, and the blocks go only when one was stopped.
-  bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, bool share = true);
+  // `to`: who reads the films after the pass. Everyone (adaptive decisions): every rank gets
+  // every rank's tiles. Lead (the image, the last pass of a fixed-spp render): rank 0 alone
+  // gets them. None: without splatting (no footprint reaches another rank's tile) the ranks
+  // only agree whether to stop, as each renders the same tiles in every pass, and the blocks
+  // go only when one was stopped. Splatting shares every wave with everyone.
+  bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, FilmsTo to = FilmsTo::Everyone);
   // The budget samples a pass to end_of would add to this rank's pixels (its progress's total).
   double work(const std::function<int64_t(int, int)>& end_of) const;
 

@@ -24,13 +24,21 @@ class WaveExchange {
   // forever. Sends this rank's footprints of `wave` with whether it was `interrupted`, copies
   // the others'; true when any rank was. Adds the bytes sent and the time taken to `mine`.
   bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
+  // The same, but only rank 0 (which writes the image) copies the others' footprints in: the
+  // last exchange of a render whose films nothing else reads (1/N of the traffic). Every rank
+  // still learns whether any was interrupted.
+  bool exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
   // Collective: whether any rank was `interrupted`, without the blocks (a pass whose tiles no
   // other rank reads before the next pass: progressive_passes.h).
   bool any_interrupted(bool interrupted, RankStats& mine) const;
 
  private:
-  // Copies the footprints of `rank`'s tiles of `wave` to (pack) or from (unpack) `bytes`.
-  void blocks(const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes, bool pack) const;
+  // Appends the footprints of `rank`'s tiles of `wave` to `bytes` (after its flag byte), or
+  // copies them from `from` (which starts with the flag byte) into the films.
+  void pack(const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes) const;
+  void unpack(const std::vector<int>& wave, int rank, const std::byte* from) const;
+  template <class Copy>
+  void rows(const std::vector<int>& wave, int rank, Copy&& copy) const;
 
   const ProcessGroup& group_;
   const TileWaves& tiles_;

@@ -10,6 +10,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <atomic>
 #include <chrono>
@@ -219,6 +220,26 @@ TEST(CliMpi, StatsListEveryRanksShare) {
   EXPECT_NE(j.find("\"ranks\""), std::string::npos) << j;
   EXPECT_NE(j.find("\"rank\": 1"), std::string::npos) << j;
   EXPECT_NE(j.find("\"bytes_sent\""), std::string::npos) << j;
+}
+
+// A fixed-spp render's films are read only by rank 0, which writes the image: its tiles go to
+// no one, the other rank's to rank 0 alone. 16 spp in three passes: each rank sends one byte
+// per pass (whether it was stopped), and rank 1 also its footprints, 224 bytes a pixel, after
+// the last. (The image is the single-process one: RanksRenderTheSingleProcessImageOverProgressivePasses.)
+TEST(CliMpi, AFixedSppRenderSendsTheFilmToRankZeroAlone) {
+  const fs::path dir = scratch_dir("mpi-to-lead");
+  std::ofstream(dir / "s.json") << scene_text("sobol", "", "", false);
+  ASSERT_EQ(
+      run(kMpirun + "2 '" + PDRT_BINARY + "' render '" + (dir / "s.json").string() + "' --quiet --threads 1 -o '" +
+          (dir / "o.exr").string() + "' --stats '" + (dir / "stats.json").string() + "'"),
+      0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
+  ASSERT_EQ(j.at("ranks").size(), 2u);
+  EXPECT_EQ(j["ranks"][0]["bytes_sent"].get<int64_t>(), 3);
+  const int64_t film = j["ranks"][1]["bytes_sent"].get<int64_t>() - 3 - 1;  // less the flags and the block's own
+  EXPECT_EQ(film % 224, 0) << film;
+  EXPECT_GT(film / 224, 200) << "at least three of the 40 x 28 film's tiles";
+  EXPECT_LT(film / 224, 40 * 28);
 }
 
 TEST(CliMpi, AKilledRankFailsTheRunWithinSecondsNamingIt) {

@@ -34,8 +34,9 @@ SceneLights lights_from_scene(const EmbreeScene& scene, const TextureSet& textur
     }
   }
   out.lights.insert(out.lights.end(), distant.begin(), distant.end());
-  // Compensated: a constant environment has nothing above its mean (environment_map.h), and
-  // pbrt-v4's UniformInfiniteLight then takes no light samples at all.
+  // Compensated: a constant environment takes no light samples, as pbrt-v4's
+  // UniformInfiniteLight (BSDF sampling alone reaches it); an image is sampled from its
+  // compensated distribution (environment_map.h).
   const EnvironmentSampling sampling = d.integrator.environment_sampling;
   out.environment = EnvironmentLight(d.environment, sampling);
   out.environment_sampled =

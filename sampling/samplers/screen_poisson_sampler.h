@@ -6,8 +6,9 @@
 // one of the 24 permutations picked by a hash of the digits above it (Ahmed & Wonka §4; the
 // same nesting as `zsobol`), so aligned blocks of indices stay aligned blocks. Each run of M
 // consecutive indices (M = a table's points: 1024 for the 2-D families, 2048 for time) is one
-// table read in its progressive order (progressive_order.h), picked by a hash of the run, with
-// one digital shift (and an axis swap) for the run. Aligned blocks of the owen-pd tables are
+// table read in its progressive order (progressive_order.h), picked by a hash of the run from
+// the family's first 8 (a cache-sized pool), with one digital shift (and an axis swap) for the
+// run. Aligned blocks of the owen-pd tables are
 // (0,m,2)-nets, so a pixel's 2^m samples, those of every 2 x 2, 4 x 4, ... group of pixels
 // around it that fits in one run, are nets and spread over the plane of samples: the error of
 // neighbouring pixels is complementary (blue noise on screen).

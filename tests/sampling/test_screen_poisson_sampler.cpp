@@ -163,10 +163,19 @@ TEST(ScreenPoissonSampler, TimeSamplesOfAlignedPixelGroupsAreStratified) {
     }
 }
 
+// prepare() fills a window block by block; every value equals the one asked alone: windows
+// that start inside a block, a bounce past the threads' stream caches, and (4096 spp) a
+// pixel's block that spans four runs of the 2-D tables and two of the time tables.
 TEST(ScreenPoissonSampler, PreparedStreamsMatchValueByValueAcrossBlocks) {
   auto s = screen(21, {4, 20, 12});
   for (Family f : {Family::Pixel, Family::Time, Family::Gloss})
-    EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, 2, 40), 0) << family_name(f);  // ten blocks of 4
+    for (int bounce : {2, PixelSampleState::kCachedSalts + 3}) {
+      EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 40), 0) << family_name(f);  // ten blocks of 4
+      EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 43, 6), 0) << family_name(f);
+    }
+  auto big = screen(22, {4096, 4, 4});
+  for (Family f : {Family::Lens, Family::Time})
+    EXPECT_EQ(test::prepared_mismatches(*big, 1, 2, f, 0, 4096 + 100, 1000), 0) << family_name(f);
 }
 
 TEST(ScreenPoissonSampler, RefinementBlocksAreScreenSpacePatternsOfTheirOwn) {

@@ -53,22 +53,37 @@ bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& p
   for (const std::vector<int>& wave : tiles_.waves()) {
     const std::vector<std::size_t> own = own_tiles(wave);
     mine_.tiles += int64_t(own.size());
+    std::vector<uint8_t> took(own.size(), 0);  // the tile took samples
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, own.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t k = r.begin(); k != r.end(); ++k) {
         if (interrupted()) {
           cancelled = true;
           return;
         }
-        progress.advance(double(render_tile(wave[own[k]], end_of, cancelled)));
+        const int64_t added = render_tile(wave[own[k]], end_of, cancelled);
+        took[k] = added > 0;
+        progress.advance(double(added));
       }
     });
     if (group_.size() > 1) {  // after an exchange in which any rank was stopped, all stop
-      if (to == FilmsTo::Everyone || tiles_.spread() > 0)
-        cancelled = exchange_.exchange(wave, cancelled, mine_) || cancelled;
-      else if (to == FilmsTo::Lead)
-        cancelled = exchange_.exchange_to_lead(wave, cancelled, mine_) || cancelled;
-      else if (exchange_.any_interrupted(cancelled, mine_))
-        cancelled = true, exchange_.exchange(wave, true, mine_);
+      // When every rank held the same films before the wave, a tile that took no samples is
+      // the same everywhere still: only the others travel (an adaptive round's few tiles).
+      std::vector<std::size_t> changed;
+      for (std::size_t k = 0; k < own.size(); ++k)
+        if (took[k]) changed.push_back(own[k]);
+      const std::vector<std::size_t>* only = in_step_ ? &changed : nullptr;
+      if (to == FilmsTo::Everyone || tiles_.spread() > 0) {
+        cancelled = exchange_.exchange(wave, cancelled, mine_, only) || cancelled;
+        in_step_ = true;
+      } else if (to == FilmsTo::Lead) {
+        cancelled = exchange_.exchange_to_lead(wave, cancelled, mine_, only) || cancelled;
+        in_step_ = false;
+      } else if (exchange_.any_interrupted(cancelled, mine_)) {
+        cancelled = true, exchange_.exchange(wave, true, mine_, only);
+        in_step_ = true;
+      } else {
+        in_step_ = false;
+      }
     }
     if (cancelled) break;
   }

@@ -38,7 +38,9 @@ class TilePasses {
   // every rank's tiles. Lead (the image, the last pass of a fixed-spp render): rank 0 alone
   // gets them. None: without splatting (no footprint reaches another rank's tile) the ranks
   // only agree whether to stop, as each renders the same tiles in every pass, and the blocks
-  // go only when one was stopped. Splatting shares every wave with everyone.
+  // go only when one was stopped. Splatting shares every wave with everyone. Once every rank
+  // holds the same films (after an exchange with everyone), an exchange carries only the tiles
+  // that took samples since: an adaptive round sends the tiles it refines.
   bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, FilmsTo to = FilmsTo::Everyone);
   // The budget samples a pass to end_of would add to this rank's pixels (its progress's total).
   double work(const std::function<int64_t(int, int)>& end_of) const;
@@ -74,6 +76,8 @@ class TilePasses {
   tbb::enumerable_thread_specific<double> busy_{0.0};  // seconds inside render_tile
   RankStats mine_;
   bool stopped_ = false;
+  // Every rank holds the same films (all zero at the start; after an exchange with everyone).
+  bool in_step_ = true;
 };
 
 }  // namespace pdrt

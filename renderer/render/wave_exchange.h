@@ -23,22 +23,31 @@ class WaveExchange {
   // Collective: every rank takes part in every exchange, interrupted or not, so none waits
   // forever. Sends this rank's footprints of `wave` with whether it was `interrupted`, copies
   // the others'; true when any rank was. Adds the bytes sent and the time taken to `mine`.
-  bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
+  // `changed`: when every rank held the same films before the wave, the positions j in `wave`
+  // of this rank's tiles that took samples in it; only those are sent (the others' footprints
+  // are the same everywhere), with their list. Null: every tile of this rank's is sent.
+  bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine,
+                const std::vector<std::size_t>* changed = nullptr) const;
   // The same, but only rank 0 (which writes the image) copies the others' footprints in: the
   // last exchange of a render whose films nothing else reads (1/N of the traffic). Every rank
   // still learns whether any was interrupted.
-  bool exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine) const;
+  bool exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine,
+                        const std::vector<std::size_t>* changed = nullptr) const;
   // Collective: whether any rank was `interrupted`, without the blocks (a pass whose tiles no
   // other rank reads before the next pass: progressive_passes.h).
   bool any_interrupted(bool interrupted, RankStats& mine) const;
 
  private:
-  // Appends the footprints of `rank`'s tiles of `wave` to `bytes` (after its flag byte), or
-  // copies them from `from` (which starts with the flag byte) into the films.
-  void pack(const std::vector<int>& wave, int rank, std::vector<std::byte>& bytes) const;
+  // A block: a flag byte (bit 0: the rank was interrupted; bit 1: a list follows), then, with
+  // the list, its length and the positions j in the wave of the tiles sent (uint32 each), then
+  // the footprints, row by row. Without the list the block holds every tile of the rank's.
+  // pack appends this rank's footprints (all, or `changed`) to `bytes` (its flag byte written);
+  // unpack copies `rank`'s block from `from` into the films.
+  void pack(const std::vector<int>& wave, const std::vector<std::size_t>* changed, std::vector<std::byte>& bytes) const;
   void unpack(const std::vector<int>& wave, int rank, const std::byte* from) const;
   template <class Copy>
-  void rows(const std::vector<int>& wave, int rank, Copy&& copy) const;
+  void rows(const std::vector<int>& wave, const std::vector<std::size_t>& tiles, std::size_t at, Copy&& copy) const;
+  std::vector<std::size_t> rank_tiles(const std::vector<int>& wave, int rank) const;
 
   const ProcessGroup& group_;
   const TileWaves& tiles_;

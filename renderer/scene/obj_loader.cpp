@@ -7,10 +7,12 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <span>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
@@ -32,8 +34,9 @@ std::string in_quotes(std::string_view s) {
   return r;
 }
 
-std::vector<std::string_view> split_ws(std::string_view line) {
-  std::vector<std::string_view> out;
+// `out` is cleared and reused: a large OBJ has a million lines.
+void split_ws(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
   size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -41,7 +44,6 @@ std::vector<std::string_view> split_ws(std::string_view line) {
     while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
     if (i > b) out.push_back(line.substr(b, i - b));
   }
-  return out;
 }
 
 template <class T>
@@ -87,16 +89,23 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
     b = e + 1;
   }
   auto keyword = [](const std::vector<std::string_view>& tok) { return tok.empty() ? std::string_view() : tok[0]; };
+  std::vector<std::string_view> tok;
   long total_v = 0, total_vn = 0, total_vt = 0;
-  for (std::string_view l : lines) {
-    auto tok = split_ws(l);
-    total_v += keyword(tok) == "v", total_vn += keyword(tok) == "vn", total_vt += keyword(tok) == "vt";
+  for (std::string_view l : lines) {  // the first token alone
+    const size_t b = std::min(l.find_first_not_of(" \t"), l.size());
+    const std::string_view kw = l.substr(b, l.find_first_of(" \t", b) - b);
+    total_v += kw == "v", total_vn += kw == "vn", total_vt += kw == "vt";
   }
   std::vector<UseMtl> usemtl;
   long seen_v = 0, seen_vn = 0, seen_vt = 0;
   for (size_t li = 0; li < lines.size(); ++li) {
-    std::string at = name + ":" + std::to_string(li + 1);
-    auto tok = split_ws(lines[li]);
+    // The location, built only for a message.
+    struct Where {
+      const std::string& name;
+      size_t line;
+      operator std::string() const { return name + ":" + std::to_string(line); }
+    } at{name, li + 1};
+    split_ws(lines[li], tok);
     std::string_view kw = keyword(tok);
     if (kw == "v" || kw == "vn") {
       if (tok.size() < 4) fail(at, std::string(kw == "v" ? "vertex" : "normal") + " needs 3 coordinates");
@@ -127,15 +136,17 @@ std::vector<UseMtl> check_obj_text(const std::string& text, const std::string& n
         // v, v/t, v//n or v/t/n (t is required after one slash, n after two). OBJ indices
         // are 1-based; negative ones count back from the last vertex read.
         std::string_view t = tok[k];
-        std::vector<std::string_view> parts;
+        std::array<std::string_view, 3> part_at;
+        size_t n_parts = 0;
         for (size_t b = 0;;) {
           size_t e = t.find('/', b);
-          parts.push_back(t.substr(b, e == std::string_view::npos ? e : e - b));
+          if (n_parts == part_at.size()) fail(at, "bad face vertex " + in_quotes(t));
+          part_at[n_parts++] = t.substr(b, e == std::string_view::npos ? e : e - b);
           if (e == std::string_view::npos) break;
           b = e + 1;
         }
-        bool shape_ok =
-            parts.size() <= 3 && (parts.size() != 2 || !parts[1].empty()) && (parts.size() != 3 || !parts[2].empty());
+        const std::span<const std::string_view> parts(part_at.data(), n_parts);
+        bool shape_ok = (parts.size() != 2 || !parts[1].empty()) && (parts.size() != 3 || !parts[2].empty());
         if (!shape_ok) fail(at, "bad face vertex " + in_quotes(t));
         auto check = [&](std::string_view part, long total, long seen, const char* what, const char* plural) {
           long idx = 0;
@@ -272,7 +283,12 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
   std::string warn, err;
-  std::istringstream in(*text);
+  // tinyobjloader reads a stream: one over the text already in memory (an istringstream would
+  // copy tens of megabytes).
+  struct TextBuf : std::streambuf {
+    explicit TextBuf(std::string& t) { setg(t.data(), t.data(), t.data() + t.size()); }
+  } buf(*text);
+  std::istream in(&buf);
   MtlReader mtl(file.parent_path());
   if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl, /*triangulate=*/true))
     fail(name, err.empty() ? "tinyobjloader failed" : err.substr(0, err.find('\n')));

@@ -15,6 +15,7 @@
 #include <span>
 #include <sstream>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 
 namespace pdrt {
@@ -329,32 +330,43 @@ ObjModel load_obj(const fs::path& file, bool override_materials) {
     return Vec3(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
   };
   const std::string stem = file.stem().string();
+  // Per position, its first (normal, texture coordinate) in the current group and that mesh
+  // vertex; the group's other combinations in `others`.
+  struct First {
+    int group = -1, n = 0, t = 0;
+    uint32_t index = 0;
+  };
+  std::vector<First> first(static_cast<std::size_t>(nv));
+  std::map<std::tuple<int, int, int>, uint32_t> others;
+  int group = -1;
   for (auto& [mat, corners] : groups) {
     bool has_normals = true, has_uvs = true;
     for (const Corner& c : corners) has_normals &= c.n >= 0, has_uvs &= c.t >= 0;
     ObjPart part;
-    // (vertex, normal) -> index in part.mesh, per texture coordinate index (most OBJs share one).
-    std::unordered_map<uint64_t, uint32_t> remap;
-    std::map<std::pair<uint64_t, int>, uint32_t> remap_uv;
+    // Each distinct (vertex, normal, texture coordinate) becomes one mesh vertex, numbered in
+    // order of first use. Most OBJs give a position one normal and one texture coordinate, so
+    // the first combination of each position is kept in an array and only others in a map.
+    ++group;
+    others.clear();
     auto vertex = [&](const Corner& c) {
-      uint64_t key = (uint64_t(uint32_t(c.v)) << 32) | uint32_t(has_normals ? c.n : -1);
+      const int n = has_normals ? c.n : -1, t = has_uvs ? c.t : -1;
       const uint32_t next = uint32_t(part.mesh.positions.size());
-      bool added;
+      First& f = first[std::size_t(c.v)];
       uint32_t index;
-      if (has_uvs) {
-        auto [it, a] = remap_uv.try_emplace({key, c.t}, next);
-        added = a, index = it->second;
+      if (f.group != group) {
+        f = {group, n, t, next}, index = next;
+      } else if (f.n == n && f.t == t) {
+        return f.index;
       } else {
-        auto [it, a] = remap.try_emplace(key, next);
-        added = a, index = it->second;
+        auto [it, added] = others.try_emplace({c.v, n, t}, next);
+        if (!added) return it->second;
+        index = next;
       }
-      if (added) {
-        part.mesh.positions.push_back(position(c.v));
-        if (has_normals)
-          part.mesh.normals.push_back(
-              {attrib.normals[3 * c.n], attrib.normals[3 * c.n + 1], attrib.normals[3 * c.n + 2]});
-        if (has_uvs) part.mesh.uvs.push_back({attrib.texcoords[2 * c.t], attrib.texcoords[2 * c.t + 1]});
-      }
+      part.mesh.positions.push_back(position(c.v));
+      if (has_normals)
+        part.mesh.normals.push_back(
+            {attrib.normals[3 * c.n], attrib.normals[3 * c.n + 1], attrib.normals[3 * c.n + 2]});
+      if (has_uvs) part.mesh.uvs.push_back({attrib.texcoords[2 * c.t], attrib.texcoords[2 * c.t + 1]});
       return index;
     };
     for (size_t t = 0; t < corners.size(); t += 3) {

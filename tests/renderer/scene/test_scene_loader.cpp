@@ -996,6 +996,53 @@ TEST_F(SceneLoader, ObjRelativeIndicesAndNormals) {
   expect_vec(m.normals[0], 0, 0, 1);
 }
 
+// One mesh vertex per distinct (position, normal, texture coordinate), numbered in order of
+// first use: a cube with one normal per face gives each of its 8 positions 3 vertices, a
+// corner the two triangles of a face share stays one, and a second use of a combination
+// after a different one (position 1 again with the first normal) reuses the first vertex.
+TEST_F(SceneLoader, ObjVerticesAreTheDistinctPositionNormalPairsInOrderOfFirstUse) {
+  fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"c.obj\"}]\n}\n");
+  std::string obj;
+  for (int x : {0, 1})
+    for (int y : {0, 1})
+      for (int z : {0, 1}) {
+        char line[32];
+        std::snprintf(line, sizeof line, "v %d %d %d\n", x, y, z);
+        obj += line;
+      }
+  // Positions are 1 + 4x + 2y + z; the faces x = 0, x = 1, y = 0, y = 1, z = 0, z = 1.
+  obj += "vn -1 0 0\nvn 1 0 0\nvn 0 -1 0\nvn 0 1 0\nvn 0 0 -1\nvn 0 0 1\n";
+  // Each face as two triangles (a b c, a c d), so that the order of first use is a, b, c, d.
+  const int faces[6][4] = {{1, 2, 4, 3}, {5, 7, 8, 6}, {1, 5, 6, 2}, {3, 4, 8, 7}, {1, 3, 7, 5}, {2, 6, 8, 4}};
+  const int halves[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (int k = 0; k < 6; ++k)
+    for (const auto& t : halves) {
+      char line[64];
+      std::snprintf(line, sizeof line, "f %d//%d %d//%d %d//%d\n", faces[k][t[0]], k + 1, faces[k][t[1]], k + 1,
+                    faces[k][t[2]], k + 1);
+      obj += line;
+    }
+  obj += "f 1//1 2//1 4//1\n";  // position 1 with the x = 0 normal again, after others
+  write(f.parent_path() / "c.obj", obj);
+  SceneDesc s = load_scene(f);
+  ASSERT_EQ(s.shapes.size(), 1u);
+  const MeshData& m = s.shapes[0].mesh;
+  ASSERT_EQ(m.positions.size(), 24u);
+  ASSERT_EQ(m.normals.size(), 24u);
+  ASSERT_EQ(m.indices.size(), 3u * 13u);
+  // The first face's four corners are vertices 0..3 in order; its last triangle repeats them.
+  expect_vec(m.positions[2], 0, 1, 1), expect_vec(m.normals[2], -1, 0, 0);
+  EXPECT_EQ(std::vector<uint32_t>(m.indices.end() - 3, m.indices.end()), (std::vector<uint32_t>{0, 1, 2}));
+  // Position 1 (the origin) is vertices 0 (x = 0), 8 (y = 0) and 16 (z = 0).
+  for (uint32_t i : {0u, 8u, 16u}) expect_vec(m.positions[i], 0, 0, 0);
+  expect_vec(m.normals[8], 0, -1, 0), expect_vec(m.normals[16], 0, 0, -1);
+  for (std::size_t t = 0; t + 3 <= m.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 n = m.normals[m.indices[t + k]], n0 = m.normals[m.indices[t]];
+      EXPECT_TRUE(n.x == n0.x && n.y == n0.y && n.z == n0.z) << "triangle " << t / 3;
+    }
+}
+
 TEST_F(SceneLoader, ObjRelativeIndexBeforeFirstVertex) {
   fs::path f = scene(kHead + "  \"objects\": [{\"type\": \"obj\", \"file\": \"q.obj\"}]\n}\n");
   write(f.parent_path() / "q.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n");

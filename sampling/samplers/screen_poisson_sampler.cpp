@@ -54,7 +54,17 @@ class DigitCache {
  public:
   uint32_t operator()(uint32_t z, int bits, uint64_t key) {
     if (key != key_ || bits != bits_) key_ = key, bits_ = bits, valid_ = false;
-    if (valid_ && z == z_) return out_;
+    if (valid_) {
+      const uint32_t diff = z ^ z_;
+      if (diff == 0) return out_;
+      // The next sample of a pixel: only the lowest digit changed, under the same permutation
+      // (the base-4 digit at bit 0, or with an odd count of bits the single bit 0 and its flip).
+      if ((bits & 1) == 0 ? diff < 4u : diff == 1u) {
+        out_ = (bits & 1) == 0 ? (out_ & ~3u) | permuted_digit(z, 0, r_[0]) : (out_ & ~1u) | ((z & 1u) ^ flip_);
+        z_ = z;
+        return out_;
+      }
+    }
     int shift = bits - 2;
     uint32_t out = 0;
     if (valid_) {  // the digits above the first difference stay; its own keeps its permutation

@@ -117,7 +117,9 @@ void BM_PathPattern(benchmark::State& state, const char* name) {
 // pass [0, spp) below 4), a pass over all of them at a time, so every pass meets every pixel's
 // streams afresh.
 void tile_in_passes(benchmark::State& state, const char* name, int64_t spp) {
-  auto s = pdrt::make_sampler(name, 1);
+  // Shaped as a render of spp samples makes them: zsobol and poisson-ss take a block of the
+  // pixel's samples per pass's spp, and a 16-spp shape would cut 64 spp into four blocks.
+  auto s = pdrt::make_sampler(name, 1, {spp, 256, 256});
   pdrt::PixelSampleState ps(*s);
   int64_t tile = 0, values = 0;
   double acc = 0;

@@ -28,9 +28,7 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
 }
 
 std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) const {
-  std::vector<std::size_t> own;
-  for (std::size_t j = std::size_t(group_.rank()); j < wave.size(); j += std::size_t(group_.size())) own.push_back(j);
-  return own;
+  return rank_tiles(wave.size(), group_.rank(), group_.size());
 }
 
 double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {

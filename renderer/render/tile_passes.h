@@ -57,7 +57,7 @@ class TilePasses {
  private:
   // Returns the budget samples it added.
   int64_t render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled);
-  // This rank's tiles of `wave` (positions in it): tile j of each wave is rank j mod N's.
+  // This rank's tiles of `wave` (positions in it; rank_tiles).
   std::vector<std::size_t> own_tiles(const std::vector<int>& wave) const;
 
   const TileWaves& tiles_;

@@ -28,4 +28,10 @@ PixelRect TileWaves::footprint(int t) const {
       std::max((t / tx_) * kTile - spread_, region_.y0), std::min((t / tx_) * kTile + kTile + spread_, region_.y1)};
 }
 
+std::vector<std::size_t> rank_tiles(std::size_t wave_size, int rank, int ranks) {
+  std::vector<std::size_t> tiles;
+  for (std::size_t j = std::size_t(rank); j < wave_size; j += std::size_t(ranks)) tiles.push_back(j);
+  return tiles;
+}
+
 }  // namespace pdrt

@@ -7,6 +7,7 @@
 // only tiles that meet the rendered rectangle are in a wave.
 #include "renderer/scene/crop_window.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace pdrt {
@@ -34,5 +35,10 @@ class TileWaves {
   int spread_;
   std::vector<std::vector<int>> waves_;
 };
+
+// Under mpirun tile j of each wave belongs to rank j mod `ranks`: `rank`'s positions in a wave
+// of `wave_size` tiles. The assignment depends only on the image, so every rank knows every
+// rank's tiles.
+std::vector<std::size_t> rank_tiles(std::size_t wave_size, int rank, int ranks);
 
 }  // namespace pdrt

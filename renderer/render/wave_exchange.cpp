@@ -56,12 +56,6 @@ bool WaveExchange::any_interrupted(bool interrupted, RankStats& mine) const {
   return any;
 }
 
-std::vector<std::size_t> WaveExchange::rank_tiles(const std::vector<int>& wave, int rank) const {
-  std::vector<std::size_t> tiles;
-  for (std::size_t j = std::size_t(rank); j < wave.size(); j += std::size_t(group_.size())) tiles.push_back(j);
-  return tiles;
-}
-
 // copy(row, at, n): the film row of n bytes and its offset in the block, the footprints of
 // `tiles` (positions in `wave`) from offset `at` on.
 template <class Copy>
@@ -80,7 +74,8 @@ void WaveExchange::rows(const std::vector<int>& wave, const std::vector<std::siz
 
 void WaveExchange::pack(const std::vector<int>& wave, const std::vector<std::size_t>* changed,
                         std::vector<std::byte>& bytes) const {
-  const std::vector<std::size_t> all = changed ? std::vector<std::size_t>{} : rank_tiles(wave, group_.rank());
+  const std::vector<std::size_t> all =
+      changed ? std::vector<std::size_t>{} : rank_tiles(wave.size(), group_.rank(), group_.size());
   const std::vector<std::size_t>& tiles = changed ? *changed : all;
   std::size_t at = 1;
   if (changed) {
@@ -115,7 +110,7 @@ void WaveExchange::unpack(const std::vector<int>& wave, int rank, const std::byt
     }
     at += sizeof(uint32_t) * (1 + std::size_t(count));
   } else {
-    tiles = rank_tiles(wave, rank);
+    tiles = rank_tiles(wave.size(), rank, group_.size());
   }
   rows(wave, tiles, at, [&](PixelAccum* row, std::size_t a, std::size_t n) { std::memcpy(row, from + a, n); });
 }

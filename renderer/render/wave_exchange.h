@@ -47,7 +47,6 @@ class WaveExchange {
   void unpack(const std::vector<int>& wave, int rank, const std::byte* from) const;
   template <class Copy>
   void rows(const std::vector<int>& wave, const std::vector<std::size_t>& tiles, std::size_t at, Copy&& copy) const;
-  std::vector<std::size_t> rank_tiles(const std::vector<int>& wave, int rank) const;
 
   const ProcessGroup& group_;
   const TileWaves& tiles_;

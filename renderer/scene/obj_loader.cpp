@@ -16,7 +16,6 @@
 #include <sstream>
 #include <string_view>
 #include <tuple>
-#include <unordered_map>
 
 namespace pdrt {
 

@@ -198,18 +198,15 @@ class ScreenPoissonSampler final : public Sampler {
     out->own.resize(std::size_t(end - first) * std::size_t(dim));
     uint32_t* v = out->own.data();
     const uint64_t block_size = uint64_t(1) << m_;
-    const uint32_t pixel = pixel_index(px, py), table_mask = (uint32_t(1) << t.bits) - 1;
+    const uint32_t pixel = pixel_index(px, py);
     for (uint64_t b0 = first & ~(block_size - 1); b0 < end; b0 += block_size) {
       const uint64_t lo = std::max<uint64_t>(b0, first), hi = std::min<uint64_t>(b0 + block_size, end);
       StreamCache local;
-      StreamCache& c = unsigned(bounce) < unsigned(kCachedBounces) ? stream_cache(f, bounce, b0 >> m_) : local;
-      if (&c == &local) c.key = block_key(f, bounce, b0 >> m_);
+      StreamCache& c = stream_cache(f, bounce, b0 >> m_, local);
       for (uint64_t i = lo; i < hi; ++i, v += dim) {
-        const uint32_t p = c.digits(pixel | uint32_t(i - b0), bits(), c.key);
-        if (c.run_id != run_of(p, t)) c.run_id = run_of(p, t), c.run = map_run(c.key, c.run_id, f, t);
-        const uint32_t* at = c.run.coords + std::size_t(p & table_mask) * std::size_t(dim);
-        v[0] = at[c.run.swap] ^ c.run.xr[0];
-        if (dim == 2) v[1] = at[c.run.swap ^ 1] ^ c.run.xr[1];
+        const auto point = run_point(c, c.digits(pixel | uint32_t(i - b0), bits(), c.key), f, t);
+        v[0] = point[0];
+        if (dim == 2) v[1] = point[1];
       }
     }
     fill_prepared(out, first, end, dim, nullptr);
@@ -238,25 +235,28 @@ class ScreenPoissonSampler final : public Sampler {
     const OrderedTables& t = tables(f);
     const uint64_t block = index >> m_;
     const uint32_t z = pixel_index(px, py) | (uint32_t(index) & low_mask());
-    uint32_t p;
-    Run run;
-    if (unsigned(bounce) < unsigned(kCachedBounces)) {
-      StreamCache& c = stream_cache(f, bounce, block);
-      p = c.digits(z, bits(), c.key);
-      if (c.run_id != run_of(p, t)) c.run_id = run_of(p, t), c.run = map_run(c.key, c.run_id, f, t);
-      run = c.run;
-    } else {
-      const uint64_t key = block_key(f, bounce, block);
-      p = scramble_digits(z, bits(), 0, key);
-      run = map_run(key, run_of(p, t), f, t);
-    }
-    const std::size_t at = std::size_t(p & ((uint32_t(1) << t.bits) - 1)) * std::size_t(t.dim);
-    if (t.dim == 1) return {run.coords[at] ^ run.xr[0], 0};
-    return {run.coords[at + std::size_t(run.swap)] ^ run.xr[0], run.coords[at + std::size_t(run.swap ^ 1)] ^ run.xr[1]};
+    StreamCache local;
+    StreamCache& c = stream_cache(f, bounce, block, local);
+    // A bounce past the caches hashes every digit (what prepare's caches must agree with).
+    return run_point(c, &c == &local ? scramble_digits(z, bits(), 0, c.key) : c.digits(z, bits(), c.key), f, t);
   }
 
-  // The thread's cache of a stream's block (bounce < kCachedBounces), keyed for it.
-  StreamCache& stream_cache(Family f, int bounce, uint64_t block) const {
+  // Per axis, position p of the stream's arrangement (c's block): the point of its run's table
+  // under the run's shift and axis swap; c keeps the run between calls.
+  std::array<uint32_t, 2> run_point(StreamCache& c, uint32_t p, Family f, const OrderedTables& t) const {
+    if (c.run_id != run_of(p, t)) c.run_id = run_of(p, t), c.run = map_run(c.key, c.run_id, f, t);
+    const uint32_t* at = c.run.coords + std::size_t(p & ((uint32_t(1) << t.bits) - 1)) * std::size_t(t.dim);
+    if (t.dim == 1) return {at[0] ^ c.run.xr[0], 0};
+    return {at[c.run.swap] ^ c.run.xr[0], at[c.run.swap ^ 1] ^ c.run.xr[1]};
+  }
+
+  // The thread's cache of a stream's block, keyed for it; past kCachedBounces, `local` keyed
+  // for it.
+  StreamCache& stream_cache(Family f, int bounce, uint64_t block, StreamCache& local) const {
+    if (unsigned(bounce) >= unsigned(kCachedBounces)) {
+      local.key = block_key(f, bounce, block);
+      return local;
+    }
     // Four blocks per stream: a camera packet of 4 samples at 1 or 2 spp spans them.
     thread_local std::array<StreamCache, kFamilyCount * kCachedBounces * 4> cache;
     StreamCache& c = cache[(std::size_t(int(f) * kCachedBounces + bounce) << 2) + (block & 3)];

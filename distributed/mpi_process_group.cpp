@@ -100,6 +100,57 @@ GatheredBytes MpiProcessGroup::gather_to_lead(const std::vector<std::byte>& mine
   return out;
 }
 
+namespace {
+
+constexpr std::size_t kMessageBytes = std::size_t(1) << 30;  // MPI counts are int
+
+// The spans as MPI datatypes of absolute addresses (sent from MPI_BOTTOM), one per message.
+std::vector<MPI_Datatype> message_types(const std::vector<ByteSpan>& spans) {
+  std::vector<MPI_Datatype> types;
+  for (const std::vector<ByteSpan>& message : split_messages(spans, kMessageBytes)) {
+    std::vector<int> lengths;
+    std::vector<MPI_Aint> addresses;
+    for (const ByteSpan& s : message) {
+      MPI_Aint a;
+      MPI_Get_address(s.data, &a);
+      lengths.push_back(int(s.size)), addresses.push_back(a);
+    }
+    MPI_Datatype t;
+    MPI_Type_create_hindexed(int(lengths.size()), lengths.data(), addresses.data(), MPI_BYTE, &t);
+    MPI_Type_commit(&t);
+    types.push_back(t);
+  }
+  return types;
+}
+
+}  // namespace
+
+void MpiProcessGroup::move_spans(const std::vector<std::vector<ByteSpan>>& send,
+                                 const std::vector<std::vector<ByteSpan>>& recv) const {
+  std::vector<MPI_Request> requests;
+  std::vector<MPI_Datatype> types;
+  auto post = [&](const std::vector<std::vector<ByteSpan>>& lists, bool receive) {
+    for (int q = 0; q < size_ && q < int(lists.size()); ++q) {
+      if (q == rank_) continue;
+      const std::vector<MPI_Datatype> t = message_types(lists[std::size_t(q)]);
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        requests.emplace_back();
+        if (receive)
+          MPI_Irecv(MPI_BOTTOM, 1, t[k], q, int(k), MPI_COMM_WORLD, &requests.back());
+        else
+          MPI_Isend(MPI_BOTTOM, 1, t[k], q, int(k), MPI_COMM_WORLD, &requests.back());
+      }
+      types.insert(types.end(), t.begin(), t.end());
+    }
+  };
+  post(recv, true);
+  post(send, false);
+  if (std::size_t(rank_) < send.size() && std::size_t(rank_) < recv.size())
+    copy_spans(send[std::size_t(rank_)], recv[std::size_t(rank_)]);
+  MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  for (MPI_Datatype& t : types) MPI_Type_free(&t);
+}
+
 const ProcessGroup& process_group() {
   static const LocalProcessGroup local;
   if (!launched_by_mpi()) return local;

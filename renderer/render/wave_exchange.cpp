@@ -11,22 +11,25 @@ WaveExchange::WaveExchange(const ProcessGroup& group, const TileWaves& tiles, st
     : group_(group), tiles_(tiles), films_(std::move(films)) {}
 
 namespace {
-constexpr std::byte kInterrupted{1}, kListed{2};  // a block's flag bits
+constexpr std::byte kInterrupted{1}, kListed{2};  // a header's flag bits
 }  // namespace
 
 bool WaveExchange::exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine,
                             const std::vector<std::size_t>* changed) const {
   const int nranks = group_.size(), me = group_.rank();
   const auto e0 = std::chrono::steady_clock::now();
-  std::vector<std::byte> out(1, interrupted ? kInterrupted : std::byte(0));
-  pack(wave, changed, out);
-  mine.bytes_sent += int64_t(out.size()) * (nranks - 1);
-  std::vector<std::vector<std::byte>> in = group_.all_gather(out);
+  const std::vector<std::byte> head = header(interrupted, changed);
+  const std::vector<std::vector<std::byte>> heads = group_.all_gather(head);
+  const std::vector<ByteSpan> out = spans(wave, tiles_in(wave, me, head.data()));
+  std::vector<std::vector<ByteSpan>> send(nranks, out), recv(nranks);
+  send[std::size_t(me)].clear();
   bool any = false;
   for (int r = 0; r < nranks; ++r) {
-    if ((in[std::size_t(r)][0] & kInterrupted) != std::byte(0)) any = true;
-    if (r != me) unpack(wave, r, in[std::size_t(r)].data());
+    if ((heads[std::size_t(r)][0] & kInterrupted) != std::byte(0)) any = true;
+    if (r != me) recv[std::size_t(r)] = spans(wave, tiles_in(wave, r, heads[std::size_t(r)].data()));
   }
+  group_.move_spans(send, recv);
+  mine.bytes_sent += int64_t(head.size() + span_bytes(out)) * (nranks - 1);
   mine.exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count();
   return any;
 }
@@ -34,14 +37,24 @@ bool WaveExchange::exchange(const std::vector<int>& wave, bool interrupted, Rank
 bool WaveExchange::exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine,
                                     const std::vector<std::size_t>* changed) const {
   const bool any = any_interrupted(interrupted, mine);
-  const int me = group_.rank();
+  const int nranks = group_.size(), me = group_.rank();
   const auto e0 = std::chrono::steady_clock::now();
-  std::vector<std::byte> out(1, interrupted ? kInterrupted : std::byte(0));
-  pack(wave, changed, out);
-  if (me != 0) mine.bytes_sent += int64_t(out.size());
-  const GatheredBytes in = group_.gather_to_lead(out);  // empty but on rank 0
-  for (std::size_t r = 0; r < in.blocks(); ++r)
-    if (int(r) != me) unpack(wave, int(r), in.block(r));
+  // Rank 0 learns which tiles come: every one of a rank's, or those its list names.
+  const std::vector<std::byte> head = header(false, changed);
+  GatheredBytes heads;
+  if (changed) {
+    heads = group_.gather_to_lead(head);  // empty but on rank 0
+    if (me != 0) mine.bytes_sent += int64_t(head.size());
+  }
+  std::vector<std::vector<ByteSpan>> send(nranks), recv(nranks);
+  if (me != 0) {
+    send[0] = spans(wave, tiles_in(wave, me, head.data()));
+    mine.bytes_sent += int64_t(span_bytes(send[0]));
+  } else {
+    for (int r = 1; r < nranks; ++r)
+      recv[std::size_t(r)] = spans(wave, tiles_in(wave, r, changed ? heads.block(std::size_t(r)) : head.data()));
+  }
+  group_.move_spans(send, recv);
   mine.exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count();
   return any;
 }
@@ -56,63 +69,52 @@ bool WaveExchange::any_interrupted(bool interrupted, RankStats& mine) const {
   return any;
 }
 
-// copy(row, at, n): the film row of n bytes and its offset in the block, the footprints of
-// `tiles` (positions in `wave`) from offset `at` on.
-template <class Copy>
-void WaveExchange::rows(const std::vector<int>& wave, const std::vector<std::size_t>& tiles, std::size_t at,
-                        Copy&& copy) const {
+std::vector<std::byte> WaveExchange::header(bool interrupted, const std::vector<std::size_t>* changed) {
+  std::vector<std::byte> head(1, interrupted ? kInterrupted : std::byte(0));
+  if (!changed) return head;
+  head[0] |= kListed;
+  const uint32_t count = uint32_t(changed->size());
+  head.resize(1 + sizeof(uint32_t) * (1 + std::size_t(count)));
+  std::memcpy(head.data() + 1, &count, sizeof count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t j = uint32_t((*changed)[i]);
+    std::memcpy(head.data() + 1 + sizeof(uint32_t) * (1 + std::size_t(i)), &j, sizeof j);
+  }
+  return head;
+}
+
+std::vector<std::size_t> WaveExchange::tiles_in(const std::vector<int>& wave, int rank, const std::byte* head) const {
+  if ((head[0] & kListed) == std::byte(0)) return rank_tiles(wave.size(), rank, group_.size());
+  uint32_t count = 0;
+  std::memcpy(&count, head + 1, sizeof count);
+  std::vector<std::size_t> tiles(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    uint32_t j = 0;
+    std::memcpy(&j, head + 1 + sizeof(uint32_t) * (1 + std::size_t(i)), sizeof j);
+    tiles[i] = j;
+  }
+  return tiles;
+}
+
+std::vector<ByteSpan> WaveExchange::spans(const std::vector<int>& wave, const std::vector<std::size_t>& tiles) const {
+  std::vector<ByteSpan> out;
   const PixelRect& region = tiles_.region();
   for (std::size_t j : tiles) {
     const PixelRect f = tiles_.footprint(wave[j]);
     for (Film* fm : films_) {
       if (!fm) continue;
       const std::size_t n = sizeof(PixelAccum) * std::size_t(f.width());
-      for (int y = f.y0; y < f.y1; ++y, at += n) copy(&fm->at(f.x0 - region.x0, y - region.y0), at, n);
+      for (int y = f.y0; y < f.y1; ++y)
+        out.push_back({reinterpret_cast<std::byte*>(&fm->at(f.x0 - region.x0, y - region.y0)), n});
     }
   }
+  return out;
 }
 
-void WaveExchange::pack(const std::vector<int>& wave, const std::vector<std::size_t>* changed,
-                        std::vector<std::byte>& bytes) const {
-  const std::vector<std::size_t> all =
-      changed ? std::vector<std::size_t>{} : rank_tiles(wave.size(), group_.rank(), group_.size());
-  const std::vector<std::size_t>& tiles = changed ? *changed : all;
-  std::size_t at = 1;
-  if (changed) {
-    bytes[0] |= kListed;
-    at += sizeof(uint32_t) * (1 + tiles.size());
-  }
-  std::size_t end = at;
-  rows(wave, tiles, at, [&](PixelAccum*, std::size_t a, std::size_t n) { end = a + n; });
-  bytes.resize(std::max<std::size_t>(bytes.size(), end));  // sized once: hundreds of MB at 1080p
-  if (changed) {
-    const uint32_t count = uint32_t(tiles.size());
-    std::memcpy(bytes.data() + 1, &count, sizeof count);
-    for (std::size_t i = 0; i < tiles.size(); ++i) {
-      const uint32_t j = uint32_t(tiles[i]);
-      std::memcpy(bytes.data() + 1 + sizeof(uint32_t) * (1 + i), &j, sizeof j);
-    }
-  }
-  rows(wave, tiles, at, [&](PixelAccum* row, std::size_t a, std::size_t n) { std::memcpy(bytes.data() + a, row, n); });
-}
-
-void WaveExchange::unpack(const std::vector<int>& wave, int rank, const std::byte* from) const {
-  std::vector<std::size_t> tiles;
-  std::size_t at = 1;
-  if ((from[0] & kListed) != std::byte(0)) {
-    uint32_t count = 0;
-    std::memcpy(&count, from + 1, sizeof count);
-    tiles.resize(count);
-    for (uint32_t i = 0; i < count; ++i) {
-      uint32_t j = 0;
-      std::memcpy(&j, from + 1 + sizeof(uint32_t) * (1 + i), sizeof j);
-      tiles[i] = j;
-    }
-    at += sizeof(uint32_t) * (1 + std::size_t(count));
-  } else {
-    tiles = rank_tiles(wave.size(), rank, group_.size());
-  }
-  rows(wave, tiles, at, [&](PixelAccum* row, std::size_t a, std::size_t n) { std::memcpy(row, from + a, n); });
+std::size_t WaveExchange::span_bytes(const std::vector<ByteSpan>& spans) {
+  std::size_t n = 0;
+  for (const ByteSpan& s : spans) n += s.size;
+  return n;
 }
 
 }  // namespace pdrt

@@ -38,15 +38,17 @@ class WaveExchange {
   bool any_interrupted(bool interrupted, RankStats& mine) const;
 
  private:
-  // A block: a flag byte (bit 0: the rank was interrupted; bit 1: a list follows), then, with
-  // the list, its length and the positions j in the wave of the tiles sent (uint32 each), then
-  // the footprints, row by row. Without the list the block holds every tile of the rank's.
-  // pack appends this rank's footprints (all, or `changed`) to `bytes` (its flag byte written);
-  // unpack copies `rank`'s block from `from` into the films.
-  void pack(const std::vector<int>& wave, const std::vector<std::size_t>* changed, std::vector<std::byte>& bytes) const;
-  void unpack(const std::vector<int>& wave, int rank, const std::byte* from) const;
-  template <class Copy>
-  void rows(const std::vector<int>& wave, const std::vector<std::size_t>& tiles, std::size_t at, Copy&& copy) const;
+  // A rank's header: a flag byte (bit 0: the rank was interrupted; bit 1: a list follows),
+  // then, with the list, its length and the positions j in the wave of the tiles it sends
+  // (uint32 each). Without the list the rank sends every tile of its own. The footprints
+  // themselves travel row by row from film to film (ProcessGroup::move_spans): no buffer of
+  // the film's size is packed, sent or unpacked.
+  static std::vector<std::byte> header(bool interrupted, const std::vector<std::size_t>* changed);
+  // The positions in `wave` of the tiles `rank` sends, from its header.
+  std::vector<std::size_t> tiles_in(const std::vector<int>& wave, int rank, const std::byte* head) const;
+  // The films' rows of those tiles' footprints, tile by tile, in the same order on every rank.
+  std::vector<ByteSpan> spans(const std::vector<int>& wave, const std::vector<std::size_t>& tiles) const;
+  static std::size_t span_bytes(const std::vector<ByteSpan>& spans);
 
   const ProcessGroup& group_;
   const TileWaves& tiles_;

@@ -140,7 +140,8 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
                    {"calibration_seconds", e.calibration_seconds},
                    {"calibration_cpu_seconds", e.calibration_cpu_seconds},
                    {"calibration_pixels", e.calibration_pixels},
-                   {"calibration_samples", e.calibration_samples}};
+                   {"calibration_samples", e.calibration_samples},
+                   {"calibration_kept", e.calibration_kept}};
   if (r.stats.ranks.size() > 1) {
     j["ranks"] = nlohmann::json::array();
     for (const RankStats& k : r.stats.ranks)

@@ -16,84 +16,123 @@ namespace pdrt {
 namespace {
 
 constexpr int kBlock = 4;                      // pixels per side of a calibration block
-constexpr int64_t kCalibrationSpp = 8;         // samples per pixel (fewer when the render has fewer)
 constexpr double kCalibrationTime = 0.05;      // seconds it may take
 constexpr double kCalibrationShare = 1.0 / 2;  // of the render's samples it may take
 constexpr int kWarmUpBlocks = 8;
 
-// Block k's top-left pixel: the R2 sequence over the region.
-void block_origin(const PixelRect& region, int k, int* x, int* y) {
-  const double u = std::fmod(0.5 + 0.7548776662466927 * k, 1.0), v = std::fmod(0.5 + 0.5698402909980532 * k, 1.0);
-  *x = region.x0 + int(u * std::max(1, region.width() - kBlock + 1));
-  *y = region.y0 + int(v * std::max(1, region.height() - kBlock + 1));
-}
-
-// Renders blocks [k0, k1), each pixel's samples [0, spp), into films of their own (with the
-// splats' margin); the sampler states are made once, as a render's tiles share a thread's.
-void render_blocks(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider, const PixelRect& region,
-                   int k0, int k1, int64_t spp) {
-  PixelSampleState ps(sampler);
-  std::optional<PixelSampleState> pd;
-  if (decider) pd.emplace(*decider);
-  const int m = pixels.mode == Reconstruction::Splat ? pixels.splat_margin() : 0, side = kBlock + 2 * m;
-  for (int k = k0; k < k1; ++k) {
-    int bx, by;
-    block_origin(region, k, &bx, &by);
-    PixelRenderer p = pixels;
-    p.ox = bx - m, p.oy = by - m;
-    Film film(side, side), decide(decider ? side : 0, decider ? side : 0);
-    for (int y = by; y < std::min(by + kBlock, region.y1); ++y)
-      for (int x = bx; x < std::min(bx + kBlock, region.x1); ++x)
-        p.run(x, y, 0, spp, film, decider ? &decide : nullptr, ps, pd ? &*pd : nullptr);
-  }
-}
-
-// The ranks' wall seconds per sample combined: their rates add up.
-double combined(double mine, const ProcessGroup& group) {
+// The ranks' wall seconds per sample combined (their rates add up), and the sum of `count`.
+std::pair<double, double> combined(double seconds_per_sample, double count, const ProcessGroup& group) {
+  const double mine[2] = {seconds_per_sample, count};
   std::vector<std::byte> bytes(sizeof mine);
-  std::memcpy(bytes.data(), &mine, sizeof mine);
-  double rate = 0;
+  std::memcpy(bytes.data(), mine, sizeof mine);
+  double rate = 0, total = 0;
   for (const std::vector<std::byte>& b : group.all_gather(bytes)) {
-    double s;
-    std::memcpy(&s, b.data(), sizeof s);
-    rate += s > 0 ? 1 / s : 0;
+    double r[2];
+    std::memcpy(r, b.data(), sizeof r);
+    rate += r[0] > 0 ? 1 / r[0] : 0;
+    total += r[1];
   }
-  return rate > 0 ? 1 / rate : 0;
+  return {rate > 0 ? 1 / rate : 0, total};
 }
 
 }  // namespace
 
-RenderEstimate estimate_render(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider,
-                               const PixelRect& region, int64_t spp, double samples, const ProcessGroup& group) {
+std::vector<PixelRect> calibration_blocks(const PixelRect& region, bool kept, const std::function<bool(int, int)>& mine,
+                                          std::size_t most) {
+  std::vector<PixelRect> out;
+  if (region.empty()) return out;
+  if (!kept) {
+    // Anywhere, overlapping as they fall: scratch films hold each block apart.
+    for (std::size_t k = 0; k < most; ++k) {
+      const double u = std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0),
+                   v = std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0);
+      const int x = region.x0 + int(u * std::max(1, region.width() - kBlock + 1)),
+                y = region.y0 + int(v * std::max(1, region.height() - kBlock + 1));
+      out.push_back({x, std::min(x + kBlock, region.x1), y, std::min(y + kBlock, region.y1)});
+    }
+    return out;
+  }
+  const int cx0 = region.x0 / kBlock, cy0 = region.y0 / kBlock;
+  const int nx = (region.x1 - 1) / kBlock - cx0 + 1, ny = (region.y1 - 1) / kBlock - cy0 + 1;
+  const std::size_t cells = std::size_t(nx) * std::size_t(ny);
+  std::vector<uint8_t> seen(cells, 0);
+  std::size_t visited = 0;
+  // R2 points land on every cell (equidistributed); past 8 draws per cell the rest go in order.
+  for (uint64_t k = 0; out.size() < most && visited < cells; ++k) {
+    std::size_t c;
+    if (k < 8 * uint64_t(cells)) {
+      const double u = std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0),
+                   v = std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0);
+      c = std::size_t(std::min(int(v * ny), ny - 1)) * std::size_t(nx) + std::size_t(std::min(int(u * nx), nx - 1));
+    } else {
+      c = std::size_t(k - 8 * uint64_t(cells));
+      if (c >= cells) break;
+    }
+    if (seen[c]) continue;
+    seen[c] = 1, ++visited;
+    const int x = (cx0 + int(c % std::size_t(nx))) * kBlock, y = (cy0 + int(c / std::size_t(nx))) * kBlock;
+    const PixelRect b{std::max(x, region.x0), std::min(x + kBlock, region.x1), std::max(y, region.y0),
+                      std::min(y + kBlock, region.y1)};
+    if (mine(b.x0, b.y0)) out.push_back(b);
+  }
+  return out;
+}
+
+void render_scratch_blocks(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider,
+                           const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t spp) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(b0, b1), [&](const tbb::blocked_range<std::size_t>& r) {
+    // The sampler states are made once per chunk, as a render's tiles share a thread's.
+    PixelSampleState ps(sampler);
+    std::optional<PixelSampleState> pd;
+    if (decider) pd.emplace(*decider);
+    const int m = pixels.mode == Reconstruction::Splat ? pixels.splat_margin() : 0;
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      const PixelRect& b = blocks[k];
+      PixelRenderer p = pixels;
+      p.ox = b.x0 - m, p.oy = b.y0 - m;
+      Film film(b.width() + 2 * m, b.height() + 2 * m),
+          decide(decider ? b.width() + 2 * m : 0, decider ? b.height() + 2 * m : 0);
+      for (int y = b.y0; y < b.y1; ++y)
+        for (int x = b.x0; x < b.x1; ++x)
+          p.run(x, y, 0, spp, film, decider ? &decide : nullptr, ps, pd ? &*pd : nullptr);
+    }
+  });
+}
+
+RenderEstimate estimate_render(const std::vector<PixelRect>& blocks, int64_t spp, double samples, bool kept,
+                               const CalibrationRender& render, const ProcessGroup& group) {
   using clock = std::chrono::steady_clock;
   RenderEstimate e;
   e.samples = samples;
-  const int64_t cal = std::min(spp, kCalibrationSpp);
-  const int pixels_per_block = std::min(kBlock, region.width()) * std::min(kBlock, region.height());
-  const auto run = [&](int k0, int k1) {
-    tbb::parallel_for(tbb::blocked_range<int>(k0, k1), [&](const tbb::blocked_range<int>& r) {
-      render_blocks(pixels, sampler, decider, region, r.begin(), r.end(), cal);
-    });
-  };
+  // (A small film may have few blocks: a third of them then, so that some are timed.)
+  const std::size_t warm = blocks.size() >= kWarmUpBlocks + 4 ? kWarmUpBlocks : blocks.size() / 3;
   // Untimed: the first touches of textures (loaded on demand) and caches, paid once per render.
-  run(0, kWarmUpBlocks);
-  // Blocks it may take: 4 at least, so that every render is timed.
-  const double cap = std::max(4.0, samples * kCalibrationShare / double(pixels_per_block * cal));
+  if (warm > 0) render(0, warm, spp);
+  int64_t taken = 0;  // samples the blocks took, warm-up included
+  for (std::size_t k = 0; k < warm; ++k) taken += int64_t(blocks[k].width()) * blocks[k].height() * spp;
+  // Blocks it may take: 4 at least, so that every render is timed (when it has them).
+  const double cap = std::min(double(blocks.size() - warm),
+                              std::max(4.0, samples * kCalibrationShare / double(kBlock * kBlock * spp)));
   const auto t0 = clock::now();
   const double cpu0 = process_cpu_seconds();
   // Rounds of doubling size, the last one cut to what the time left allows at the rate so far.
-  for (int n = 0, next = 4; next > n;) {
-    run(kWarmUpBlocks + n, kWarmUpBlocks + next);
-    e.calibration_pixels += (next - n) * pixels_per_block;
+  for (std::size_t n = 0, next = std::size_t(std::min(4.0, cap)); next > n;) {
+    render(warm + n, warm + next, spp);
+    for (std::size_t k = warm + n; k < warm + next; ++k) e.calibration_pixels += blocks[k].width() * blocks[k].height();
     n = next;
     e.calibration_seconds = std::chrono::duration<double>(clock::now() - t0).count();
-    const double fit = (kCalibrationTime - e.calibration_seconds) / e.calibration_seconds * n;
-    next = n + int(std::clamp(std::min(fit, cap - n), 0.0, double(n)));
+    const double fit = (kCalibrationTime - e.calibration_seconds) / e.calibration_seconds * double(n);
+    next = n + std::size_t(std::clamp(std::min(fit, cap - double(n)), 0.0, double(n)));
   }
   e.calibration_cpu_seconds = process_cpu_seconds() - cpu0;
-  e.calibration_samples = int64_t(e.calibration_pixels) * cal;
-  e.seconds_per_sample = combined(e.calibration_seconds / double(e.calibration_samples), group);
-  e.seconds = samples * e.seconds_per_sample;
+  e.calibration_samples = int64_t(e.calibration_pixels) * spp;
+  taken += e.calibration_samples;
+  const auto [per_sample, all_taken] =
+      combined(e.calibration_samples > 0 ? e.calibration_seconds / double(e.calibration_samples) : 0,
+               kept ? double(taken) : 0.0, group);
+  e.seconds_per_sample = per_sample;
+  e.calibration_kept = kept;
+  e.seconds = std::max(0.0, samples - all_taken) * e.seconds_per_sample;
   return e;
 }
 

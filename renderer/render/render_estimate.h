@@ -1,37 +1,65 @@
 #pragma once
 // What a render will cost on this machine and this scene (issue 33), said before it starts and
 // used by the sample budget: after the scene build, blocks of 4x4 pixels scattered over the
-// frame (the R2 sequence, Roberts 2018: any prefix of it is spread evenly) are rendered into a
-// scratch film, on the render's threads: 8 blocks untimed (textures load on first use), then
-// for 0.05 s or half the render's samples (at most 8 per pixel); their wall time per sample
+// frame (the R2 sequence, Roberts 2018: any prefix of it is spread evenly) are rendered on the
+// render's threads: 8 blocks untimed (textures load on first use), then for 0.05 s or half the
+// render's samples, each pixel to min(spp, 8) samples in one go; their wall time per sample
 // times the render's samples is the estimate. It must run for tens of milliseconds on a busy
-// machine: a shorter burst gets whole cores that the render then shares. The scratch film is thrown
-// away, so the image does not change. Measured against the actual passes by
-// tools/estimate-accuracy.sh (docs/renderer.md, "Estimates").
+// machine: a shorter burst gets whole cores that the render then shares. When that is no more
+// than the first pass's samples (spp <= 4) and nothing is splatted, the blocks' samples are the
+// pixels' first, kept in the film (TilePasses::calibrate), and the calibration costs the render
+// nothing; otherwise they go to scratch films, thrown away: more would break the passes' images
+// (after a pass every pixel has that pass's spp), and a splatted sample reaches neighbouring
+// pixels, whose order of contributions it would change. (Kept blocks of 4 samples a pixel
+// estimated 256-spp renders at up to 2.5x their time: a pixel's pass has a fixed cost, which 4
+// samples share less than 8.) Measured against the actual passes by tools/estimate-accuracy.sh
+// (docs/renderer.md, "Estimates").
 #include "renderer/render/process_group.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/samplers/sampler.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 namespace pdrt {
 
 struct PixelRenderer;
 
+// Samples a calibrated pixel takes (fewer when the render has fewer).
+inline constexpr int64_t kCalibrationSpp = 8;
+
 struct RenderEstimate {
   double samples = 0;                  // the render's camera samples (budget; the most, under adaptive)
   double seconds_per_sample = 0;       // wall time, every thread and every rank together
-  double seconds = 0;                  // samples x seconds_per_sample: the passes after the calibration
+  double seconds = 0;                  // the passes': samples not yet taken x seconds_per_sample
   double calibration_seconds = 0;      // wall time the calibration took on this rank
   double calibration_cpu_seconds = 0;  // its process CPU time (to tell the method's error from the load's)
   int64_t calibration_samples = 0;
   int calibration_pixels = 0;
+  bool calibration_kept = false;  // its samples are the pixels' first (else thrown away, when splatting)
 };
 
-// `region`: the rendered rectangle (image pixels); `spp`: the pixels' budget (max_spp when
-// adaptive); `samples`: the render's total; `decider`: under "split" decisions, else nullptr.
-// Collective when distributed: every rank gets the same estimate (the ranks' rates summed).
-RenderEstimate estimate_render(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider,
-                               const PixelRect& region, int64_t spp, double samples, const ProcessGroup& group);
+// The calibration's blocks of 4 x 4 pixels cut by `region`, at most `most`, in the order of the
+// R2 sequence. Kept in the film: aligned to multiples of 4 in image coordinates (so a block
+// lies in one tile), each once, those whose top-left pixel `mine` accepts (under mpirun, this
+// rank's tiles). Else anywhere, overlapping as they fall (as the estimate was measured).
+std::vector<PixelRect> calibration_blocks(const PixelRect& region, bool kept, const std::function<bool(int, int)>& mine,
+                                          std::size_t most);
+
+// Renders blocks [b0, b1) of the calibration's to `spp` samples a pixel, on the render's threads.
+using CalibrationRender = std::function<void(std::size_t b0, std::size_t b1, int64_t spp)>;
+
+// `spp`: the samples a calibrated pixel takes; `samples`: the render's total; `kept`: the
+// blocks' samples stay in the film (the passes then take the rest). Collective when
+// distributed: every rank gets the same estimate (the ranks' rates summed).
+RenderEstimate estimate_render(const std::vector<PixelRect>& blocks, int64_t spp, double samples, bool kept,
+                               const CalibrationRender& render, const ProcessGroup& group);
+
+// Renders blocks [b0, b1) into films of their own, with the splats' margin, that are thrown
+// away; `decider`: the decision samples' sampler under "split", else nullptr.
+void render_scratch_blocks(const PixelRenderer& pixels, const Sampler& sampler, const Sampler* decider,
+                           const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t spp);
 
 }  // namespace pdrt

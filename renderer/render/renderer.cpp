@@ -86,14 +86,25 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const ProcessGroup& group = opt.group ? *opt.group : alone;
   RenderResult res;
   const int64_t spp = ad.enabled ? ad.max_spp : desc.sampler.spp;
+  const bool splat = desc.film.filter.reconstruction == Reconstruction::Splat;
+  const TileWaves tiles(desc.film.width, desc.film.height, region.rect, splat ? pixels.splat_margin() : 0);
+  TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt, clock.start());
   if (opt.on_estimate) {
-    res.stats.estimate = estimate_render(pixels, sampler, decider.get(), region.rect, spp,
-                                         double(region.rect.width()) * region.rect.height() * double(spp), group);
+    // The calibration's samples stay in the film when they are the first pass's (render_estimate.h).
+    const int64_t cal = std::min(spp, kCalibrationSpp);
+    const bool kept = !splat && cal <= next_pass_end(0, ad.enabled ? ad.min_spp : spp);
+    const std::vector<PixelRect> blocks = calibration_blocks(
+        region.rect, kept, [&](int x, int y) { return passes.owns(x, y); }, 1 << 16);
+    const CalibrationRender calibrate = [&](std::size_t b0, std::size_t b1, int64_t n) {
+      if (kept)
+        passes.calibrate(blocks, b0, b1, n);
+      else
+        render_scratch_blocks(pixels, sampler, decider.get(), blocks, b0, b1, n);
+    };
+    res.stats.estimate = estimate_render(blocks, cal, double(region.rect.width()) * region.rect.height() * double(spp),
+                                         kept, calibrate, group);
     opt.on_estimate(res.stats.estimate);
   }
-  const int spread = desc.film.filter.reconstruction == Reconstruction::Splat ? pixels.splat_margin() : 0;
-  const TileWaves tiles(desc.film.width, desc.film.height, region.rect, spread);
-  TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt, clock.start());
   const bool quiet = opt.quiet || group.rank() != 0;
   const auto p0 = std::chrono::steady_clock::now();
   int rounds = 0;

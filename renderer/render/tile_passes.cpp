@@ -25,6 +25,21 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
       deadline_(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(opt.time_limit))) {
   mine_.rank = group.rank();
+  int count = 0;
+  for (const std::vector<int>& wave : tiles.waves())
+    for (int t : wave) count = std::max(count, t + 1);
+  own_tile_.assign(std::size_t(count), 0);
+  for (const std::vector<int>& wave : tiles.waves())
+    for (std::size_t j : own_tiles(wave)) own_tile_[std::size_t(wave[j])] = 1;
+}
+
+void TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end) {
+  std::atomic<bool> cancelled{false};  // never set: the calibration is not interrupted
+  const auto end_of = [end](int, int) { return end; };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(b0, b1, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k != r.end(); ++k) render_pixels(blocks[k], end_of, cancelled);
+  });
+  in_step_ = false;
 }
 
 std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) const {
@@ -90,8 +105,13 @@ bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& p
 }
 
 int64_t TilePasses::render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled) {
+  return render_pixels(tiles_.pixels(t), end_of, cancelled);
+}
+
+int64_t TilePasses::render_pixels(const PixelRect& p, const std::function<int64_t(int, int)>& end_of,
+                                  std::atomic<bool>& cancelled) {
   const auto t0 = std::chrono::steady_clock::now();
-  const PixelRect region = tiles_.region(), p = tiles_.pixels(t);
+  const PixelRect region = tiles_.region();
   int64_t added = 0;
   int64_t& rays = rays_.local();
   PixelSampleState ps(sampler_);

@@ -44,6 +44,16 @@ class TilePasses {
   bool run(const std::function<int64_t(int, int)>& end_of, Progress& progress, FilmsTo to = FilmsTo::Everyone);
   // The budget samples a pass to end_of would add to this rank's pixels (its progress's total).
   double work(const std::function<int64_t(int, int)>& end_of) const;
+  // Renders blocks [b0, b1) of `blocks` (image pixels, each inside one of this rank's tiles,
+  // no two alike) to `end` samples a pixel, in parallel, counted as the tiles' samples are: the
+  // time estimate's calibration (render_estimate.h), whose samples are then the pixels' first.
+  // Without splatting a pixel's samples go to it alone, in index order, so the image does not
+  // depend on which pixels the calibration took; `end` at most the first pass's end keeps every
+  // pass's image too. The films are no longer the same on every rank: the next exchange sends
+  // every tile.
+  void calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end);
+  // Whether image pixel (x, y) lies in one of this rank's tiles.
+  bool owns(int x, int y) const { return own_tile_[std::size_t(tiles_.tile_at(x, y))] != 0; }
 
   bool stopped() const { return stopped_; }  // some pass was stopped
   // Cancelled (RenderOptions::cancel), or past the time limit.
@@ -57,6 +67,9 @@ class TilePasses {
  private:
   // Returns the budget samples it added.
   int64_t render_tile(int t, const std::function<int64_t(int, int)>& end_of, std::atomic<bool>& cancelled);
+  // The same for any rectangle of image pixels.
+  int64_t render_pixels(const PixelRect& p, const std::function<int64_t(int, int)>& end_of,
+                        std::atomic<bool>& cancelled);
   // This rank's tiles of `wave` (positions in it; rank_tiles).
   std::vector<std::size_t> own_tiles(const std::vector<int>& wave) const;
 
@@ -78,6 +91,7 @@ class TilePasses {
   bool stopped_ = false;
   // Every rank holds the same films (all zero at the start; after an exchange with everyone).
   bool in_step_ = true;
+  std::vector<uint8_t> own_tile_;  // by tile index: this rank renders it
 };
 
 }  // namespace pdrt

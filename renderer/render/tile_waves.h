@@ -27,6 +27,8 @@ class TileWaves {
   // Tile t's footprint within the region: its pixels and the ones its samples reach.
   PixelRect footprint(int t) const;
   const PixelRect& region() const { return region_; }
+  // The tile holding image pixel (x, y).
+  int tile_at(int x, int y) const { return (y / kTile) * tx_ + x / kTile; }
   int spread() const { return spread_; }
 
  private:

@@ -207,6 +207,18 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageWithTheImagePlaneSampler) {
   expect_same_at_every_rank_count("image-plane", scene_text("poisson-ip", R"(, "reconstruction": "splat")", "", false));
 }
 
+// At 3 spp the time estimate's calibration keeps its samples as the pixels' first, each rank
+// in blocks of its own tiles: on a 32 x 16 film of two tiles it takes every pixel of the
+// second rank's, whose tile then takes no sample in the pass and must still reach rank 0. The
+// image is the single process's.
+TEST(CliMpi, RanksRenderTheSingleProcessImageWithTheCalibrationsSamplesKept) {
+  std::string text = scene_text("poisson", "", "", false);
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{R"("spp": 16)", R"("spp": 3)"},
+                                 {R"("width": 40, "height": 28)", R"("width": 32, "height": 16)"}})
+    text.replace(text.find(from), from.size(), to);
+  expect_same_at_every_rank_count("calibration-kept", text);
+}
+
 TEST(CliMpi, StatsListEveryRanksShare) {
   const fs::path dir = scratch_dir("mpi-stats");
   std::ofstream(dir / "s.json") << scene_text("jitter", "", "shared");

@@ -1,0 +1,107 @@
+// The time estimate's calibration (render_estimate.h): when its pixels' samples are kept as
+// the render's first samples, a calibrated render is the uncalibrated one bit for bit
+// whichever blocks the 0.05 s allowed; when they are not, it is too.
+#include "renderer/render/render_estimate.h"
+#include "renderer/render/renderer.h"
+#include "tests/support/render_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+namespace pdrt {
+namespace {
+
+using test::base_scene;
+using test::diffuse;
+using test::emitter;
+using test::sphere;
+
+SceneDesc lit_sphere(int spp, const char* sampler) {
+  SceneDesc s = base_scene(40, 24, spp);
+  s.sampler.type = sampler;
+  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
+  s.camera.position = Vec3(0, 0, 4), s.camera.look_at = Vec3(0, 0, 0), s.camera.vfov_deg = 40;
+  s.environment.radiance = Vec3(0.2f);
+  s.shapes.push_back(sphere(Vec3(0, 0, 0), 1, test::add_material(s, diffuse(0.7f))));
+  s.shapes.push_back(sphere(Vec3(2, 2, 2), 0.5f, test::add_material(s, emitter(8))));
+  return s;
+}
+
+RenderResult render_scene(const SceneDesc& s, bool estimate, int threads) {
+  auto sampler = make_scene_sampler(s.sampler, s.film);
+  RenderOptions o;
+  o.quiet = true, o.threads = threads;
+  if (estimate) o.on_estimate = [](const RenderEstimate&) {};
+  return render(s, *sampler, o);
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+void expect_calibration_keeps_the_image(const SceneDesc& s, bool kept) {
+  const RenderResult without = render_scene(s, false, 1), with = render_scene(s, true, 2);
+  EXPECT_GT(with.stats.estimate.calibration_samples, 0);
+  EXPECT_EQ(with.stats.estimate.calibration_kept, kept);
+  EXPECT_TRUE(same_bits(with.image.rgb, without.image.rgb));
+  EXPECT_TRUE(same_bits(with.image.samples, without.image.samples));
+  EXPECT_EQ(with.stats.samples, without.stats.samples);  // the calibration's samples counted once
+}
+
+// At 1, 2 and 4 spp the calibrated pixels keep their samples (every pixel's in index order; on
+// this 40 x 24 film the calibration takes some of the pixels at 1 spp and all of them at 4), at
+// 16 they are thrown away; with the default sampler and a stratified one.
+TEST(RenderEstimate, CalibratedRenderIsTheUncalibratedOneBitForBit) {
+  for (int spp : {1, 2, 4, 16})
+    for (const char* sampler : {"poisson", "sobol"}) {
+      SCOPED_TRACE(std::string(sampler) + " at " + std::to_string(spp) + " spp");
+      expect_calibration_keeps_the_image(lit_sphere(spp, sampler), spp <= 4);
+    }
+}
+
+// Splatting calibrates in scratch films: the film's order of contributions is untouched.
+TEST(RenderEstimate, CalibratedSplattedRenderIsTheUncalibratedOneBitForBit) {
+  SceneDesc s = lit_sphere(8, "poisson");
+  s.film.filter.reconstruction = Reconstruction::Splat;
+  expect_calibration_keeps_the_image(s, false);
+}
+
+// Adaptive: calibrated at min(max_spp, 8), more than round 0's first pass, so thrown away.
+TEST(RenderEstimate, CalibratedAdaptiveRenderIsTheUncalibratedOneBitForBit) {
+  SceneDesc s = lit_sphere(64, "sobol");
+  s.sampler.adaptive.enabled = true, s.sampler.adaptive.min_spp = 8, s.sampler.adaptive.max_spp = 64;
+  expect_calibration_keeps_the_image(s, false);
+}
+
+// Kept blocks: 4 x 4 on the grid of multiples of 4, cut by the region, each once: all of them
+// cover every pixel of the region exactly once; the first is the R2 sequence's first point,
+// the region's middle.
+TEST(RenderEstimate, CalibrationBlocksCoverTheRegionOnceEach) {
+  const PixelRect region{3, 37, 5, 22};
+  const std::vector<PixelRect> all = calibration_blocks(
+      region, true, [](int, int) { return true; }, 1000);
+  std::vector<int> hits(std::size_t(region.width()) * region.height(), 0);
+  for (const PixelRect& b : all) {
+    ASSERT_FALSE(b.empty());
+    EXPECT_TRUE(b.x0 >= region.x0 && b.x1 <= region.x1 && b.y0 >= region.y0 && b.y1 <= region.y1);
+    EXPECT_EQ(b.x1 - 1 - (b.x1 - 1) % 4, b.x0 - b.x0 % 4) << "one grid cell";
+    for (int y = b.y0; y < b.y1; ++y)
+      for (int x = b.x0; x < b.x1; ++x) ++hits[std::size_t(y - region.y0) * region.width() + (x - region.x0)];
+  }
+  for (int h : hits) ASSERT_EQ(h, 1);
+  EXPECT_EQ(all.front().x0, 20);
+  EXPECT_EQ(all.front().y0, 12);
+  EXPECT_EQ(calibration_blocks(
+                region, true, [](int, int) { return true; }, 5)
+                .size(),
+            5u);
+  const auto left = calibration_blocks(
+      region, true, [](int x, int) { return x < 16; }, 1000);
+  for (const PixelRect& b : left) EXPECT_LT(b.x0, 16);
+  EXPECT_EQ(left.size(), 4u * 5u);  // columns 3, 4-7, 8-11, 12-15; rows 5-7, 8-11, 12-15, 16-19, 20-21
+}
+
+}  // namespace
+}  // namespace pdrt

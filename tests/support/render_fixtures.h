@@ -118,6 +118,19 @@ inline SceneDesc furnace_sphere(int width, int height, int spp, Vec3 centre, Mat
 
 // The pixels of furnace_sphere()'s image whose centres lie within `fraction` of a radius the
 // silhouette contains.
+// A lit diffuse sphere on a 40 x 24 film in front of a dim environment, Gaussian filter of
+// radius 1.5: pixels that differ from sample to sample.
+inline SceneDesc lit_sphere(int spp, const char* sampler) {
+  SceneDesc s = base_scene(40, 24, spp);
+  s.sampler.type = sampler;
+  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
+  s.camera.position = Vec3(0, 0, 4), s.camera.look_at = Vec3(0, 0, 0), s.camera.vfov_deg = 40;
+  s.environment.radiance = Vec3(0.2f);
+  s.shapes.push_back(sphere(Vec3(0, 0, 0), 1, add_material(s, diffuse(0.7f))));
+  s.shapes.push_back(sphere(Vec3(2, 2, 2), 0.5f, add_material(s, emitter(8))));
+  return s;
+}
+
 inline std::vector<std::pair<int, int>> pixels_inside_silhouette(const SceneDesc& s, Vec3 centre, double fraction) {
   const int W = s.film.width, H = s.film.height;
   ThinLensCamera cam(s.camera, W, H);

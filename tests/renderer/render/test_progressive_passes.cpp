@@ -16,22 +16,7 @@
 namespace pdrt {
 namespace {
 
-using test::base_scene;
-using test::diffuse;
-using test::emitter;
-using test::sphere;
-
-// A lit diffuse sphere in front of a dim environment: pixels that differ from sample to sample.
-SceneDesc lit_sphere(int spp, const char* sampler) {
-  SceneDesc s = base_scene(40, 24, spp);
-  s.sampler.type = sampler;
-  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
-  s.camera.position = Vec3(0, 0, 4), s.camera.look_at = Vec3(0, 0, 0), s.camera.vfov_deg = 40;
-  s.environment.radiance = Vec3(0.2f);
-  s.shapes.push_back(sphere(Vec3(0, 0, 0), 1, test::add_material(s, diffuse(0.7f))));
-  s.shapes.push_back(sphere(Vec3(2, 2, 2), 0.5f, test::add_material(s, emitter(8))));
-  return s;
-}
+using test::lit_sphere;
 
 // Renders `s`, cancelling once the pass that reaches `stop_at` spp is complete (0: never).
 RenderResult render_stopped_at(const SceneDesc& s, int64_t stop_at, int threads = 0) {

@@ -13,21 +13,7 @@
 namespace pdrt {
 namespace {
 
-using test::base_scene;
-using test::diffuse;
-using test::emitter;
-using test::sphere;
-
-SceneDesc lit_sphere(int spp, const char* sampler) {
-  SceneDesc s = base_scene(40, 24, spp);
-  s.sampler.type = sampler;
-  s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
-  s.camera.position = Vec3(0, 0, 4), s.camera.look_at = Vec3(0, 0, 0), s.camera.vfov_deg = 40;
-  s.environment.radiance = Vec3(0.2f);
-  s.shapes.push_back(sphere(Vec3(0, 0, 0), 1, test::add_material(s, diffuse(0.7f))));
-  s.shapes.push_back(sphere(Vec3(2, 2, 2), 0.5f, test::add_material(s, emitter(8))));
-  return s;
-}
+using test::lit_sphere;
 
 RenderResult render_scene(const SceneDesc& s, bool estimate, int threads) {
   auto sampler = make_scene_sampler(s.sampler, s.film);

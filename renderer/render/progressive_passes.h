@@ -2,20 +2,21 @@
 // The passes of a render at a fixed spp: every pass covers the whole frame, so a render stopped
 // between passes (Ctrl-C, SIGTERM under mpirun, --time-limit) holds a complete image at the spp
 // every pixel reached, not finished strips next to black ones. As pbrt-v4's waves
-// (gpu/integrator.cpp) the pass sizes double, so the spp after each pass is 4, 8, 16, 32, ...,
+// (gpu/integrator.cpp) the pass sizes double, so the spp after each pass is 8, 16, 32, 64, ...,
 // a power of two up to the last pass (the stratified samplers' prefixes are best there). Two
-// differences, both for cost: the first pass is 4, not 1, because camera rays go to Embree in
-// packets of the samples [4j, 4j + 4) (pixel_renderer.h) and a pass ending inside a packet
-// traces its camera rays twice; and the sizes are not capped at pbrt-v4's 64, because every
-// pass of a pixel prepares each of its sample streams anew (PixelSampleState::set_pixel_pass), a
-// fixed cost per stream and pass that doubling passes pay log2(spp) times per pixel, capped ones
-// spp / 64 times.
+// differences, both for cost: the first pass is 8, not 1: camera rays go to Embree in packets of
+// the samples [4j, 4j + 4) (pixel_renderer.h), a pass ending inside a packet traces its camera
+// rays twice, and a pixel's pass has a fixed cost (it prepares each of its sample streams anew,
+// PixelSampleState::set_pixel_pass); 8 is also what the time estimate's calibration renders a
+// pixel to, so its samples are the first pass's and stay in the film (render_estimate.h). And
+// the sizes are not capped at pbrt-v4's 64: that fixed cost, doubling passes pay log2(spp)
+// times per pixel, capped ones spp / 64 times.
 #include <cstdint>
 #include <functional>
 
 namespace pdrt {
 
-inline constexpr int64_t kFirstPassSpp = 4;
+inline constexpr int64_t kFirstPassSpp = 8;
 
 // The spp every pixel has after the pass that starts at `done` of a `spp` render (done < spp).
 inline int64_t next_pass_end(int64_t done, int64_t spp) {

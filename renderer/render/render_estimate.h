@@ -3,17 +3,16 @@
 // used by the sample budget: after the scene build, blocks of 4x4 pixels scattered over the
 // frame (the R2 sequence, Roberts 2018: any prefix of it is spread evenly) are rendered on the
 // render's threads: 8 blocks untimed (textures load on first use), then for 0.05 s or half the
-// render's samples, each pixel to min(spp, 8) samples in one go; their wall time per sample
-// times the render's samples is the estimate. It must run for tens of milliseconds on a busy
-// machine: a shorter burst gets whole cores that the render then shares. When that is no more
-// than the first pass's samples (spp <= 4) and nothing is splatted, the blocks' samples are the
-// pixels' first, kept in the film (TilePasses::calibrate), and the calibration costs the render
-// nothing; otherwise they go to scratch films, thrown away: more would break the passes' images
-// (after a pass every pixel has that pass's spp), and a splatted sample reaches neighbouring
-// pixels, whose order of contributions it would change. (Kept blocks of 4 samples a pixel
-// estimated 256-spp renders at up to 2.5x their time: a pixel's pass has a fixed cost, which 4
-// samples share less than 8.) Measured against the actual passes by tools/estimate-accuracy.sh
-// (docs/renderer.md, "Estimates").
+// render's samples, each pixel to the first pass's end (min(spp, 8), progressive_passes.h) in
+// one go; their wall time per sample times the samples the passes will take is the estimate.
+// It must run for tens of milliseconds on a busy machine: a shorter burst gets whole cores that
+// the render then shares. The blocks' samples are the pixels' first pass, kept in the film
+// (TilePasses::calibrate), so the calibration costs the render nothing; when splatting they go
+// to scratch films, thrown away: a splatted sample reaches neighbouring pixels, whose order of
+// contributions the calibration would change. (With a first pass of 4, blocks of 4 samples a
+// pixel estimated 256-spp renders at up to 2.5x their time: a pixel's pass has a fixed cost,
+// which 4 samples share less than 8.) Measured against the actual passes by
+// tools/estimate-accuracy.sh (docs/renderer.md, "Estimates").
 #include "renderer/render/process_group.h"
 #include "renderer/scene/crop_window.h"
 #include "sampling/samplers/sampler.h"
@@ -26,9 +25,6 @@
 namespace pdrt {
 
 struct PixelRenderer;
-
-// Samples a calibrated pixel takes (fewer when the render has fewer).
-inline constexpr int64_t kCalibrationSpp = 8;
 
 struct RenderEstimate {
   double samples = 0;                  // the render's camera samples (budget; the most, under adaptive)

@@ -90,9 +90,9 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const TileWaves tiles(desc.film.width, desc.film.height, region.rect, splat ? pixels.splat_margin() : 0);
   TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt, clock.start());
   if (opt.on_estimate) {
-    // The calibration's samples stay in the film when they are the first pass's (render_estimate.h).
-    const int64_t cal = std::min(spp, kCalibrationSpp);
-    const bool kept = !splat && cal <= next_pass_end(0, ad.enabled ? ad.min_spp : spp);
+    // The calibrated pixels take the first pass, kept in the film unless splatted (render_estimate.h).
+    const int64_t cal = next_pass_end(0, ad.enabled ? ad.min_spp : spp);
+    const bool kept = !splat;
     const std::vector<PixelRect> blocks = calibration_blocks(
         region.rect, kept, [&](int x, int y) { return passes.owns(x, y); }, 1 << 16);
     const CalibrationRender calibrate = [&](std::size_t b0, std::size_t b1, int64_t n) {

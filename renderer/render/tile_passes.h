@@ -48,7 +48,7 @@ class TilePasses {
   // no two alike) to `end` samples a pixel, in parallel, counted as the tiles' samples are: the
   // time estimate's calibration (render_estimate.h), whose samples are then the pixels' first.
   // Without splatting a pixel's samples go to it alone, in index order, so the image does not
-  // depend on which pixels the calibration took; `end` at most the first pass's end keeps every
+  // depend on which pixels the calibration took; `end`, the first pass's end, keeps every
   // pass's image too. The films are no longer the same on every rank: the next exchange sends
   // every tile.
   void calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end);

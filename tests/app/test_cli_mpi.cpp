@@ -122,7 +122,7 @@ pid_t rank_pid(const fs::path& out, int rank, int signal = 0) {
 
 // Stops a 2-rank render of 160 x 112 pixels at 4096 spp (about a minute of work) by sending
 // `signal` to mpirun once both ranks are ready for it and have rendered for 2 CPU seconds
-// each (the first pass, 4 spp, is 72k samples at about 2 us each); returns mpirun's exit status
+// each (the first pass, 8 spp, is 143k samples at about 2 us each); returns mpirun's exit status
 // and how long it took to end, and reads the image.
 struct Stopped {
   int status = -1;
@@ -157,7 +157,7 @@ Stopped stop_mpirun(const fs::path& dir, int signal) {
 
 // The partial image of a stopped render: marked partial, every pixel with samples (the passes
 // cover the frame: no black strips), and in both ranks' tiles (tile j, 16 x 16 row by row, is
-// rank j mod 2's) pixels past the first pass's 4 samples, none at the 4096 asked for.
+// rank j mod 2's) pixels past the first pass's 8 samples, none at the 4096 asked for.
 void expect_partial_image_of_both_ranks(const fs::path& exr) {
   auto in = OIIO::ImageInput::open(exr.string());
   ASSERT_TRUE(in) << "the partial image must be written";
@@ -172,7 +172,7 @@ void expect_partial_image_of_both_ranks(const fs::path& exr) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const float n = px[(std::size_t(y) * w + x) * nc + s];
-      past_first[((y / 16) * ((w + 15) / 16) + x / 16) % 2] += n > 4;
+      past_first[((y / 16) * ((w + 15) / 16) + x / 16) % 2] += n > 8;
       empty += n == 0;
       complete += n >= 4096;
     }
@@ -194,7 +194,7 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageWhenSplattingAndSplitDeciding) {
   expect_same_at_every_rank_count("split", scene_text("sobol", "", "split"));
 }
 
-// 16 spp in three passes (4, 8, 16): without splatting the ranks exchange their tiles only
+// 16 spp in two passes (8, 16): without splatting the ranks exchange their tiles only
 // after the last, with splatting after every wave of every pass; the same image either way.
 TEST(CliMpi, RanksRenderTheSingleProcessImageOverProgressivePasses) {
   expect_same_at_every_rank_count("passes", scene_text("sobol", "", "", false));
@@ -202,7 +202,7 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageOverProgressivePasses) {
 }
 
 // poisson-ip: pixels trace varying counts of one image-plane pattern, splatted over the tiles'
-// borders and divided by the expected weight, over three passes.
+// borders and divided by the expected weight, over two passes.
 TEST(CliMpi, RanksRenderTheSingleProcessImageWithTheImagePlaneSampler) {
   expect_same_at_every_rank_count("image-plane", scene_text("poisson-ip", R"(, "reconstruction": "splat")", "", false));
 }
@@ -236,7 +236,7 @@ TEST(CliMpi, StatsListEveryRanksShare) {
 }
 
 // A fixed-spp render's films are read only by rank 0, which writes the image: its tiles go to
-// no one, the other rank's to rank 0 alone. 16 spp in three passes: each rank sends one byte
+// no one, the other rank's to rank 0 alone. 16 spp in two passes: each rank sends one byte
 // per pass (whether it was stopped), and rank 1 also its footprints, 224 bytes a pixel, after
 // the last. (The image is the single-process one: RanksRenderTheSingleProcessImageOverProgressivePasses.)
 TEST(CliMpi, AFixedSppRenderSendsTheFilmToRankZeroAlone) {
@@ -248,8 +248,8 @@ TEST(CliMpi, AFixedSppRenderSendsTheFilmToRankZeroAlone) {
       0);
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
   ASSERT_EQ(j.at("ranks").size(), 2u);
-  EXPECT_EQ(j["ranks"][0]["bytes_sent"].get<int64_t>(), 3);
-  const int64_t film = j["ranks"][1]["bytes_sent"].get<int64_t>() - 3;  // less the flags
+  EXPECT_EQ(j["ranks"][0]["bytes_sent"].get<int64_t>(), 2);
+  const int64_t film = j["ranks"][1]["bytes_sent"].get<int64_t>() - 2;  // less the flags
   EXPECT_EQ(film % 224, 0) << film;
   EXPECT_GT(film / 224, 200) << "at least three of the 40 x 28 film's tiles";
   EXPECT_LT(film / 224, 40 * 28);

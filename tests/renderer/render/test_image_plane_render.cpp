@@ -86,7 +86,7 @@ TEST(ImagePlaneRender, ExpectedWeightIsTheFiltersIntegralCutAtTheImage) {
 }
 
 TEST(ImagePlaneRender, EveryPixelTracesItsCountOfThePatternOverThePasses) {
-  // 16 spp in passes of 4, 8, 16: the samples plane holds each pixel's traced count, which is
+  // 16 spp in passes of 8 and 16: the samples plane holds each pixel's traced count, which is
   // the sampler's samples_in_pixel(16), not 16 (counts vary about it), and averages 16.
   SceneDesc s = edge_scene(16, 3);
   auto sampler = make_scene_sampler(s.sampler, s.film);

@@ -10,6 +10,7 @@
 #include "renderer/render/sample_budget.h"
 #include "renderer/scene/scene_limits.h"
 #include "sampling/core/errors.h"
+#include "sampling/core/printable.h"
 #include "sampling/core/warnings.h"
 #include "renderer/image/image_output.h"
 #include "renderer/render/renderer.h"
@@ -258,9 +259,19 @@ void add_render_command(CLI::App& app) {
     const bool mpi = launched_by_mpi();
     auto previous_term = mpi ? std::signal(SIGTERM, on_interrupt) : SIG_DFL;
     auto previous_usr1 = mpi ? std::signal(SIGUSR1, on_interrupt) : SIG_DFL;
-    require_image_io();  // the last check: a missing module is refused before anything is said or rendered
     // Under mpirun the ranks share the render (docs/distributed.md); rank 0 reports and writes.
     const bool lead = launcher_rank() == 0, quiet = o->quiet || !lead;
+    // The last check: a missing module is refused before anything is said or rendered. Only
+    // the rank that writes needs it (OpenImageIO's libraries cost a process 0.2 s of CPU and
+    // 40 MB; a scene's textures load it where they are read), so only rank 0 meets a broken
+    // one, and ends the others rather than let them wait for it.
+    if (lead) try {
+        require_image_io();
+      } catch (const std::exception& e) {
+        if (group.size() == 1) throw;
+        std::fprintf(stderr, "pdrt: %s\n", printable(e.what()).c_str());
+        abort_process_group(1);
+      }
     auto sampler = make_scene_sampler(scene.sampler, scene.film);
     RenderOptions ro;
     ro.threads = o->threads;

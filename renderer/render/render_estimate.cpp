@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 namespace pdrt {
 
@@ -35,6 +36,18 @@ std::pair<double, double> combined(double seconds_per_sample, double count, cons
   return {rate > 0 ? 1 / rate : 0, total};
 }
 
+// Point k of the R2 sequence (Roberts 2018) in [0, 1)^2.
+std::pair<double, double> r2(uint64_t k) {
+  return {std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0), std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0)};
+}
+
+// The pixels of blocks [b0, b1).
+int64_t pixels_in(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1) {
+  int64_t n = 0;
+  for (std::size_t k = b0; k < b1; ++k) n += int64_t(blocks[k].width()) * blocks[k].height();
+  return n;
+}
+
 }  // namespace
 
 std::vector<PixelRect> calibration_blocks(const PixelRect& region, bool kept, const std::function<bool(int, int)>& mine,
@@ -44,8 +57,7 @@ std::vector<PixelRect> calibration_blocks(const PixelRect& region, bool kept, co
   if (!kept) {
     // Anywhere, overlapping as they fall: scratch films hold each block apart.
     for (std::size_t k = 0; k < most; ++k) {
-      const double u = std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0),
-                   v = std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0);
+      const auto [u, v] = r2(k);
       const int x = region.x0 + int(u * std::max(1, region.width() - kBlock + 1)),
                 y = region.y0 + int(v * std::max(1, region.height() - kBlock + 1));
       out.push_back({x, std::min(x + kBlock, region.x1), y, std::min(y + kBlock, region.y1)});
@@ -61,8 +73,7 @@ std::vector<PixelRect> calibration_blocks(const PixelRect& region, bool kept, co
   for (uint64_t k = 0; out.size() < most && visited < cells; ++k) {
     std::size_t c;
     if (k < 8 * uint64_t(cells)) {
-      const double u = std::fmod(0.5 + 0.7548776662466927 * double(k), 1.0),
-                   v = std::fmod(0.5 + 0.5698402909980532 * double(k), 1.0);
+      const auto [u, v] = r2(k);
       c = std::size_t(std::min(int(v * ny), ny - 1)) * std::size_t(nx) + std::size_t(std::min(int(u * nx), nx - 1));
     } else {
       c = std::size_t(k - 8 * uint64_t(cells));
@@ -108,8 +119,7 @@ RenderEstimate estimate_render(const std::vector<PixelRect>& blocks, int64_t spp
   const std::size_t warm = blocks.size() >= kWarmUpBlocks + 4 ? kWarmUpBlocks : blocks.size() / 3;
   // Untimed: the first touches of textures (loaded on demand) and caches, paid once per render.
   if (warm > 0) render(0, warm, spp);
-  int64_t taken = 0;  // samples the blocks took, warm-up included
-  for (std::size_t k = 0; k < warm; ++k) taken += int64_t(blocks[k].width()) * blocks[k].height() * spp;
+  int64_t taken = pixels_in(blocks, 0, warm) * spp;  // samples the blocks took, warm-up included
   // Blocks it may take: 4 at least, so that every render is timed (when it has them).
   const double cap = std::min(double(blocks.size() - warm),
                               std::max(4.0, samples * kCalibrationShare / double(kBlock * kBlock * spp)));
@@ -118,7 +128,7 @@ RenderEstimate estimate_render(const std::vector<PixelRect>& blocks, int64_t spp
   // Rounds of doubling size, the last one cut to what the time left allows at the rate so far.
   for (std::size_t n = 0, next = std::size_t(std::min(4.0, cap)); next > n;) {
     render(warm + n, warm + next, spp);
-    for (std::size_t k = warm + n; k < warm + next; ++k) e.calibration_pixels += blocks[k].width() * blocks[k].height();
+    e.calibration_pixels += int(pixels_in(blocks, warm + n, warm + next));
     n = next;
     e.calibration_seconds = std::chrono::duration<double>(clock::now() - t0).count();
     const double fit = (kCalibrationTime - e.calibration_seconds) / e.calibration_seconds * double(n);

@@ -38,13 +38,16 @@ void expect_calibration_keeps_the_image(const SceneDesc& s, bool kept) {
 
 // The calibrated pixels keep their first pass (every pixel's samples in index order; on this
 // 40 x 24 film the calibration takes some of the pixels at 1 spp and all of them from 4 on), at
-// 1, 2, 4, 16 spp, with the default sampler and a stratified one.
+// 1, 2, 4, 16 spp, with every sampler (those that order pixels too) and two seeds.
 TEST(RenderEstimate, CalibratedRenderIsTheUncalibratedOneBitForBit) {
   for (int spp : {1, 2, 4, 16})
-    for (const char* sampler : {"poisson", "sobol"}) {
-      SCOPED_TRACE(std::string(sampler) + " at " + std::to_string(spp) + " spp");
-      expect_calibration_keeps_the_image(lit_sphere(spp, sampler), true);
-    }
+    for (const std::string& sampler : sampler_names())
+      for (uint64_t seed : {1u, 29u}) {
+        SCOPED_TRACE(sampler + " at " + std::to_string(spp) + " spp, seed " + std::to_string(seed));
+        SceneDesc s = lit_sphere(spp, sampler.c_str());
+        s.sampler.seed = seed;
+        expect_calibration_keeps_the_image(s, true);
+      }
 }
 
 // Rank reconstruction takes a pass's candidates by the pass's end: the calibration's are the

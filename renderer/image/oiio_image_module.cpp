@@ -98,6 +98,36 @@ bool hash_file(const std::string& path, uint64_t* h) {
   return true;
 }
 
+// Reads every MIP level of the texture into the cache now, when the whole pyramid fits in a
+// quarter of the cache with what is already there (pbrt-v4 holds its images whole, too): left
+// to load on first use, its tiles (read and inflated one by one) land in whichever pixels touch
+// them first, which made the time estimate's scattered calibration blocks 2.5x slower per
+// sample than the render on pool-balls at 256 spp. A larger texture still loads on demand.
+void preload(OIIO::TextureSystem* ts, OIIO::TextureSystem::TextureHandle* th, const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return;
+  std::vector<OIIO::ImageSpec> levels;
+  for (int level = 0; in->seek_subimage(0, level); ++level) levels.push_back(in->spec());
+  in->close();
+  int64_t bytes = 0;
+  for (const OIIO::ImageSpec& l : levels) bytes += int64_t(l.width) * l.height * l.nchannels * int64_t(sizeof(float));
+  float max_mb = 0;
+  int64_t used = 0;
+  if (!ts->getattribute("max_memory_MB", max_mb) || !ts->getattribute("stat:cache_memory_used", OIIO::TypeInt64, &used))
+    return;
+  if (double(used + bytes) > 0.25 * double(max_mb) * 1024 * 1024) return;
+  OIIO::TextureOpt opt;
+  std::vector<float> scratch;
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    const OIIO::ImageSpec& l = levels[level];
+    scratch.resize(std::size_t(l.width) * l.height * l.nchannels);
+    // A failure only leaves the tiles to load on demand, where the lookup reports it.
+    if (!ts->get_texels(th, nullptr, opt, int(level), 0, l.width, 0, l.height, 0, 1, 0, l.nchannels,
+                        OIIO::TypeDesc::FLOAT, scratch.data()))
+      return;
+  }
+}
+
 // pbrt-v4 and Mitsuba 3 decode sRGB before filtering: a MIP level averages linear radiometric
 // values, not encoded ones. So every image becomes, once, a tiled, MIP-mapped linear-float
 // OpenEXR in the cache (ImageBufAlgo::make_texture), keyed by the file's content and the
@@ -155,6 +185,7 @@ int texture_open(void* system, PdrtTextureOpen* o, void** handle, char* error, s
     OIIO::TextureSystem::TextureHandle* th = ts->get_texture_handle(OIIO::ustring(out.string()));
     if (!th || !ts->good(th))
       return fail(error, error_size, "cannot open its MIP-mapped copy " + out.string() + ": " + ts->geterror());
+    preload(ts, th, out.string());
     *handle = th;
     return 0;
   } catch (const std::exception& e) {

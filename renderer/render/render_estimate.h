@@ -2,7 +2,7 @@
 // What a render will cost on this machine and this scene (issue 33), said before it starts and
 // used by the sample budget: after the scene build, blocks of 4x4 pixels scattered over the
 // frame (the R2 sequence, Roberts 2018: any prefix of it is spread evenly) are rendered on the
-// render's threads: 8 blocks untimed (textures load on first use), then for 0.05 s or half the
+// render's threads: 8 blocks untimed (caches warm on first use), then for 0.05 s or half the
 // render's samples, each pixel to the first pass's end (min(spp, 8), progressive_passes.h) in
 // one go; their wall time per sample times the samples the passes will take is the estimate.
 // It must run for tens of milliseconds on a busy machine: a shorter burst gets whole cores that

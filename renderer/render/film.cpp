@@ -1,7 +1,13 @@
 #include "renderer/render/film.h"
 
+#include <sys/mman.h>
+#include <tbb/blocked_range.h>
+#include <unistd.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace pdrt {
@@ -22,8 +28,26 @@ void PixelAccum::add(const Vec3& L, float weight, const Vec3& alb, const Vec3& n
   normal[0] += a * n.x, normal[1] += a * n.y, normal[2] += a * n.z;
   abs_w += a;
   if (std::isfinite(z)) depth += a * z, depth_w += a;
-  for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], L[k]), hi[k] = std::max(hi[k], L[k]);
+  for (int k = 0; k < 3; ++k)
+    lo[k] = samples ? std::min(lo[k], L[k]) : L[k], hi[k] = samples ? std::max(hi[k], L[k]) : L[k];
   ++samples;
+}
+
+void Film::populate(int x0, int x1, int y0, int y1) {
+#ifdef MADV_POPULATE_WRITE
+  if (x0 >= x1 || y0 >= y1) return;
+  static const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+  const auto range = [&](const PixelAccum* a, const PixelAccum* b) {  // [a, b)
+    const uintptr_t lo = reinterpret_cast<uintptr_t>(a) & ~(page - 1),
+                    hi = (reinterpret_cast<uintptr_t>(b) + page - 1) & ~(page - 1);
+    madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_POPULATE_WRITE);  // failure: faults as they come
+  };
+  if (x0 == 0 && x1 == width_)  // whole rows: one range
+    return range(&at(0, y0), &at(0, y1 - 1) + width_);
+  for (int y = y0; y < y1; ++y) range(&at(x0, y), &at(x1 - 1, y) + 1);
+#else
+  (void)x0, (void)x1, (void)y0, (void)y1;
+#endif
 }
 
 double PixelAccum::mean_luminance() const { return w != 0 ? lum / w : 0.0; }
@@ -65,8 +89,7 @@ Image Film::image(float exposure_stops, int x0, int y0, int width, int height) c
   img.rgb.resize(3 * n), img.albedo.resize(3 * n), img.normal.resize(3 * n);
   img.samples.resize(n), img.variance.resize(n), img.depth.resize(n);
   const float scale = std::exp2(exposure_stops);
-  for (std::size_t i = 0; i < n; ++i) {
-    const PixelAccum& p = at(x0 + int(i % std::size_t(width)), y0 + int(i / std::size_t(width)));
+  const auto convert = [&](const PixelAccum& p, std::size_t i) {
     Vec3 v = p.value() * scale;
     img.rgb[3 * i] = v.x, img.rgb[3 * i + 1] = v.y, img.rgb[3 * i + 2] = v.z;
     img.samples[i] = float(p.traced);
@@ -77,7 +100,11 @@ Image Film::image(float exposure_stops, int x0, int y0, int width, int height) c
       img.normal[3 * i + k] = float(p.normal[k] * inv);
     }
     img.depth[i] = p.depth_w > 0 ? float(p.depth / p.depth_w) : std::numeric_limits<float>::infinity();
-  }
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < width; ++x) convert(at(x0 + x, y0 + y), std::size_t(y) * width + x);
+  });
   return img;
 }
 

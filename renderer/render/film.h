@@ -3,10 +3,10 @@
 // mean, albedo, normal, depth). A pixel is only ever written by the thread rendering it, so
 // no locks are needed and results do not depend on scheduling.
 #include "renderer/image/image.h"
+#include "renderer/render/zeroed_array.h"
 #include "renderer/scene/vec3.h"
 
 #include <cstdint>
-#include <vector>
 
 namespace pdrt {
 
@@ -23,7 +23,7 @@ struct PixelAccum {
   int64_t dropped = 0;  // samples dropped for a NaN or infinite value (no weight)
   int64_t prefix = 0;   // the pixel's sample budget taken so far (rank selection: of spp, not candidates)
   double norm = 0;      // > 0: value() divides by it instead of sum w (rank selection's unbiased form)
-  float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};  // per-channel sample range
+  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // per-channel sample range (once samples > 0)
 
   // `half` is the sample index's parity: the two half buffers of the `halves` variance.
   // A sample whose value is NaN or infinite is dropped with no weight, and counted: a black
@@ -41,12 +41,20 @@ struct PixelAccum {
 
 class Film {
  public:
+  // Every pixel PixelAccum{}, whose bytes are all zero: the pages are zeroed by the kernel as
+  // the tiles first touch them (zeroed_array.h).
   Film(int width, int height) : width_(width), height_(height), px_(std::size_t(width) * height) {}
   PixelAccum& at(int x, int y) { return px_[std::size_t(y) * width_ + x]; }
   const PixelAccum& at(int x, int y) const { return px_[std::size_t(y) * width_ + x]; }
+  // Maps the pages under pixels [x0, x1) x [y0, y1) writable now (MADV_POPULATE_WRITE), values
+  // unchanged. A page first touched by a read maps the shared zero page and faults again, copying
+  // it, on the write that follows: on 2 threads that made a 1080p render's kernel time 1.7 s
+  // instead of 0.4. Nothing where the kernel cannot (before Linux 5.14).
+  void populate(int x0, int x1, int y0, int y1);
   int width() const { return width_; }
   int height() const { return height_; }
-  Image image(float exposure_stops) const;  // the samples plane holds the traced counts
+  // The samples plane holds the traced counts; rows are converted in parallel (TBB).
+  Image image(float exposure_stops) const;
   Image image(float exposure_stops, int x0, int y0, int width, int height) const;  // of a rectangle of the film
 
   // Bytes the film and its output image need per pixel (for the memory check).
@@ -54,7 +62,7 @@ class Film {
 
  private:
   int width_, height_;
-  std::vector<PixelAccum> px_;
+  ZeroedArray<PixelAccum> px_;
 };
 
 }  // namespace pdrt

@@ -4,6 +4,8 @@
 #include "sampling/core/warnings.h"
 
 #include <tbb/global_control.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -41,17 +43,32 @@ std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGro
 
 void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats) {
   for (const RankStats& r : stats.ranks) stats.rays += r.rays;
-  int64_t crop_samples = 0, complete = INT64_MAX;
-  for (int y = 0; y < films.image.height(); ++y)
-    for (int x = 0; x < films.image.width(); ++x) {
-      const int64_t n = films.traced(x, y);  // whether or not they counted
-      stats.nonfinite_samples += films.image.at(x, y).dropped + (films.split ? films.decision.at(x, y).dropped : 0);
-      stats.samples += n;
-      if (region.in_crop(x + region.rect.x0, y + region.rect.y0))
-        crop_samples += n, complete = std::min(complete, films.image.at(x, y).prefix);
-    }
-  stats.spp_complete = complete == INT64_MAX ? 0 : complete;
-  stats.spp_mean = double(crop_samples) / (double(region.crop.width()) * region.crop.height());
+  struct Counts {
+    int64_t dropped = 0, samples = 0, crop_samples = 0, complete = INT64_MAX;
+  };
+  // Sums and a minimum of integers: the same whichever way the rows are split.
+  const Counts c = tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, films.image.height()), Counts{},
+      [&](const tbb::blocked_range<int>& rows, Counts c) {
+        for (int y = rows.begin(); y < rows.end(); ++y)
+          for (int x = 0; x < films.image.width(); ++x) {
+            const int64_t n = films.traced(x, y);  // whether or not they counted
+            c.dropped += films.image.at(x, y).dropped + (films.split ? films.decision.at(x, y).dropped : 0);
+            c.samples += n;
+            if (region.in_crop(x + region.rect.x0, y + region.rect.y0))
+              c.crop_samples += n, c.complete = std::min(c.complete, films.image.at(x, y).prefix);
+          }
+        return c;
+      },
+      [](Counts a, const Counts& b) {
+        a.dropped += b.dropped, a.samples += b.samples, a.crop_samples += b.crop_samples;
+        a.complete = std::min(a.complete, b.complete);
+        return a;
+      });
+  stats.nonfinite_samples += c.dropped;
+  stats.samples += c.samples;
+  stats.spp_complete = c.complete == INT64_MAX ? 0 : c.complete;
+  stats.spp_mean = double(c.crop_samples) / (double(region.crop.width()) * region.crop.height());
 }
 
 void warn_nonfinite(const RenderStats& stats, bool quiet) {

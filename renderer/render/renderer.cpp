@@ -120,14 +120,18 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   res.stats.passes_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count();
   res.stats.sampler_profile = profiler.result();
   device.check();
-  res.image = films.image.image(desc.film.exposure, region.crop_x0(), region.crop_y0(), region.crop.width(),
-                                region.crop.height());
+  // Only rank 0 holds every tile's pixels (the last exchange goes to it alone): the others
+  // neither convert nor count their films, whose untouched pages then stay unmapped.
+  const bool lead = group.rank() == 0;
+  if (lead)
+    res.image = films.image.image(desc.film.exposure, region.crop_x0(), region.crop_y0(), region.crop.width(),
+                                  region.crop.height());
   clock.finish(res.stats);
   RankStats mine = passes.rank_stats();
   mine.seconds = res.stats.seconds - clock.build_seconds();
   res.stats.ranks = gather_rank_stats(mine, group);
   if (group.size() > 1) relay_held_warnings(group);
-  count_samples(films, region, res.stats);
+  if (lead) count_samples(films, region, res.stats);
   warn_adaptive_crop(desc, region, rounds, opt.quiet);
   warn_nonfinite(res.stats, opt.quiet);
   res.stats.partial = passes.stopped();

@@ -31,6 +31,29 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
   own_tile_.assign(std::size_t(count), 0);
   for (const std::vector<int>& wave : tiles.waves())
     for (std::size_t j : own_tiles(wave)) own_tile_[std::size_t(wave[j])] = 1;
+  populate_own_tiles();
+}
+
+void TilePasses::populate_own_tiles() {
+  std::vector<Film*> films{&films_.image};
+  if (films_.split) films.push_back(&films_.decision);
+  if (group_.size() == 1) {  // every tile: the films' rows in parallel chunks
+    const int h = films_.image.height(), w = films_.image.width();
+    tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& r) {
+      for (Film* f : films) f->populate(0, w, r.begin(), r.end());
+    });
+    return;
+  }
+  std::vector<int> mine;
+  for (std::size_t t = 0; t < own_tile_.size(); ++t)
+    if (own_tile_[t]) mine.push_back(int(t));
+  const PixelRect& region = tiles_.region();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      const PixelRect p = tiles_.footprint(mine[k]);
+      for (Film* f : films) f->populate(p.x0 - region.x0, p.x1 - region.x0, p.y0 - region.y0, p.y1 - region.y0);
+    }
+  });
 }
 
 void TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end) {

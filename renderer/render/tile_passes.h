@@ -70,6 +70,9 @@ class TilePasses {
   // The same for any rectangle of image pixels.
   int64_t render_pixels(const PixelRect& p, const std::function<int64_t(int, int)>& end_of,
                         std::atomic<bool>& cancelled);
+  // Maps the films' pages under this rank's tiles' footprints writable, in parallel, before any
+  // pass reads them (Film::populate): the others' pages stay unmapped until an exchange writes them.
+  void populate_own_tiles();
   // This rank's tiles of `wave` (positions in it; rank_tiles).
   std::vector<std::size_t> own_tiles(const std::vector<int>& wave) const;
 

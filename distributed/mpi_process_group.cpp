@@ -85,21 +85,6 @@ std::vector<std::vector<std::byte>> MpiProcessGroup::all_gather(const std::vecto
   return split(all, counts, displs);
 }
 
-GatheredBytes MpiProcessGroup::gather_to_lead(const std::vector<std::byte>& mine) const {
-  const int n = block_size(mine, rank_);
-  const bool lead = rank_ == 0;
-  std::vector<int> counts(lead ? static_cast<size_t>(size_) : 0), displs;
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  GatheredBytes out;
-  if (lead) {
-    out.bytes.resize(displacements(counts, &displs));
-    out.begin.assign(displs.begin(), displs.end());
-    out.begin.push_back(out.bytes.size());
-  }
-  MPI_Gatherv(mine.data(), n, MPI_BYTE, out.bytes.data(), counts.data(), displs.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
-  return out;
-}
-
 namespace {
 
 constexpr std::size_t kMessageBytes = std::size_t(1) << 30;  // MPI counts are int

@@ -25,7 +25,6 @@ class MpiProcessGroup final : public ProcessGroup {
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   std::vector<std::vector<std::byte>> all_gather(const std::vector<std::byte>& mine) const override;
-  GatheredBytes gather_to_lead(const std::vector<std::byte>& mine) const override;
   // Point to point, each list sent as MPI datatypes of its spans' addresses (MPI_BOTTOM), in
   // messages of at most 1 GiB (MPI counts are int).
   void move_spans(const std::vector<std::vector<ByteSpan>>& send,

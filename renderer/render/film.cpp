@@ -80,6 +80,19 @@ double PixelAccum::half_variance_of_mean() const {
   return d * d / 4;
 }
 
+void write_image_pixel(const PixelAccum& p, float scale, Image& img, std::size_t i) {
+  Vec3 v = p.value() * scale;
+  img.rgb[3 * i] = v.x, img.rgb[3 * i + 1] = v.y, img.rgb[3 * i + 2] = v.z;
+  img.samples[i] = float(p.traced);
+  img.variance[i] = float(p.variance_of_mean() * scale * scale);
+  double inv = p.abs_w > 0 ? 1.0 / p.abs_w : 0.0;
+  for (int k = 0; k < 3; ++k) {
+    img.albedo[3 * i + k] = float(p.albedo[k] * inv);
+    img.normal[3 * i + k] = float(p.normal[k] * inv);
+  }
+  img.depth[i] = p.depth_w > 0 ? float(p.depth / p.depth_w) : std::numeric_limits<float>::infinity();
+}
+
 Image Film::image(float exposure_stops) const { return image(exposure_stops, 0, 0, width_, height_); }
 
 Image Film::image(float exposure_stops, int x0, int y0, int width, int height) const {
@@ -89,21 +102,9 @@ Image Film::image(float exposure_stops, int x0, int y0, int width, int height) c
   img.rgb.resize(3 * n), img.albedo.resize(3 * n), img.normal.resize(3 * n);
   img.samples.resize(n), img.variance.resize(n), img.depth.resize(n);
   const float scale = std::exp2(exposure_stops);
-  const auto convert = [&](const PixelAccum& p, std::size_t i) {
-    Vec3 v = p.value() * scale;
-    img.rgb[3 * i] = v.x, img.rgb[3 * i + 1] = v.y, img.rgb[3 * i + 2] = v.z;
-    img.samples[i] = float(p.traced);
-    img.variance[i] = float(p.variance_of_mean() * scale * scale);
-    double inv = p.abs_w > 0 ? 1.0 / p.abs_w : 0.0;
-    for (int k = 0; k < 3; ++k) {
-      img.albedo[3 * i + k] = float(p.albedo[k] * inv);
-      img.normal[3 * i + k] = float(p.normal[k] * inv);
-    }
-    img.depth[i] = p.depth_w > 0 ? float(p.depth / p.depth_w) : std::numeric_limits<float>::infinity();
-  };
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < width; ++x) convert(at(x0 + x, y0 + y), std::size_t(y) * width + x);
+      for (int x = 0; x < width; ++x) write_image_pixel(at(x0 + x, y0 + y), scale, img, std::size_t(y) * width + x);
   });
   return img;
 }

@@ -39,6 +39,10 @@ struct PixelAccum {
   double contrast(int channel) const;
 };
 
+// Writes pixel p's image values (rgb scaled by `scale`, 2^exposure; the samples plane holds
+// its traced count) at pixel index i of `img`, whose planes are sized: what Film::image does.
+void write_image_pixel(const PixelAccum& p, float scale, Image& img, std::size_t i);
+
 class Film {
  public:
   // Every pixel PixelAccum{}, whose bytes are all zero: the pages are zeroed by the kernel as

@@ -9,14 +9,6 @@
 
 namespace pdrt {
 
-// Blocks of bytes in one buffer: block r is bytes[begin[r], begin[r + 1]).
-struct GatheredBytes {
-  std::vector<std::byte> bytes;
-  std::vector<std::size_t> begin;  // one more than the blocks
-  std::size_t blocks() const { return begin.empty() ? 0 : begin.size() - 1; }
-  const std::byte* block(std::size_t r) const { return bytes.data() + begin[r]; }
-};
-
 // A run of bytes a process sends from or receives into where they lie (a film's rows).
 struct ByteSpan {
   std::byte* data;
@@ -38,11 +30,6 @@ class ProcessGroup {
   // Every process's `mine`, indexed by rank, on every process. Collective: every process calls
   // it the same number of times, in the same order.
   virtual std::vector<std::vector<std::byte>> all_gather(const std::vector<std::byte>& mine) const = 0;
-  // Every process's `mine` on process 0 only, one after the other in rank order (the others
-  // get nothing): what only the process that writes the image needs, at 1/N of an
-  // all-gather's traffic, in one buffer (a film's share is hundreds of MB at 1080p).
-  // Collective, like all_gather.
-  virtual GatheredBytes gather_to_lead(const std::vector<std::byte>& mine) const = 0;
   // Moves bytes where they lie, without staging buffers: process p's send[q] (indexed by rank;
   // empty: nothing for q) lands, in order, in process q's recv[p], which holds as many bytes.
   // A film's share is hundreds of MB at 1080p, and a buffer that size costs more in page
@@ -57,7 +44,6 @@ class LocalProcessGroup final : public ProcessGroup {
   int rank() const override { return 0; }
   int size() const override { return 1; }
   std::vector<std::vector<std::byte>> all_gather(const std::vector<std::byte>& mine) const override { return {mine}; }
-  GatheredBytes gather_to_lead(const std::vector<std::byte>& mine) const override { return {mine, {0, mine.size()}}; }
   void move_spans(const std::vector<std::vector<ByteSpan>>& send,
                   const std::vector<std::vector<ByteSpan>>& recv) const override {
     if (!send.empty() && !recv.empty()) copy_spans(send[0], recv[0]);

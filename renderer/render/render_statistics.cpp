@@ -41,33 +41,35 @@ std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGro
   return ranks;
 }
 
-void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats) {
-  for (const RankStats& r : stats.ranks) stats.rays += r.rays;
-  struct Counts {
-    int64_t dropped = 0, samples = 0, crop_samples = 0, complete = INT64_MAX;
-  };
-  // Sums and a minimum of integers: the same whichever way the rows are split.
-  const Counts c = tbb::parallel_reduce(
-      tbb::blocked_range<int>(0, films.image.height()), Counts{},
-      [&](const tbb::blocked_range<int>& rows, Counts c) {
+SampleCounts& SampleCounts::operator+=(const SampleCounts& o) {
+  samples += o.samples, dropped += o.dropped, crop_samples += o.crop_samples;
+  crop_complete = std::min(crop_complete, o.crop_complete);
+  return *this;
+}
+
+SampleCounts count_pixels(const RenderFilms& films, const RenderRegion& region, const PixelRect& r) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<int>(r.y0, r.y1), SampleCounts{},
+      [&](const tbb::blocked_range<int>& rows, SampleCounts c) {
         for (int y = rows.begin(); y < rows.end(); ++y)
-          for (int x = 0; x < films.image.width(); ++x) {
-            const int64_t n = films.traced(x, y);  // whether or not they counted
-            c.dropped += films.image.at(x, y).dropped + (films.split ? films.decision.at(x, y).dropped : 0);
+          for (int x = r.x0; x < r.x1; ++x) {
+            const int fx = x - region.rect.x0, fy = y - region.rect.y0;
+            const int64_t n = films.traced(fx, fy);  // whether or not they counted
+            c.dropped += films.image.at(fx, fy).dropped + (films.split ? films.decision.at(fx, fy).dropped : 0);
             c.samples += n;
-            if (region.in_crop(x + region.rect.x0, y + region.rect.y0))
-              c.crop_samples += n, c.complete = std::min(c.complete, films.image.at(x, y).prefix);
+            if (region.in_crop(x, y))
+              c.crop_samples += n, c.crop_complete = std::min(c.crop_complete, films.image.at(fx, fy).prefix);
           }
         return c;
       },
-      [](Counts a, const Counts& b) {
-        a.dropped += b.dropped, a.samples += b.samples, a.crop_samples += b.crop_samples;
-        a.complete = std::min(a.complete, b.complete);
-        return a;
-      });
+      [](SampleCounts a, const SampleCounts& b) { return a += b; });
+}
+
+void count_samples(const SampleCounts& c, const RenderRegion& region, RenderStats& stats) {
+  for (const RankStats& r : stats.ranks) stats.rays += r.rays;
   stats.nonfinite_samples += c.dropped;
   stats.samples += c.samples;
-  stats.spp_complete = c.complete == INT64_MAX ? 0 : c.complete;
+  stats.spp_complete = c.crop_complete == INT64_MAX ? 0 : c.crop_complete;
   stats.spp_mean = double(c.crop_samples) / (double(region.crop.width()) * region.crop.height());
 }
 

@@ -7,6 +7,7 @@
 #include "renderer/render/renderer.h"
 
 #include <chrono>
+#include <cstdint>
 
 namespace pdrt {
 
@@ -28,10 +29,18 @@ class RenderClock {
 // Collective when distributed: every rank's stats on every rank, by rank (integers: exact).
 std::vector<RankStats> gather_rank_stats(const RankStats& mine, const ProcessGroup& group);
 
-// From the ranks and the films: the rays, the samples traced (the margin's too: work done),
-// the dropped ones, and the crop's mean spp (the margin's samples are not the image's spp) and
-// the spp all its pixels reached.
-void count_samples(const RenderFilms& films, const RenderRegion& region, RenderStats& stats);
+// What the films' pixels say of the samples: traced (the margin's too: work done), dropped,
+// and in the crop the sum (for its mean spp: the margin's samples are not the image's spp) and
+// the spp all its pixels reached. Integers: the same however the pixels are split and summed.
+struct SampleCounts {
+  int64_t samples = 0, dropped = 0, crop_samples = 0, crop_complete = INT64_MAX;
+  SampleCounts& operator+=(const SampleCounts& o);
+};
+// Over image pixels `r` of the rendered rectangle, rows in parallel.
+SampleCounts count_pixels(const RenderFilms& films, const RenderRegion& region, const PixelRect& r);
+
+// Fills the stats from the ranks (the rays) and the counts over every pixel.
+void count_samples(const SampleCounts& counts, const RenderRegion& region, RenderStats& stats);
 
 // Warns (unless `quiet`) when samples were dropped for a NaN or infinite value.
 void warn_nonfinite(const RenderStats& stats, bool quiet);

@@ -4,6 +4,7 @@
 #include "renderer/render/cpu_affinity.h"
 #include "renderer/render/embree_scene.h"
 #include "renderer/render/filter.h"
+#include "renderer/render/image_gather.h"
 #include "renderer/render/light_set.h"
 #include "renderer/render/path_integrator.h"
 #include "renderer/render/pixel_renderer.h"
@@ -115,23 +116,20 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     Progress progress("render", passes.work([spp](int, int) { return spp; }), quiet);
     const int64_t first = next_pass_end(0, spp);
     progress.expect(res.stats.estimate.seconds, passes.work([first](int, int) { return first; }));
-    render_progressive(passes, spp, progress, opt.on_pass, FilmsTo::Lead);  // rank 0 writes the image
+    // No rank reads the others' tiles after the last pass: gather_image takes the image to rank 0.
+    render_progressive(passes, spp, progress, opt.on_pass, FilmsTo::None);
   }
   res.stats.passes_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count();
   res.stats.sampler_profile = profiler.result();
   device.check();
-  // Only rank 0 holds every tile's pixels (the last exchange goes to it alone): the others
-  // neither convert nor count their films, whose untouched pages then stay unmapped.
-  const bool lead = group.rank() == 0;
-  if (lead)
-    res.image = films.image.image(desc.film.exposure, region.crop_x0(), region.crop_y0(), region.crop.width(),
-                                  region.crop.height());
-  clock.finish(res.stats);
   RankStats mine = passes.rank_stats();
+  GatheredImage gathered = gather_image(films, tiles, region, desc.film.exposure, group, mine);
+  res.image = std::move(gathered.image);
+  clock.finish(res.stats);
   mine.seconds = res.stats.seconds - clock.build_seconds();
   res.stats.ranks = gather_rank_stats(mine, group);
   if (group.size() > 1) relay_held_warnings(group);
-  if (lead) count_samples(films, region, res.stats);
+  count_samples(gathered.counts, region, res.stats);
   warn_adaptive_crop(desc, region, rounds, opt.quiet);
   warn_nonfinite(res.stats, opt.quiet);
   res.stats.partial = passes.stopped();

@@ -22,8 +22,8 @@ struct RenderOptions {
   bool quiet = false;                         // no progress on stderr
   const std::atomic<bool>* cancel = nullptr;  // set (e.g. by SIGINT) to stop early
   // The processes sharing the render (docs/distributed.md); nullptr = this one alone. Rank 0
-  // returns the single process's image, bit for bit, and its sample counts; the others return
-  // an empty image and no counts (they hold only their own tiles).
+  // returns the single process's image, bit for bit; the others an empty image (they hold only
+  // their own tiles). Every rank has the same statistics.
   const ProcessGroup* group = nullptr;
   // > 0: stop this many seconds after render() starts (scene build included), as a cancel
   // would; the passes (progressive_passes.h) leave every pixel at some spp.

@@ -111,9 +111,6 @@ bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& p
       if (to == FilmsTo::Everyone || tiles_.spread() > 0) {
         cancelled = exchange_.exchange(wave, cancelled, mine_, only) || cancelled;
         in_step_ = true;
-      } else if (to == FilmsTo::Lead) {
-        cancelled = exchange_.exchange_to_lead(wave, cancelled, mine_, only) || cancelled;
-        in_step_ = false;
       } else if (exchange_.any_interrupted(cancelled, mine_)) {
         cancelled = true, exchange_.exchange(wave, true, mine_, only);
         in_step_ = true;

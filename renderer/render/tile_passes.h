@@ -22,7 +22,7 @@ namespace pdrt {
 class Progress;
 
 // Which ranks need every rank's tiles after a pass (TilePasses::run).
-enum class FilmsTo { None, Lead, Everyone };
+enum class FilmsTo { None, Everyone };
 
 class TilePasses {
  public:
@@ -35,8 +35,8 @@ class TilePasses {
   // Pixel (x, y) of the film (film coordinates) gets samples up to end_of(x, y); `progress`
   // advances by the budget samples each tile adds. False when the pass was stopped.
   // `to`: who reads the films after the pass. Everyone (adaptive decisions): every rank gets
-  // every rank's tiles. Lead (the image, the last pass of a fixed-spp render): rank 0 alone
-  // gets them. None: without splatting (no footprint reaches another rank's tile) the ranks
+  // every rank's tiles. None (the passes of a fixed-spp render; gather_image takes the image to
+  // rank 0 at the end): without splatting (no footprint reaches another rank's tile) the ranks
   // only agree whether to stop, as each renders the same tiles in every pass, and the blocks
   // go only when one was stopped. Splatting shares every wave with everyone. Once every rank
   // holds the same films (after an exchange with everyone), an exchange carries only the tiles

@@ -34,31 +34,6 @@ bool WaveExchange::exchange(const std::vector<int>& wave, bool interrupted, Rank
   return any;
 }
 
-bool WaveExchange::exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine,
-                                    const std::vector<std::size_t>* changed) const {
-  const bool any = any_interrupted(interrupted, mine);
-  const int nranks = group_.size(), me = group_.rank();
-  const auto e0 = std::chrono::steady_clock::now();
-  // Rank 0 learns which tiles come: every one of a rank's, or those its list names.
-  const std::vector<std::byte> head = header(false, changed);
-  GatheredBytes heads;
-  if (changed) {
-    heads = group_.gather_to_lead(head);  // empty but on rank 0
-    if (me != 0) mine.bytes_sent += int64_t(head.size());
-  }
-  std::vector<std::vector<ByteSpan>> send(nranks), recv(nranks);
-  if (me != 0) {
-    send[0] = spans(wave, tiles_in(wave, me, head.data()));
-    mine.bytes_sent += int64_t(span_bytes(send[0]));
-  } else {
-    for (int r = 1; r < nranks; ++r)
-      recv[std::size_t(r)] = spans(wave, tiles_in(wave, r, changed ? heads.block(std::size_t(r)) : head.data()));
-  }
-  group_.move_spans(send, recv);
-  mine.exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - e0).count();
-  return any;
-}
-
 bool WaveExchange::any_interrupted(bool interrupted, RankStats& mine) const {
   const auto e0 = std::chrono::steady_clock::now();
   bool any = false;

@@ -28,11 +28,6 @@ class WaveExchange {
   // are the same everywhere), with their list. Null: every tile of this rank's is sent.
   bool exchange(const std::vector<int>& wave, bool interrupted, RankStats& mine,
                 const std::vector<std::size_t>* changed = nullptr) const;
-  // The same, but only rank 0 (which writes the image) copies the others' footprints in: the
-  // last exchange of a render whose films nothing else reads (1/N of the traffic). Every rank
-  // still learns whether any was interrupted.
-  bool exchange_to_lead(const std::vector<int>& wave, bool interrupted, RankStats& mine,
-                        const std::vector<std::size_t>* changed = nullptr) const;
   // Collective: whether any rank was `interrupted`, without the blocks (a pass whose tiles no
   // other rank reads before the next pass: progressive_passes.h).
   bool any_interrupted(bool interrupted, RankStats& mine) const;

@@ -201,6 +201,18 @@ TEST(CliMpi, RanksRenderTheSingleProcessImageOverProgressivePasses) {
   expect_same_at_every_rank_count("passes-splat", scene_text("poisson", R"(, "reconstruction": "splat")", "", false));
 }
 
+// A crop window that cuts tiles: each rank sends rank 0 only its tiles' pixels inside the crop,
+// into their place in the crop's image; with splatting, the tiles of the margin around the
+// crop are rendered and their splats reach it. The image is the single process's.
+TEST(CliMpi, RanksRenderTheSingleProcessImageOfACropWindow) {
+  for (const bool splat : {false, true}) {
+    std::string text = scene_text("sobol", splat ? R"(, "reconstruction": "splat")" : "", "", false);
+    const std::string from = R"("width": 40, "height": 28,)";
+    text.replace(text.find(from), from.size(), from + R"( "crop_window": [0.13, 0.81, 0.2, 0.9],)");
+    expect_same_at_every_rank_count(splat ? "crop-splat" : "crop", text);
+  }
+}
+
 // poisson-ip: pixels trace varying counts of one image-plane pattern, splatted over the tiles'
 // borders and divided by the expected weight, over two passes.
 TEST(CliMpi, RanksRenderTheSingleProcessImageWithTheImagePlaneSampler) {
@@ -278,11 +290,12 @@ TEST(CliMpi, StatsListEveryRanksShare) {
   EXPECT_NE(j.find("\"bytes_sent\""), std::string::npos) << j;
 }
 
-// A fixed-spp render's films are read only by rank 0, which writes the image: its tiles go to
-// no one, the other rank's to rank 0 alone. 16 spp in two passes: each rank sends one byte
-// per pass (whether it was stopped), and rank 1 also its footprints, 224 bytes a pixel, after
-// the last. (The image is the single-process one: RanksRenderTheSingleProcessImageOverProgressivePasses.)
-TEST(CliMpi, AFixedSppRenderSendsTheFilmToRankZeroAlone) {
+// A fixed-spp render's films are read by no other rank: each rank's tiles go to no one until
+// the end, when the other rank sends rank 0 the image values of its tiles' pixels, 48 bytes a
+// pixel (not their accumulators, 224). 16 spp in two passes: each rank sends one byte per pass
+// (whether it was stopped) and its 32 bytes of sample counts to the other; rank 1 also its
+// pixels. (The image is the single-process one: RanksRenderTheSingleProcessImageOverProgressivePasses.)
+TEST(CliMpi, AFixedSppRenderSendsRankZeroTheImageValuesOfTheOtherRanksTiles) {
   const fs::path dir = scratch_dir("mpi-to-lead");
   std::ofstream(dir / "s.json") << scene_text("sobol", "", "", false);
   ASSERT_EQ(
@@ -291,11 +304,14 @@ TEST(CliMpi, AFixedSppRenderSendsTheFilmToRankZeroAlone) {
       0);
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
   ASSERT_EQ(j.at("ranks").size(), 2u);
-  EXPECT_EQ(j["ranks"][0]["bytes_sent"].get<int64_t>(), 2);
-  const int64_t film = j["ranks"][1]["bytes_sent"].get<int64_t>() - 2;  // less the flags
-  EXPECT_EQ(film % 224, 0) << film;
-  EXPECT_GT(film / 224, 200) << "at least three of the 40 x 28 film's tiles";
-  EXPECT_LT(film / 224, 40 * 28);
+  EXPECT_EQ(j["ranks"][0]["bytes_sent"].get<int64_t>(), 2 + 32);
+  const int64_t image = j["ranks"][1]["bytes_sent"].get<int64_t>() - 2 - 32;
+  EXPECT_EQ(image % 48, 0) << image;
+  // The 40 x 28 film has six tiles (16 x 16 pixels, cut at the edges): rank 1 renders three.
+  EXPECT_GE(image / 48, 96 + 128 + 192) << "three of the six tiles";
+  EXPECT_LE(image / 48, 256 + 256 + 192);
+  // Rank 0's counts cover rank 1's tiles too, which its film does not hold.
+  EXPECT_EQ(j["samples"].get<int64_t>(), 40 * 28 * 16);
 }
 
 // After the first all-gather every rank holds the same films, so an adaptive round sends only

@@ -4,6 +4,7 @@
 #include "tessellated_scene.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -13,6 +14,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string dir = argv[1];
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);  // a folder that cannot be made fails below
   pdrt::SceneDesc s = pdrt::bench::tessellated_scene(640, 480, 16, 4);
   std::ofstream obj(dir + "/bench.obj");
   obj << "# pdrt benchmark scene: tessellated sphere on a ground quad\nmtllib bench.mtl\nusemtl grey\n";
@@ -39,6 +42,11 @@ int main(int argc, char** argv) {
   "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
 }
 )";
+  obj.close(), mtl.close(), json.close();
+  if (!obj || !mtl || !json) {
+    std::fprintf(stderr, "make_bench_scene: cannot write the scene in %s\n", dir.c_str());
+    return 1;
+  }
   std::printf("wrote %s/bench.obj (%zu triangles), bench.mtl, bench.json\n", dir.c_str(),
               s.shapes[0].mesh.indices.size() / 3 + 2);
   return 0;

@@ -15,6 +15,7 @@
 #include "renderer/image/image_output.h"
 #include "renderer/render/renderer.h"
 #include "renderer/scene/crop_window.h"
+#include "renderer/image/image_module_preload.h"
 #include "renderer/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
@@ -233,6 +234,9 @@ void add_render_command(CLI::App& app) {
           throw UsageError("--out " + o->outs[i] + " is given twice");
     }
 
+    // Rank 0 writes the image: its module loads while the scene does.
+    std::optional<ImageModulePreload> preload;
+    if (launcher_rank() == 0) preload.emplace();
     SceneDesc scene = load_scene(o->scene, o->strict);
     if (o->regularize) o->set.regularize = true;
     if (o->no_regularize) o->set.regularize = false;
@@ -265,6 +269,7 @@ void add_render_command(CLI::App& app) {
     // the rank that writes needs it (OpenImageIO's libraries cost a process 0.2 s of CPU and
     // 40 MB; a scene's textures load it where they are read), so only rank 0 meets a broken
     // one, and ends the others rather than let them wait for it.
+    preload.reset();
     if (lead) try {
         require_image_io();
       } catch (const std::exception& e) {

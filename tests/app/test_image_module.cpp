@@ -57,5 +57,21 @@ TEST(ImageModule, MissingModuleIsRefusedBeforeRenderingNamingThePath) {
   EXPECT_FALSE(fs::exists(d / "stats.json"));
 }
 
+// The module loads on its own thread while the scene does (image_module_preload.h); a scene
+// that fails to load is what the user hears of, not the module the render never reached.
+TEST(ImageModule, ASceneErrorIsReportedWhileAMissingModuleLoadsBesideIt) {
+  fs::path d = test::scratch_dir("module_missing_scene_error");
+  std::ofstream(d / "scene.json") << R"({"camera": {"position": [0, 0, 4], "look_at": [0, 0, 0]},
+    "film": {"width": 8, "height": -8}, "sampler": {"spp": 1},
+    "objects": [], "lights": [{"type": "environment", "radiance": [1, 1, 1]}]})";
+  ScopedEnv env("PDRT_IMAGE_MODULE", "/nonexistent/libpdrt_image.so");
+  auto r = run_pdrt("render " + (d / "scene.json").string() + " -o " + (d / "out.exr").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(test::line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("height"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("libpdrt_image"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "out.exr"));
+}
+
 }  // namespace
 }  // namespace pdrt

@@ -1,8 +1,8 @@
 #pragma once
 // Loads the image module (image_module.h) on a thread of its own while the caller goes on:
-// OpenImageIO and its ~260 libraries cost 0.2 s of relocations, which `pdrt render` paid on its
-// main thread after the scene had loaded, before the first pass. Started before the scene
-// loads, the two overlap (a 510k-triangle OBJ takes about as long). A failed load is not
+// OpenImageIO and its ~260 libraries cost 0.2 s of relocations. Started before the scene
+// loads, the two overlap (a 510k-triangle OBJ takes about as long) instead of adding up on the
+// main thread before the first pass. A failed load is not
 // reported here: image_module() called afterwards tries again and throws its message.
 #include <thread>
 

@@ -3,9 +3,9 @@
 // the film's conversion. Distributed (docs/distributed.md), every rank converts the pixels of
 // its own tiles, which it alone rendered (its film holds them whole, whatever the others' tiles
 // hold), into image values, 48 bytes a pixel, and they move straight into rank 0's image
-// (ProcessGroup::move_spans); the ranks' counts are summed. Rank 0 used to receive the tiles'
-// accumulators, 224 bytes a pixel, into its film and convert the whole film alone: at 1080p,
-// 464 MB of pages to map at the end of the job on the rank every other one waits for.
+// (ProcessGroup::move_spans); the ranks' counts are summed. Not the tiles' accumulators, 224
+// bytes a pixel, into rank 0's film for rank 0 to convert alone: at 1080p that is 464 MB of
+// pages to map at the end of the job, on the rank every other one waits for.
 #include "renderer/image/image.h"
 #include "renderer/render/process_group.h"
 #include "renderer/render/render_films.h"

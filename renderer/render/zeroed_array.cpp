@@ -16,6 +16,10 @@ ZeroedBytes::ZeroedBytes(std::size_t bytes) : bytes_(bytes) {
   if (bytes >= kMapFrom) {
     void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
+    // Ordinary pages even where the kernel would make huge ones of every mapping: a rank maps
+    // its tiles' pages, not 2 MiB around each, and a 1080p film's system time rose from 0.45 to
+    // 0.93-1.28 s with huge pages (the kernel's compaction; docs/renderer.md, "Film"). Advice only.
+    madvise(p, bytes, MADV_NOHUGEPAGE);
     p_ = p, mapped_ = true;
   } else {
     p_ = std::calloc(1, bytes);

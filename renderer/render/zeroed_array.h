@@ -1,6 +1,6 @@
 #pragma once
 // An array whose elements start as all-zero bytes, on pages the kernel zeroes when they are
-// first touched (anonymous mmap from 64 KiB on, calloc below): allocating a film costs no
+// first touched (anonymous mmap from 64 KiB on, without huge pages; calloc below): allocating a film costs no
 // time, the threads that render a tile fault in its pages in parallel, and an MPI rank maps
 // only the pages of the tiles it renders (filling a 1080p film, 464 MB, on one thread takes
 // about 0.2 s, before any pass could start). T must be trivially copyable and destructible,

@@ -18,8 +18,10 @@ PlyMesh load_ply(const std::filesystem::path& file, const std::string& shown) {
   check_ply(file, shown);  // Assimp 5.2 hangs on some malformed headers and accepts truncated bodies
   Assimp::Importer importer;
   // Only triangulation: the vertices stay as the file has them (no joining, no generated
-  // normals), so indices and attributes match pbrt's reading of the same file.
-  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate);
+  // normals), so indices and attributes match pbrt's reading of the same file. The validation
+  // runs first and refuses a face whose index is out of range (negative, or past the
+  // vertices), which triangulation would read out of bounds (found by fuzz.ply).
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate);
   if (!scene) {
     std::string why = importer.GetErrorString();
     while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();

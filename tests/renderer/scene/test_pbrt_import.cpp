@@ -821,6 +821,20 @@ TEST(PbrtImport, PlyFaceWithoutVerticesIsRefusedBeforeAssimpReadsIt) {
   EXPECT_NE(ply_error(file, "abort-empty-face.ply").find("face 0 has an empty list"), std::string::npos);
 }
 
+// Found by the ctest run of tests/fuzz/fuzz_ply.cpp (the input as found): a quad with the index
+// -3 crashed Assimp 5.2's triangulation, which read out of bounds; its validation, which runs
+// first, refuses any index out of range, negative or past the vertices, in text or binary.
+TEST(PbrtImport, PlyFaceWithAnIndexOutOfRangeIsRefused) {
+  const std::filesystem::path file =
+      std::filesystem::path(PDRT_TEST_DATA_DIR) / "fuzz" / "ply" / "segv-negative-index-in-a-quad.ply";
+  const std::string e = ply_error(file, "q.ply");
+  EXPECT_EQ(e.rfind("q.ply: cannot read the PLY mesh: ", 0), 0u) << e;
+  const std::filesystem::path dir = ply_dir();
+  write_file(dir / "past.ply", ply_triangle_header() + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  EXPECT_EQ(ply_error(dir / "past.ply", "past.ply").rfind("past.ply: cannot read the PLY mesh: ", 0), 0u);
+  std::filesystem::remove_all(dir);
+}
+
 // Found by the long run of tests/fuzz/fuzz_pbrt.cpp (the input as found): one triangle at
 // levels 12 asked for 4^12 triangles, 4.8 GB and 40 s of refinement for three lines of text.
 TEST(PbrtImport, LoopSubdivBeyondTheTriangleLimitIsRefusedBeforeRefining) {

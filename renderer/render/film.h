@@ -40,7 +40,8 @@ struct PixelAccum {
 };
 
 // Writes pixel p's image values (rgb scaled by `scale`, 2^exposure; the samples plane holds
-// its traced count) at pixel index i of `img`, whose planes are sized: what Film::image does.
+// its traced count) at pixel index i of `img`, whose planes are sized (sized_image): what
+// Film::image does.
 void write_image_pixel(const PixelAccum& p, float scale, Image& img, std::size_t i);
 
 class Film {

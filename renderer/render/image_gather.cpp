@@ -22,27 +22,19 @@ struct Segment {
 // same list on every rank.
 std::vector<Segment> segments_of(const TileWaves& tiles, const PixelRect& crop, int rank, int ranks) {
   std::vector<Segment> out;
-  for (const std::vector<int>& wave : tiles.waves())
-    for (std::size_t j : rank_tiles(wave.size(), rank, ranks)) {
-      const PixelRect p = tiles.pixels(wave[std::size_t(j)]);
-      const int x0 = std::max(p.x0, crop.x0), x1 = std::min(p.x1, crop.x1);
-      if (x0 >= x1) continue;
-      for (int y = std::max(p.y0, crop.y0); y < std::min(p.y1, crop.y1); ++y)
-        out.push_back({x0 - crop.x0, x1 - crop.x0, y - crop.y0});
-    }
+  for (int t : tiles.tiles_of(rank, ranks)) {
+    const PixelRect p = tiles.pixels(t);
+    const int x0 = std::max(p.x0, crop.x0), x1 = std::min(p.x1, crop.x1);
+    if (x0 >= x1) continue;
+    for (int y = std::max(p.y0, crop.y0); y < std::min(p.y1, crop.y1); ++y)
+      out.push_back({x0 - crop.x0, x1 - crop.x0, y - crop.y0});
+  }
   return out;
 }
 
 // Each plane of an image with its floats per pixel, in the order the planes travel.
 std::vector<std::pair<std::vector<float>*, int>> planes(Image& img) {
   return {{&img.rgb, 3}, {&img.albedo, 3}, {&img.normal, 3}, {&img.samples, 1}, {&img.variance, 1}, {&img.depth, 1}};
-}
-
-Image sized(int width, int height) {
-  Image img;
-  img.width = width, img.height = height;
-  for (auto [plane, comps] : planes(img)) plane->resize(std::size_t(width) * std::size_t(height) * std::size_t(comps));
-  return img;
 }
 
 }  // namespace
@@ -60,13 +52,12 @@ GatheredImage gather_image(const RenderFilms& films, const TileWaves& tiles, con
   const int me = group.rank(), nranks = group.size();
 
   // The counts of this rank's tiles (together they cover the rendered rectangle once), summed.
-  std::vector<PixelRect> mine_tiles;
-  for (const std::vector<int>& wave : tiles.waves())
-    for (std::size_t j : rank_tiles(wave.size(), me, nranks)) mine_tiles.push_back(tiles.pixels(wave[j]));
+  const std::vector<int> mine_tiles = tiles.tiles_of(me, nranks);
   const SampleCounts counted = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, mine_tiles.size()), SampleCounts{},
       [&](const tbb::blocked_range<std::size_t>& r, SampleCounts c) {
-        for (std::size_t k = r.begin(); k != r.end(); ++k) c += count_pixels(films, region, mine_tiles[k]);
+        for (std::size_t k = r.begin(); k != r.end(); ++k)
+          c += count_pixels(films, region, tiles.pixels(mine_tiles[k]));
         return c;
       },
       [](SampleCounts a, const SampleCounts& b) { return a += b; });
@@ -96,7 +87,7 @@ GatheredImage gather_image(const RenderFilms& films, const TileWaves& tiles, con
   std::vector<std::vector<ByteSpan>> send(static_cast<std::size_t>(nranks)), recv(static_cast<std::size_t>(nranks));
   Image strip;  // a rank's pixels one after the other, segment by segment: one row
   if (me == 0) {
-    out.image = sized(crop.width(), crop.height());
+    out.image = sized_image(crop.width(), crop.height());
     convert(out.image, [&](std::size_t, const Segment& s) { return std::size_t(s.y) * crop.width() + s.x0; });
     for (int r = 1; r < nranks; ++r) {
       const std::vector<Segment> theirs = segments_of(tiles, crop, r, nranks);
@@ -109,7 +100,7 @@ GatheredImage gather_image(const RenderFilms& films, const TileWaves& tiles, con
   } else {
     std::vector<std::size_t> start(own.size() + 1, 0);
     for (std::size_t k = 0; k < own.size(); ++k) start[k + 1] = start[k] + std::size_t(own[k].width());
-    strip = sized(int(start.back()), 1);
+    strip = sized_image(int(start.back()), 1);
     convert(strip, [&](std::size_t k, const Segment&) { return start[k]; });
     for (auto [plane, comps] : planes(strip)) {
       if (plane->empty()) continue;  // no pixel of the crop

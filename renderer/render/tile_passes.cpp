@@ -29,8 +29,7 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
   for (const std::vector<int>& wave : tiles.waves())
     for (int t : wave) count = std::max(count, t + 1);
   own_tile_.assign(std::size_t(count), 0);
-  for (const std::vector<int>& wave : tiles.waves())
-    for (std::size_t j : own_tiles(wave)) own_tile_[std::size_t(wave[j])] = 1;
+  for (int t : tiles.tiles_of(group.rank(), group.size())) own_tile_[std::size_t(t)] = 1;
   populate_own_tiles();
 }
 
@@ -44,9 +43,7 @@ void TilePasses::populate_own_tiles() {
     });
     return;
   }
-  std::vector<int> mine;
-  for (std::size_t t = 0; t < own_tile_.size(); ++t)
-    if (own_tile_[t]) mine.push_back(int(t));
+  const std::vector<int> mine = tiles_.tiles_of(group_.rank(), group_.size());
   const PixelRect& region = tiles_.region();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size()), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t k = r.begin(); k != r.end(); ++k) {
@@ -72,15 +69,14 @@ std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) con
 double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {
   const PixelRect& region = tiles_.region();
   double total = 0;
-  for (const std::vector<int>& wave : tiles_.waves())
-    for (std::size_t j : own_tiles(wave)) {
-      const PixelRect p = tiles_.pixels(wave[j]);
-      for (int y = p.y0; y < p.y1; ++y)
-        for (int x = p.x0; x < p.x1; ++x) {
-          const int fx = x - region.x0, fy = y - region.y0;
-          total += double(std::max<int64_t>(0, end_of(fx, fy) - films_.image.at(fx, fy).prefix));
-        }
-    }
+  for (int t : tiles_.tiles_of(group_.rank(), group_.size())) {
+    const PixelRect p = tiles_.pixels(t);
+    for (int y = p.y0; y < p.y1; ++y)
+      for (int x = p.x0; x < p.x1; ++x) {
+        const int fx = x - region.x0, fy = y - region.y0;
+        total += double(std::max<int64_t>(0, end_of(fx, fy) - films_.image.at(fx, fy).prefix));
+      }
+  }
   return total;
 }
 

@@ -28,6 +28,13 @@ PixelRect TileWaves::footprint(int t) const {
       std::max((t / tx_) * kTile - spread_, region_.y0), std::min((t / tx_) * kTile + kTile + spread_, region_.y1)};
 }
 
+std::vector<int> TileWaves::tiles_of(int rank, int ranks) const {
+  std::vector<int> out;
+  for (const std::vector<int>& wave : waves_)
+    for (std::size_t j : rank_tiles(wave.size(), rank, ranks)) out.push_back(wave[j]);
+  return out;
+}
+
 std::vector<std::size_t> rank_tiles(std::size_t wave_size, int rank, int ranks) {
   std::vector<std::size_t> tiles;
   for (std::size_t j = std::size_t(rank); j < wave_size; j += std::size_t(ranks)) tiles.push_back(j);

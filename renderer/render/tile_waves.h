@@ -30,6 +30,8 @@ class TileWaves {
   // The tile holding image pixel (x, y).
   int tile_at(int x, int y) const { return (y / kTile) * tx_ + x / kTile; }
   int spread() const { return spread_; }
+  // The tiles `rank` of `ranks` renders (rank_tiles), wave by wave: the same list on every rank.
+  std::vector<int> tiles_of(int rank, int ranks) const;
 
  private:
   int tx_;  // tiles per row

@@ -160,6 +160,7 @@ PDRT_PATH_PATTERNS(sobol, "sobol");
 PDRT_PATH_PATTERNS(pmj02bn, "pmj02bn");
 PDRT_PATH_PATTERNS(zsobol, "zsobol");
 PDRT_PATH_PATTERNS(poisson_ss, "poisson-ss");
+PDRT_PATH_PATTERNS(poisson_bn, "poisson-bn");
 PDRT_PATH_PATTERNS(regular, "regular");
 #undef PDRT_PATH_PATTERNS
 

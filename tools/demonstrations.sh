@@ -7,7 +7,7 @@
 # table, and the time each comparison took.
 # Usage: tools/demonstrations.sh [OUT]   (default out/demonstrations)
 # Environment (defaults in brackets):
-#   SAMPLERS  the samplers, comma-separated [jitter,poisson,poisson-ss,sobol,zsobol]
+#   SAMPLERS  the samplers, comma-separated [jitter,poisson,poisson-ss,poisson-bn,sobol,zsobol]
 #   SPP [1,2,4,8]  SEEDS [8]  WIDTH: image width, the height keeps the scene's aspect [128]
 #   REF: reference spp [4096]  THREADS [0: all cores]  DOCS: where the sheets go, empty for
 #   nowhere [docs/images]  PDRT_BUILD [build]  SCENES [scenes/moving-square.json scenes/dof-row.json]
@@ -16,7 +16,7 @@
 #   CACHE: the reference cache directory [pdrt's default]
 set -euo pipefail
 OUT=${1:-out/demonstrations}
-SAMPLERS=${SAMPLERS:-jitter,poisson,poisson-ss,sobol,zsobol}
+SAMPLERS=${SAMPLERS:-jitter,poisson,poisson-ss,poisson-bn,sobol,zsobol}
 SPP=${SPP:-1,2,4,8}; SEEDS=${SEEDS:-8}; WIDTH=${WIDTH:-128}; REF=${REF:-4096}; THREADS=${THREADS:-0}
 DOCS=${DOCS-docs/images}; B=${PDRT_BUILD:-build}
 SCENES=${SCENES:-scenes/moving-square.json scenes/dof-row.json}

@@ -8,7 +8,7 @@
 set -euo pipefail
 OUT=${1:-out/sampler-share}; SCALE=${2:-2}; SPP=${3:-64}; T=${4:-1}
 B=${PDRT_BUILD:-build}
-SAMPLERS=${SAMPLERS:-random jitter poisson poisson-065 sobol pmj02bn zsobol regular poisson-ss poisson-ip}
+SAMPLERS=${SAMPLERS:-random jitter poisson poisson-065 sobol pmj02bn zsobol regular poisson-ss poisson-bn poisson-ip}
 mkdir -p "$OUT"
 shopt -s nullglob
 for scene in scenes/*.json scenes/pbrt/*/*.pbrt; do

@@ -24,7 +24,7 @@ from matplotlib.colors import LinearSegmentedColormap, LogNorm, Normalize  # noq
 
 COLORS = {"random": "#7f7f7f", "regular": "#9467bd", "jitter": "#1f77b4", "poisson": "#d62728", "poisson-065": "#ff7f0e",
           "pmj02bn": "#17becf", "sobol": "#2ca02c", "zsobol": "#bcbd22",
-          "poisson-ss": "#e377c2", "poisson-ip": "#8c564b"}
+          "poisson-ss": "#e377c2", "poisson-bn": "#393b79", "poisson-ip": "#8c564b"}
 SLOPE_NOTE = ("slope: least-squares slope of log RMSE against log spp; -0.5 is plain Monte Carlo's rate, "
               "lower (more negative) is faster convergence")
 

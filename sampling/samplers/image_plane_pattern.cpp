@@ -1,16 +1,13 @@
 #include "sampling/samplers/image_plane_pattern.h"
 
-#include "sampling/core/atomic_file.h"
 #include "sampling/core/cache_dir.h"
+#include "sampling/core/checksummed_file.h"
 #include "sampling/core/fixed_point.h"
-#include "sampling/core/hash.h"
 #include "sampling/core/warnings.h"
 #include "sampling/generators/generator.h"
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string_view>
 
 namespace pdrt {
@@ -34,7 +31,7 @@ ImagePlanePattern generate_pattern() {
   return p;
 }
 
-// The file: magic, then the coordinates and radii as stored in memory, then FNV-1a of them.
+// The file's body (checksummed_file.h): the coordinates and radii as stored in memory.
 std::string payload(const ImagePlanePattern& p) {
   std::string b(p.coords.size() * 4 + p.radius.size() * 4, '\0');
   std::memcpy(b.data(), p.coords.data(), p.coords.size() * 4);
@@ -43,18 +40,12 @@ std::string payload(const ImagePlanePattern& p) {
 }
 
 bool read_pattern(const std::filesystem::path& file, ImagePlanePattern* out) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t n = std::size_t(kImagePlanePoints), body = n * 12;
-  if (bytes.size() != sizeof kMagic + body + 8 || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) return false;
-  const std::string_view data(bytes.data() + sizeof kMagic, body);
-  uint64_t sum;
-  std::memcpy(&sum, bytes.data() + sizeof kMagic + body, 8);
-  if (sum != fnv1a(data)) return false;
+  const std::size_t n = std::size_t(kImagePlanePoints);
+  const auto body = read_checksummed_file(file, std::string_view(kMagic, sizeof kMagic), n * 12);
+  if (!body) return false;
   out->coords.resize(2 * n), out->radius.resize(n);
-  std::memcpy(out->coords.data(), data.data(), n * 8);
-  std::memcpy(out->radius.data(), data.data() + n * 8, n * 4);
+  std::memcpy(out->coords.data(), body->data(), n * 8);
+  std::memcpy(out->radius.data(), body->data() + n * 8, n * 4);
   return true;
 }
 
@@ -69,13 +60,7 @@ const ImagePlanePattern& image_plane_pattern() {
     if (read_pattern(file, &p)) return p;
     p = generate_pattern();
     try {
-      const std::string body = payload(p);
-      const uint64_t sum = fnv1a(body);
-      write_file_atomically(file, [&](std::ostream& os) {
-        os.write(kMagic, sizeof kMagic);
-        os.write(body.data(), std::streamsize(body.size()));
-        os.write(reinterpret_cast<const char*>(&sum), sizeof sum);
-      });
+      write_checksummed_file(file, std::string_view(kMagic, sizeof kMagic), payload(p));
     } catch (const std::exception& e) {
       warn(std::string("pdrt: warning: cannot cache the image-plane pattern (") + e.what() +
            "); using the one generated in memory, which the next run generates again");

@@ -16,6 +16,7 @@
 #include "sampling/core/install_paths.h"
 #include "sampling/core/rng.h"
 #include "sampling/core/warnings.h"
+#include "sampling/samplers/screen_keys.h"
 
 #include <algorithm>
 #include <atomic>
@@ -32,7 +33,8 @@ namespace pdrt {
 namespace {
 
 constexpr double kFixed = 0x1.0p-32;
-constexpr uint64_t kShiftSalt = 0x73686966742d6370ull;  // the shift is independent of table and symmetry
+constexpr uint64_t kShiftSalt = 0x73686966742d6370ull;   // the shift is independent of table and symmetry
+constexpr uint64_t kScreenSalt = 0x7363726e2d6b6579ull;  // poisson-bn's per-stream tile offset and shift
 
 // Integer pixel version of the 8 symmetries of the square (bit 0 swaps the axes, bits 1 and
 // 2 flip x and y after the swap): inverse of the symmetry on a P x P grid.
@@ -82,18 +84,30 @@ class PoissonSampler final : public Sampler {
     // `poisson`'s untiled 2-D families hold tables of one kind (owen-pd, same size), so they
     // are read as one pool: 4x the tables per stream for the same generation time, and no two
     // 2-D streams of a path share one (docs/sampling.md, "Tables without replacement").
-    if (!stratified() || tiled()) return;
-    const SampleTable& lens = *t.family[int(Family::Lens)];
-    for (Family f : kPlaneFamilies) {
-      const SampleTable& ft = *t.family[int(f)];
-      if (ft.dim != 2 || ft.params.points != lens.params.points || ft.params.construction != lens.params.construction) {
-        pool_.clear();
-        return;
+    if (stratified() && !tiled()) {
+      const SampleTable& lens = *t.family[int(Family::Lens)];
+      for (Family f : kPlaneFamilies) {
+        const SampleTable& ft = *t.family[int(f)];
+        if (ft.dim != 2 || ft.params.points != lens.params.points ||
+            ft.params.construction != lens.params.construction) {
+          pool_.clear();
+          break;
+        }
+        for (const auto& c : ft.coords) pool_.push_back(c.data());
       }
-      for (const auto& c : ft.coords) pool_.push_back(c.data());
+    }
+    if (o.screen_keys_spp > 0) {
+      if (pool_.empty())
+        throw UsageError("poisson-bn needs the poisson table set's untiled tables of one size per 2-D family (" +
+                         t.dir.string() + ")");
+      std::vector<const uint32_t*> time;
+      for (const auto& c : t.family[int(Family::Time)]->coords) time.push_back(c.data());
+      const int spp = int(std::min<int64_t>(o.screen_keys_spp, 64));
+      plane_keys_ = &cached_screen_keys(pool_, 2, spp);
+      time_keys_ = &cached_screen_keys(time, 1, spp);
     }
   }
-  std::string name() const override { return table_set_name(tables_.kind); }
+  std::string name() const override { return plane_keys_ ? "poisson-bn" : table_set_name(tables_.kind); }
 
   Vec2 get_2d(int px, int py, int64_t index, Family f, int bounce) const override {
     if (f == Family::Pixel && tiled()) {
@@ -183,6 +197,7 @@ class PoissonSampler final : public Sampler {
     const uint32_t slot = power_of_two(T) ? b & (T - 1) : b % T,
                    group = power_of_two(T) ? b >> std::countr_zero(T) : b / T;
     const uint64_t hs = stream(px, py, f, bounce);
+    if (plane_keys_ && round == 0) return keyed_stream(px, py, f, bounce, hs, out);
     uint64_t h = hs;
     uint32_t table;
     if (round == 0) {
@@ -219,6 +234,27 @@ class PoissonSampler final : public Sampler {
         out->off[k] = flip ? 1.0 : 0.0;
         out->mul[k] = flip ? -kFixed : kFixed;
       }
+    }
+    return hs;
+  }
+
+  // poisson-bn's round 0: the key of the pixel's place in the tile (offset per stream), under a
+  // digital shift uniform per (seed, family, bounce): every value is uniform over seeds and the
+  // keys' relations between neighbouring pixels stay.
+  uint64_t keyed_stream(int px, int py, Family f, int bounce, uint64_t hs, PreparedStream* out) const {
+    const SampleTable& t = *tables_.family[int(f)];
+    const ScreenKeyTile& tile = f == Family::Time ? *time_keys_ : *plane_keys_;
+    const uint64_t hk = mix64(stream(INT32_MIN, INT32_MIN, f, bounce) ^ kScreenSalt), g = mix64(hk ^ kShiftSalt);
+    const int ox = int((hk & 0xffffffffu) % uint32_t(tile.size)), oy = int((hk >> 32) % uint32_t(tile.size));
+    const ScreenKey& k = tile.at(px + ox, py + oy);
+    out->coords = f == Family::Time ? t.coords[k.table].data() : pool_[k.table];
+    out->base = 0;
+    out->count = t.params.points;
+    out->shift = t.dim == 2 ? 1 : 0;
+    out->grows = false;
+    for (int a = 0; a < 2; ++a) {
+      out->src[a] = uint8_t(t.dim == 2 && k.swap ? 1 - a : t.dim == 2 ? a : 0);
+      out->xr[a] = k.x[a] ^ uint32_t(g >> (32 * a)), out->add[a] = 0, out->off[a] = 0.0, out->mul[a] = kFixed;
     }
     return hs;
   }
@@ -371,7 +407,9 @@ class PoissonSampler final : public Sampler {
 
   TableSet tables_;
   PoissonOptions opt_;
-  std::vector<const uint32_t*> pool_;  // `poisson`'s 2-D tables of every family, when pooled
+  std::vector<const uint32_t*> pool_;          // `poisson`'s 2-D tables of every family, when pooled
+  const ScreenKeyTile* plane_keys_ = nullptr;  // poisson-bn: the 2-D families' keys
+  const ScreenKeyTile* time_keys_ = nullptr;   // and the time family's
 };
 
 bool complete(const std::filesystem::path& dir, TableSetKind kind) {

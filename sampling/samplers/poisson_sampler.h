@@ -43,6 +43,11 @@ struct PoissonOptions {
   // `poisson`: the shift of the lens, light and gloss streams, of the pixel's and of time's.
   // Digital by default: the isometric one's bias shows in renders and tests (docs/sampling.md).
   PoissonShift plane = PoissonShift::Digital, pixel = PoissonShift::Digital, time = PoissonShift::Digital;
+  // `poisson-bn` (nonzero): every stream's table, axis swap and digital shift come from a tile
+  // of per-pixel keys optimised for blue-noise error on screen at this many samples per pixel
+  // (screen_keys.h), under a shift and tile offset per (seed, family, bounce). Needs `poisson`'s
+  // untiled, pooled tables.
+  int64_t screen_keys_spp = 0;
 };
 
 inline constexpr int kShiftExactBits = 12;

@@ -77,6 +77,11 @@ std::unique_ptr<Sampler> make_sampler(SamplerKind kind, uint64_t seed, const Sam
       return make_poisson_sampler(seed, default_tables(TableSetKind::Poisson065));
     case SamplerKind::PoissonSS:
       return make_screen_poisson_sampler(seed, default_tables(), shape);
+    case SamplerKind::PoissonBN: {
+      PoissonOptions o;
+      o.screen_keys_spp = std::max<int64_t>(1, shape.samples_per_pixel);
+      return make_poisson_sampler(seed, default_tables(), o);
+    }
     case SamplerKind::PoissonIP:
       return make_image_plane_sampler(make_poisson_sampler(seed, default_tables()), shape, sampler_name(kind));
   }

@@ -13,13 +13,26 @@ namespace pdrt {
 // sampler.type, --sampler, --samplers, help texts and messages all read it). Every kind but
 // `regular` is a Monte Carlo sampler, unbiased over seeds; `regular` is Cook's regular sampling
 // (the same deterministic pattern in every pixel; biased, for aliasing demos).
-enum class SamplerKind { Random, Jitter, Poisson, Poisson065, Sobol, Pmj02bn, ZSobol, PoissonSS, PoissonIP, Regular };
+enum class SamplerKind {
+  Random,
+  Jitter,
+  Poisson,
+  Poisson065,
+  Sobol,
+  Pmj02bn,
+  ZSobol,
+  PoissonSS,
+  PoissonBN,
+  PoissonIP,
+  Regular
+};
 inline constexpr NamedValue<SamplerKind> kSamplerNames[] = {
     {SamplerKind::Random, "random"},        {SamplerKind::Jitter, "jitter"},
     {SamplerKind::Poisson, "poisson"},      {SamplerKind::Poisson065, "poisson-065"},
     {SamplerKind::Sobol, "sobol"},          {SamplerKind::Pmj02bn, "pmj02bn"},
     {SamplerKind::ZSobol, "zsobol"},        {SamplerKind::PoissonSS, "poisson-ss"},
-    {SamplerKind::PoissonIP, "poisson-ip"}, {SamplerKind::Regular, "regular"}};
+    {SamplerKind::PoissonBN, "poisson-bn"}, {SamplerKind::PoissonIP, "poisson-ip"},
+    {SamplerKind::Regular, "regular"}};
 // What `compare` sweeps unless told: the project's own and the classic baselines (the peers
 // pmj02bn and zsobol on request, so the default sweep's time stays as documented).
 inline constexpr SamplerKind kCompareDefaultSamplers[] = {

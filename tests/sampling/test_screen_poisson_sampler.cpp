@@ -203,22 +203,13 @@ TEST(ScreenPoissonSampler, EstimateOfAnAnalyticIntegralIsUnbiasedOverSeeds) {
   // f(pixel, lens, time) = x y + u^2 + sin(pi t) with integral 1/4 + 1/3 + 2/pi, estimated from
   // a pixel's 4 samples; the mean over 2048 seeds is within 4 standard errors of the integral,
   // at a pixel inside and one outside the image, at samples of the first and a later block.
-  const double exact = 0.25 + 1.0 / 3.0 + 2.0 / M_PI;
   for (auto [px, py, first] : std::vector<std::array<int, 3>>{{5, 9, 0}, {-70, 1003, 8}}) {
-    const int n = 2048;
-    double sum = 0, sum2 = 0;
-    for (int seed = 0; seed < n; ++seed) {
-      auto s = screen(uint64_t(seed), {4, 16, 16});
-      double e = 0;
-      for (int i = first; i < first + 4; ++i) {
-        const Vec2 p = s->get_2d(px, py, i, Family::Pixel, 0), l = s->get_2d(px, py, i, Family::Lens, 0);
-        e += p[0] * p[1] + l[0] * l[0] + std::sin(M_PI * s->get_1d(px, py, i, Family::Time, 0));
-      }
-      e /= 4;
-      sum += e, sum2 += e * e;
-    }
-    const double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / n);
-    EXPECT_NEAR(mean, exact, 4 * se) << px << "," << py;
+    const auto [mean, se] = test::analytic_estimate(
+        [](uint64_t seed) {
+          return screen(seed, {4, 16, 16});
+        },
+        px, py, first);
+    EXPECT_NEAR(mean, test::analytic_estimate_integral, 4 * se) << px << "," << py;
     EXPECT_GT(se, 0.0);
   }
 }

@@ -4,6 +4,9 @@
 #include "sampling/samplers/sampler.h"
 
 #include <array>
+#include <cmath>
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace pdrt::test {
@@ -40,6 +43,27 @@ inline int prepared_mismatches(const Sampler& s, int px, int py, Family f, int b
     }
   }
   return bad;
+}
+
+// Mean and standard error over `seeds` samplers (make(seed)) of pixel (px, py)'s estimate, from
+// its samples [first, first + 4), of f(pixel, lens, time) = x y + u^2 + sin(pi t), whose
+// integral is analytic_estimate_integral.
+inline constexpr double analytic_estimate_integral = 0.25 + 1.0 / 3.0 + 2.0 / M_PI;
+inline std::pair<double, double> analytic_estimate(const std::function<std::unique_ptr<Sampler>(uint64_t)>& make,
+                                                   int px, int py, int first, int seeds = 2048) {
+  double sum = 0, sum2 = 0;
+  for (int seed = 0; seed < seeds; ++seed) {
+    auto s = make(uint64_t(seed));
+    double e = 0;
+    for (int i = first; i < first + 4; ++i) {
+      const Vec2 p = s->get_2d(px, py, i, Family::Pixel, 0), l = s->get_2d(px, py, i, Family::Lens, 0);
+      e += p[0] * p[1] + l[0] * l[0] + std::sin(M_PI * s->get_1d(px, py, i, Family::Time, 0));
+    }
+    e /= 4;
+    sum += e, sum2 += e * e;
+  }
+  const double mean = sum / seeds;
+  return {mean, std::sqrt((sum2 / seeds - mean * mean) / seeds)};
 }
 
 }  // namespace pdrt::test

@@ -85,7 +85,7 @@ TEST(CropWindow, PixelBoundsRoundTripThroughTheWindow) {
 }
 
 TEST(CropWindow, CroppedRenderIsTheCropOfTheFullRender) {
-  for (const char* sampler : {"poisson", "sobol", "jitter", "poisson-ss"})
+  for (const char* sampler : {"poisson", "sobol", "jitter", "poisson-ss", "poisson-bn"})
     for (int spp : {1, 4})
       for (Reconstruction m : {Reconstruction::Importance, Reconstruction::Rank}) {
         SceneDesc s = crop_scene(sampler, spp);
@@ -98,7 +98,7 @@ TEST(CropWindow, CroppedRenderIsTheCropOfTheFullRender) {
 // cropped render traces the pixels within the filter's reach (ceil(radius) + 1) too, in the
 // full render's tile waves; what splats from them past the rendered rectangle is dropped.
 TEST(CropWindow, SplattedCroppedRenderIsTheCropOfTheFullRender) {
-  for (const char* sampler : {"poisson", "sobol", "poisson-ss"})
+  for (const char* sampler : {"poisson", "sobol", "poisson-ss", "poisson-bn"})
     for (int spp : {1, 4}) {
       SceneDesc s = crop_scene(sampler, spp);
       s.film.filter.reconstruction = Reconstruction::Splat;
@@ -112,7 +112,7 @@ TEST(CropWindow, SplattedCroppedRenderIsTheCropOfTheFullRender) {
 // it; these renders take 6 or 7 rounds, the margin covers 5, and still match: cascades are
 // short). relative-error needs no image mean (error-per-sample's would be the crop's).
 TEST(CropWindow, AdaptiveCroppedRenderIsTheCropOfTheFullRender) {
-  for (const char* sampler : {"poisson", "sobol", "poisson-ss"})
+  for (const char* sampler : {"poisson", "sobol", "poisson-ss", "poisson-bn"})
     for (Reconstruction m : {Reconstruction::Importance, Reconstruction::Splat}) {
       SceneDesc s = crop_scene(sampler, 4);
       s.film.filter.reconstruction = m;

@@ -197,7 +197,7 @@ TEST(RenderDeterminism, ImageIsBitIdenticalAtOneAndTwoThreads) {
   s.shapes.push_back(sphere({0, 0, 0}, 0.7f, add_material(s, diffuse(0.5f))));
   s.shapes.push_back(sphere({1, 2, 1}, 0.3f, add_material(s, emitter(5.0f))));
   s.film.filter.type = FilterType::Gaussian, s.film.filter.radius = 1.5f;
-  for (const char* sampler : {"poisson", "jitter", "sobol", "random", "poisson-ss"}) {
+  for (const char* sampler : {"poisson", "jitter", "sobol", "random", "poisson-ss", "poisson-bn"}) {
     s.sampler.type = sampler;
     Image a = render_quietly(s, 1).image, b = render_quietly(s, 2).image;
     ASSERT_EQ(a.rgb.size(), b.rgb.size());

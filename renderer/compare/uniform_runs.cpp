@@ -95,7 +95,8 @@ UniformRun render_run(const ReportContext& ctx, const CompareReference& ref, con
   run.spectrum = radial_spectrum(run.screen.spectrum, ctx.width, ctx.height);
   {
     SamplerDesc d = ctx.base.sampler;
-    d.type = name, d.seed = compare_seed(ctx.base.sampler.seed, 0);
+    // The sampler as the runs render it: the screen-space samplers arrange n samples per pixel.
+    d.type = name, d.seed = compare_seed(ctx.base.sampler.seed, 0), d.spp = n, d.adaptive.enabled = false;
     const auto sampler = make_scene_sampler(d, ctx.base.film);
     for (int f = 0; f < kFamilyCount; ++f)
       run.used.push_back(analyze_stream(*sampler, Family(f), ctx.width, ctx.height, n, kUsedSamplePixels));

@@ -7,6 +7,7 @@
 #include "sampling/core/warnings.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -142,10 +143,14 @@ ScreenKeyTile optimize_screen_keys(const std::vector<const uint32_t*>& tables, i
   for (int j = 0; j < J; ++j) steps[std::size_t(j)] = random_step(dim, hash_combine(draws.key, 0x100000000ull + j));
   // The candidates' errors on every integrand (float: the search only compares energies).
   std::vector<float> err(std::size_t(K) * J);
-  tbb::parallel_for(0, K, [&](int c) {
-    for (int j = 0; j < J; ++j)
-      err[std::size_t(c) * J + j] =
-          float(key_error(tables[cand[std::size_t(c)].table], dim, spp, cand[std::size_t(c)], steps[std::size_t(j)]));
+  // Isolated: the caller holds cached_screen_keys' lock, and a thread waiting here must not
+  // pick up an outer task that asks for a tile and waits on that lock.
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, K, [&](int c) {
+      for (int j = 0; j < J; ++j)
+        err[std::size_t(c) * J + j] =
+            float(key_error(tables[cand[std::size_t(c)].table], dim, spp, cand[std::size_t(c)], steps[std::size_t(j)]));
+    });
   });
   // Every integrand weighs alike: its errors in units of their RMS over the candidates.
   for (int j = 0; j < J; ++j) {

@@ -3,6 +3,7 @@
 #include "tests/support/one_cpu.h"
 #include "tests/support/terminal_child.h"
 #include "renderer/image/image_output.h"
+#include "sampling/analysis/stream_analysis.h"
 #include "sampling/samplers/sampler.h"
 
 #include <OpenImageIO/imageio.h>
@@ -567,6 +568,31 @@ TEST(CliCompare, PoissonSeedAverageOfARenderConvergesToTheReference) {
 
 // Issue 15: every run reports the sampler's share of its CPU time (profiler ticks) and the
 // samples it used, per family: rho of each pixel's prefix and their periodogram.
+// The samples-used analysis describes the runs' own samples: a screen-space sampler arranges
+// a run's spp per pixel (here 16), not the scene file's (4), whose blocks would be other points.
+TEST(CliCompare, SamplesUsedAreThoseOfTheRunsSampleCount) {
+  fs::path d = scratch_dir("compare_used_shape");
+  fs::path scene = write_scene(d);
+  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
+                    " --samplers zsobol,poisson-ss --spp 16 --seeds 1 --reference-spp 64 --cache-dir " +
+                    (d / "cache").string() + " --no-plots --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
+  const uint64_t seed = j["seeds"][0].get<uint64_t>();
+  for (const auto& run : j["runs"]) {
+    const std::string name = run["sampler"];
+    auto rho = [&](int64_t shape_spp) {
+      auto s = pdrt::make_sampler(name, seed, pdrt::SamplerShape{shape_spp, 24, 16});
+      return pdrt::analyze_stream(*s, pdrt::Family::Lens, 24, 16, 16, 1024).rho_mean;
+    };
+    double reported = -1;
+    for (const auto& u : run["used_samples"])
+      if (u["family"] == "lens") reported = u["rho_mean"];
+    EXPECT_DOUBLE_EQ(reported, rho(16)) << name;
+    EXPECT_NE(rho(16), rho(4)) << name << ": the shapes give the same points, so the test cannot fail";
+  }
+}
+
 TEST(CliCompare, ResultsReportTheSamplerShareAndTheSamplesUsed) {
   fs::path d = scratch_dir("compare_usage");
   fs::path scene = write_scene(d, R"("width": 24, "height": 16)");

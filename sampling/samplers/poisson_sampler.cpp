@@ -355,14 +355,14 @@ class PoissonSampler final : public Sampler {
     }
   }
 
-  static void warn_past_prefix(int px, int py, std::size_t n) {
+  void warn_past_prefix(int px, int py, std::size_t n) const {
     static std::atomic<bool> warned{false};
     if (warned.exchange(true)) return;
     char line[240];
     std::snprintf(line, sizeof line,
-                  "pdrt: poisson: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
+                  "pdrt: %s: pixel (%d, %d) took more than its %zu Poisson-disk samples; later samples continue "
                   "in another table and shift (docs/sampling.md)",
-                  px, py, n);
+                  name().c_str(), px, py, n);
     warn(line, "poisson: past the prefix");
   }
 

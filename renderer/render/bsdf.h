@@ -99,6 +99,29 @@ class Bsdf {
         },
         bxdf_);
   }
+  // Whether sample() reads its lobe choice uc and its direction u1, u2: a lobe that ignores
+  // one says so (uses_lobe_choice() / uses_direction() false), and the path tracer then does
+  // not draw it (each decision is a stream of its own, so no other value moves).
+  bool uses_lobe_choice() const {
+    return std::visit(
+        [](const auto& b) {
+          if constexpr (requires { b.uses_lobe_choice(); })
+            return b.uses_lobe_choice();
+          else
+            return true;
+        },
+        bxdf_);
+  }
+  bool uses_direction() const {
+    return std::visit(
+        [](const auto& b) {
+          if constexpr (requires { b.uses_direction(); })
+            return b.uses_direction();
+          else
+            return true;
+        },
+        bxdf_);
+  }
   bool scatters() const { return !std::holds_alternative<BlackBxdf>(bxdf_); }  // false for emitters
   Vec3 albedo() const { return albedo_; }                                      // for the albedo AOV
 };

@@ -57,7 +57,7 @@ bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index
     }
   }
   out->time = float(ps.get_1d(Family::Time, kSaltShutterTime));
-  out->lens = ps.get_2d(Family::Lens, kSaltLensPoint);
+  out->lens = rule.lens ? ps.get_2d(Family::Lens, kSaltLensPoint) : Vec2{0.5, 0.5};
   return true;
 }
 

@@ -24,6 +24,7 @@ struct CameraSampleRule {
   const Filter& filter;
   Reconstruction mode = Reconstruction::Importance;
   double rank_candidates = 0, rank_candidates_before = 0;
+  bool lens = true;  // false: a pinhole camera, whose rays ignore the lens point (not drawn)
 };
 
 // Candidates a rank-selected prefix of `spp` samples ranks against.

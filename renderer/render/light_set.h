@@ -16,6 +16,10 @@ class LightSet {
   // textures: the scene's, opened once (MaterialSet owns them); textured emitters read them.
   LightSet(const EmbreeScene& scene, const TextureSet& textures);
   bool empty() const { return lights_.empty(); }
+  // Whether sample()'s pick number can change what it returns: not with one light (the
+  // selector's only choice; a pick of 1.0f, which a float rounding of a sample value near 1
+  // gives, used to refuse a lone light at infinity).
+  bool pick_matters() const { return selector_.size() > 1; }
 
   // u_pick chooses the light for the shading point `ref` with unit shading normal `n`
   // (either side); u samples a point on it. out->pdf includes the choice.

@@ -104,7 +104,8 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
     // Next-event estimation (not for delta lobes: a light sample has zero BSDF value).
     if (!bsdf.is_delta() && !lights_.empty()) {
       LightSample ls;
-      float u_pick = float(ps.get_1d(Family::Time, salt_light_pick(depth)));
+      // One light: its pick number changes nothing, so it is not drawn.
+      const float u_pick = lights_.pick_matters() ? float(ps.get_1d(Family::Time, salt_light_pick(depth))) : 0.0f;
       if (lights_.sample(hit.p, ns, time, u_pick, ps.get_2d(Family::Light, salt_light_point(depth)), &ls) &&
           !is_black(ls.radiance)) {
         Vec3 wi = frame.to_local(ls.wi);
@@ -127,8 +128,9 @@ PathResult PathIntegrator::trace(Ray ray, const PixelSampleState& ps, const Surf
 
     // BSDF sampling (Cook's gloss dimension).
     BsdfSample bs;
-    float uc = float(ps.get_1d(Family::Time, salt_lobe(depth)));
-    auto u = ps.get_2d(Family::Gloss, salt_bsdf_direction(depth));
+    // A value the lobe does not read is not drawn (a mirror's direction, a single lobe's choice).
+    const float uc = bsdf.uses_lobe_choice() ? float(ps.get_1d(Family::Time, salt_lobe(depth))) : 0.5f;
+    const Vec2 u = bsdf.uses_direction() ? ps.get_2d(Family::Gloss, salt_bsdf_direction(depth)) : Vec2{0.5, 0.5};
     if (!bsdf.sample(wo, float(u[0]), float(u[1]), uc, &bs, key)) break;
     Vec3 wi_world = frame.to_world(bs.wi);
     // Reflection must leave on the front of the geometric surface, transmission behind it

@@ -21,6 +21,7 @@ class ThinLensCamera {
   // Film point (x, y) in pixels from the top-left corner, lens sample in [0,1)^2, time in [0,1)
   // as a fraction of the shutter. Returns a ray with unit direction.
   Ray generate(float film_x, float film_y, std::array<double, 2> lens_u, float time) const;
+  bool has_aperture() const { return desc_.aperture_radius > 0; }  // else generate() ignores lens_u
 
   // Maps a unit-square sample to a point on the aperture (unit disk or regular polygon),
   // uniformly by area.

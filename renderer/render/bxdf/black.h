@@ -9,6 +9,8 @@ struct BlackBxdf {
   Vec3 eval(const Vec3&, const Vec3&) const { return Vec3(0.0f); }
   float pdf(const Vec3&, const Vec3&) const { return 0.0f; }
   bool sample(const Vec3&, float, float, float, BsdfSample*) const { return false; }
+  static constexpr bool uses_lobe_choice() { return false; }
+  static constexpr bool uses_direction() { return false; }
 };
 
 }  // namespace pdrt

@@ -19,6 +19,7 @@ class GgxReflectionBxdf {
   Vec3 eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+  bool uses_lobe_choice() const { return ms_; }  // the compensation lobe or the single-scattering one
 
  private:
   void compensate(bool energy_compensation);

@@ -11,6 +11,7 @@ struct LambertBxdf {
   Vec3 eval(const Vec3& wo, const Vec3& wi) const;
   float pdf(const Vec3& wo, const Vec3& wi) const;
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+  static constexpr bool uses_lobe_choice() { return false; }  // one lobe
 };
 
 }  // namespace pdrt

@@ -15,6 +15,7 @@ struct SmoothDielectricBxdf {
   Vec3 eval(const Vec3&, const Vec3&) const { return Vec3(0.0f); }
   float pdf(const Vec3&, const Vec3&) const { return 0.0f; }
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+  static constexpr bool uses_direction() { return false; }  // reflect or refract: uc alone
 };
 
 }  // namespace pdrt

@@ -12,6 +12,8 @@ struct SchlickMirrorBxdf {
   Vec3 eval(const Vec3&, const Vec3&) const { return Vec3(0.0f); }
   float pdf(const Vec3&, const Vec3&) const { return 0.0f; }
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+  static constexpr bool uses_lobe_choice() { return false; }  // one direction, the mirror's
+  static constexpr bool uses_direction() { return false; }
 };
 
 struct SmoothConductorBxdf {
@@ -21,6 +23,8 @@ struct SmoothConductorBxdf {
   Vec3 eval(const Vec3&, const Vec3&) const { return Vec3(0.0f); }
   float pdf(const Vec3&, const Vec3&) const { return 0.0f; }
   bool sample(const Vec3& wo, float u1, float u2, float uc, BsdfSample* out) const;
+  static constexpr bool uses_lobe_choice() { return false; }  // one direction, the mirror's
+  static constexpr bool uses_direction() { return false; }
 };
 
 }  // namespace pdrt

@@ -762,5 +762,55 @@ TEST(Conductor, DeltaOnlyAtRoughnessZero) {
   EXPECT_TRUE(Bsdf(metal("Ag", 0.3f)).scatters());
 }
 
+// The path tracer does not draw a value a lobe says it ignores (Bsdf::uses_direction,
+// uses_lobe_choice), so the claim must hold: sample() with any other value gives the same
+// result, bit for bit, for every lobe that makes it; and the lobes that read a value say so.
+TEST(Bsdf, ALobeThatIgnoresAValueSamplesTheSameWithAnyValue) {
+  Material uncompensated = ggx(0.4f, Vec3(0.7f)), emitter;
+  uncompensated.energy_compensation = false;
+  emitter.type = MaterialType::Emitter;
+  Material thin = dielectric(0.0f);
+  thin.type = MaterialType::ThinDielectric;
+  const std::vector<std::pair<const char*, Material>> materials = {{"diffuse", diffuse(Vec3(0.5f))},
+                                                                   {"phong", phong(20)},
+                                                                   {"ggx", ggx(0.4f, Vec3(0.7f))},
+                                                                   {"ggx uncompensated", uncompensated},
+                                                                   {"mirror", mirror(Vec3(0.9f))},
+                                                                   {"smooth conductor", metal("Au", 0)},
+                                                                   {"rough conductor", metal("Au", 0.3f)},
+                                                                   {"smooth dielectric", dielectric(0)},
+                                                                   {"rough dielectric", dielectric(0.3f)},
+                                                                   {"thin dielectric", thin},
+                                                                   {"emitter", emitter}};
+  auto eq = [](const Vec3& p, const Vec3& q) { return p.x == q.x && p.y == q.y && p.z == q.z; };
+  auto same = [&](bool a, const BsdfSample& x, bool b, const BsdfSample& y) {
+    return a == b && (!a || (eq(x.wi, y.wi) && eq(x.weight, y.weight) && x.pdf == y.pdf && x.delta == y.delta &&
+                             x.transmission == y.transmission && x.eta == y.eta));
+  };
+  int ignoring = 0;
+  Rng rng(3);
+  for (const auto& [name, m] : materials) {
+    const Bsdf b(m);
+    ignoring += !b.uses_direction() + !b.uses_lobe_choice();
+    int differs_u = 0, differs_c = 0;
+    for (int i = 0; i < 500; ++i) {
+      Vec3 wo = uniform_sphere(rng);
+      if (i % 2) wo.z = std::abs(wo.z);
+      const float u1 = float(rng.uniform()), u2 = float(rng.uniform()), uc = float(rng.uniform());
+      BsdfSample a, d, c;
+      const bool ra = b.sample(wo, u1, u2, uc, &a);
+      const bool rd = b.sample(wo, float(rng.uniform()), float(rng.uniform()), uc, &d);
+      const bool rc = b.sample(wo, u1, u2, float(rng.uniform()), &c);
+      differs_u += !same(ra, a, rd, d), differs_c += !same(ra, a, rc, c);
+    }
+    if (!b.uses_direction()) EXPECT_EQ(differs_u, 0) << name;
+    if (!b.uses_lobe_choice()) EXPECT_EQ(differs_c, 0) << name;
+    if (b.uses_direction() && b.scatters() && !b.is_delta()) EXPECT_GT(differs_u, 0) << name;
+  }
+  // diffuse, phong, uncompensated ggx: the choice; mirror, smooth conductor, emitter: both;
+  // smooth and thin dielectric: the direction.
+  EXPECT_EQ(ignoring, 11);
+}
+
 }  // namespace
 }  // namespace pdrt

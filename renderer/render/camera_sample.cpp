@@ -56,7 +56,7 @@ bool get_camera_sample(const CameraSampleRule& rule, int x, int y, int64_t index
       break;
     }
   }
-  out->time = float(ps.get_1d(Family::Time, kSaltShutterTime));
+  out->time = rule.time ? float(ps.get_1d(Family::Time, kSaltShutterTime)) : 0.0f;
   out->lens = rule.lens ? ps.get_2d(Family::Lens, kSaltLensPoint) : Vec2{0.5, 0.5};
   return true;
 }

@@ -25,6 +25,7 @@ struct CameraSampleRule {
   Reconstruction mode = Reconstruction::Importance;
   double rank_candidates = 0, rank_candidates_before = 0;
   bool lens = true;  // false: a pinhole camera, whose rays ignore the lens point (not drawn)
+  bool time = true;  // false: a scene where nothing moves, whose rays ignore the time (not drawn)
 };
 
 // Candidates a rank-selected prefix of `spp` samples ranks against.

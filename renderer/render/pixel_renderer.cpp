@@ -10,6 +10,7 @@ int64_t PixelRenderer::run(int x, int y, int64_t begin, int64_t end, Film& film,
                            PixelSampleState* pd) const {
   CameraSampleRule rule{filter, mode};
   rule.lens = camera.has_aperture();
+  rule.time = shutter;
   const int64_t budget = end;
   if (const Sampler& s = ps.sampler(); s.pixel_counts_vary())
     begin = s.samples_in_pixel(x, y, begin), end = s.samples_in_pixel(x, y, end);

@@ -24,6 +24,7 @@ struct PixelRenderer {
   // Set when splatting a sampler whose pixels' counts vary (`poisson-ip`): a pixel's estimate
   // divides by spp times its expected weight (expected_splat_weight.h).
   const ExpectedSplatWeight* expected = nullptr;
+  bool shutter = true;  // false: nothing moves (has_motion), so the shutter time is not drawn
 
   // Pixels beyond its own that a splatted sample can reach (film point in [x, x + 1)).
   int splat_margin() const { return int(std::ceil(filter.radius())) + 1; }

@@ -80,7 +80,8 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
                              desc.film.filter.reconstruction,
                              region.rect.x0,
                              region.rect.y0,
-                             expected ? &*expected : nullptr};
+                             expected ? &*expected : nullptr,
+                             has_motion(desc)};
   clock.build_done();
 
   const LocalProcessGroup alone;

@@ -184,4 +184,15 @@ struct SceneDesc {
   std::vector<InstanceDesc> instances;
 };
 
+// Whether anything moves during the shutter (camera, shapes, instances, point and spot
+// lights): otherwise the shutter time changes no ray, hit or light sample.
+inline bool has_motion(const SceneDesc& s) {
+  auto moves = [](const auto& v) {
+    for (const auto& x : v)
+      if (!x.motion.empty()) return true;
+    return false;
+  };
+  return !s.camera.motion.empty() || moves(s.shapes) || moves(s.instances) || moves(s.delta_lights);
+}
+
 }  // namespace pdrt

@@ -1,6 +1,7 @@
-// Which sampler streams a render draws: a value nothing reads is not drawn (a pinhole camera's
-// lens point, a lone light's pick number, a single lobe's choice, a mirror's direction), which
-// saves the sampler's work and changes no image, since every decision is a stream of its own.
+// Which sampler streams a render draws: a value nothing reads is not drawn (the shutter time of
+// a scene where nothing moves, a pinhole camera's lens point, a lone light's pick number, a
+// single lobe's choice, a mirror's direction), which saves the sampler's work and changes no
+// image, since every decision is a stream of its own.
 #include "renderer/render/renderer.h"
 #include "renderer/render/sample_dimensions.h"
 #include "tests/support/render_fixtures.h"
@@ -68,11 +69,11 @@ RecordingSampler& render_recorded(const SceneDesc& s, RecordingSampler& r) {
   return r;
 }
 
-TEST(DrawnValues, APinholeCameraWithOneLightAndDiffuseSurfacesDrawsOnlyWhatItReads) {
+TEST(DrawnValues, AStillSceneSeenByAPinholeWithOneLightAndDiffuseSurfacesDrawsOnlyWhatItReads) {
   RecordingSampler r;
   render_recorded(one_light_scene(), r);
   EXPECT_TRUE(r.drawn(Family::Pixel, kSaltFilmPoint));
-  EXPECT_TRUE(r.drawn(Family::Time, kSaltShutterTime));
+  EXPECT_FALSE(r.drawn(Family::Time, kSaltShutterTime));  // nothing moves
   EXPECT_FALSE(r.drawn(Family::Lens, kSaltLensPoint));
   for (int d = 0; d < 3; ++d) {
     EXPECT_TRUE(r.drawn(Family::Light, salt_light_point(d))) << d;
@@ -82,8 +83,11 @@ TEST(DrawnValues, APinholeCameraWithOneLightAndDiffuseSurfacesDrawsOnlyWhatItRea
   }
 }
 
-TEST(DrawnValues, AnApertureASecondLightAndACompensatedGlossyLobeAreDrawn) {
+TEST(DrawnValues, MotionAnApertureASecondLightAndACompensatedGlossyLobeAreDrawn) {
   SceneDesc s = one_light_scene();
+  MotionKey k0, k1;
+  k1.time = 1, k1.translate = {0.2f, 0, 0};
+  s.shapes[1].motion = {k0, k1};  // the sphere moves: the shutter time matters
   s.camera.aperture_radius = 0.05f, s.camera.focus_distance = 4;
   s.shapes.push_back(quad({1.5f, 3, -0.5f}, {1, 0, 0}, {0, 0, 1}, add_material(s, emitter(5))));
   Material glossy;
@@ -91,6 +95,7 @@ TEST(DrawnValues, AnApertureASecondLightAndACompensatedGlossyLobeAreDrawn) {
   s.shapes[1].material = add_material(s, glossy);  // the sphere: GGX with its compensation lobe
   RecordingSampler r;
   render_recorded(s, r);
+  EXPECT_TRUE(r.drawn(Family::Time, kSaltShutterTime));
   EXPECT_TRUE(r.drawn(Family::Lens, kSaltLensPoint));
   EXPECT_TRUE(r.drawn(Family::Time, salt_light_pick(0)));
   EXPECT_TRUE(r.drawn(Family::Time, salt_lobe(0)));

@@ -566,8 +566,6 @@ TEST(CliCompare, PoissonSeedAverageOfARenderConvergesToTheReference) {
   }
 }
 
-// Issue 15: every run reports the sampler's share of its CPU time (profiler ticks) and the
-// samples it used, per family: rho of each pixel's prefix and their periodogram.
 // The samples-used analysis describes the runs' own samples: a screen-space sampler arranges
 // a run's spp per pixel (here 16), not the scene file's (4), whose blocks would be other points.
 TEST(CliCompare, SamplesUsedAreThoseOfTheRunsSampleCount) {
@@ -593,6 +591,8 @@ TEST(CliCompare, SamplesUsedAreThoseOfTheRunsSampleCount) {
   }
 }
 
+// Issue 15: every run reports the sampler's share of its CPU time (profiler ticks) and the
+// samples it used, per family: rho of each pixel's prefix and their periodogram.
 TEST(CliCompare, ResultsReportTheSamplerShareAndTheSamplesUsed) {
   fs::path d = scratch_dir("compare_usage");
   fs::path scene = write_scene(d, R"("width": 24, "height": 16)");

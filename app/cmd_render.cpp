@@ -139,10 +139,14 @@ nlohmann::json stats_json(const std::string& scene_file, const SceneDesc& scene,
   const RenderEstimate& e = r.stats.estimate;
   j["estimate"] = {{"seconds", e.seconds},
                    {"ns_per_sample", e.seconds_per_sample * 1e9},
+                   {"loop_seconds", e.loop_seconds},
+                   {"loops", e.loops},
                    {"calibration_seconds", e.calibration_seconds},
                    {"calibration_cpu_seconds", e.calibration_cpu_seconds},
+                   {"calibration_busy_seconds", e.calibration_busy_seconds},
                    {"calibration_pixels", e.calibration_pixels},
                    {"calibration_samples", e.calibration_samples},
+                   {"calibration_passes", e.calibration_passes},
                    {"calibration_kept", e.calibration_kept}};
   if (r.stats.ranks.size() > 1) {
     j["ranks"] = nlohmann::json::array();
@@ -290,7 +294,7 @@ void add_render_command(CLI::App& app) {
         check_sample_budget(e.samples, e.seconds_per_sample, true, describe_sample_count(scene), o->allow_long);
       if (!quiet)
         std::fprintf(stderr, "pdrt render: %s = %s\n", describe_sample_count(scene).c_str(),
-                     format_sample_cost(e.samples, e.seconds_per_sample, true).c_str());
+                     format_sample_cost(e.samples, e.seconds_per_sample, true, e.loops * e.loop_seconds).c_str());
     };
     RenderResult r = render(scene, *sampler, ro);
     std::signal(SIGINT, previous);

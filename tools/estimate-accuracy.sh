@@ -26,7 +26,7 @@ e = j["estimate"]
 actual = j["passes_seconds"]
 cal_cpu = e["calibration_cpu_seconds"] / e["calibration_samples"]
 # The samples the passes took: all of them, less the calibration's when it kept them.
-passes = e["seconds"] / (1e-9 * e["ns_per_sample"]) if e["ns_per_sample"] > 0 else j["samples"]
+passes = (e["seconds"] - e["loops"] * e["loop_seconds"]) / (1e-9 * e["ns_per_sample"]) if e["ns_per_sample"] > 0 else j["samples"]
 pass_cpu = (j["cpu_seconds"] - e["calibration_cpu_seconds"]) / max(passes, 1)
 print("%-26s %5s %10.4f %10.4f %8.2f %8.2f" % (sys.argv[2], sys.argv[3], e["seconds"], actual,
       actual / e["seconds"], pass_cpu / cal_cpu))

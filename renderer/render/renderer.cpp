@@ -92,19 +92,22 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
   const TileWaves tiles(desc.film.width, desc.film.height, region.rect, splat ? pixels.splat_margin() : 0);
   TilePasses passes(tiles, films, pixels, sampler, decider.get(), group, opt, clock.start());
   if (opt.on_estimate) {
-    // The calibrated pixels take the first pass, kept in the film unless splatted (render_estimate.h).
-    const int64_t cal = next_pass_end(0, ad.enabled ? ad.min_spp : spp);
+    // The calibrated pixels take the first passes, kept in the film unless splatted (render_estimate.h).
     const bool kept = !splat;
     const std::vector<PixelRect> blocks = calibration_blocks(
         region.rect, kept, [&](int x, int y) { return passes.owns(x, y); }, 1 << 16);
     const CalibrationRender calibrate = [&](std::size_t b0, std::size_t b1, int64_t n) {
-      if (kept)
-        passes.calibrate(blocks, b0, b1, n);
-      else
-        render_scratch_blocks(pixels, sampler, decider.get(), blocks, b0, b1, n);
+      return kept ? passes.calibrate(blocks, b0, b1, n)
+                  : render_scratch_blocks(pixels, sampler, decider.get(), blocks, b0, b1, n);
     };
-    res.stats.estimate = estimate_render(blocks, cal, double(region.rect.width()) * region.rect.height() * double(spp),
-                                         kept, calibrate, group);
+    EstimatePlan plan{{},
+                      double(region.rect.width()) * region.rect.height() * double(spp),
+                      kept,
+                      worker_threads(),
+                      pass_count(spp) * int(tiles.waves().size())};
+    for (int64_t e = 0, round0 = ad.enabled ? ad.min_spp : spp; e < round0 && (kept || e == 0);)
+      plan.ends.push_back(e = next_pass_end(e, round0));
+    res.stats.estimate = estimate_render(blocks, plan, calibrate, group);
     opt.on_estimate(res.stats.estimate);
   }
   const bool quiet = opt.quiet || group.rank() != 0;
@@ -120,6 +123,7 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     // No rank reads the others' tiles after the last pass: gather_image takes the image to rank 0.
     render_progressive(passes, spp, progress, opt.on_pass, FilmsTo::None);
   }
+  if (passes.stopped()) passes.restore_calibration();
   res.stats.passes_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count();
   res.stats.sampler_profile = profiler.result();
   device.check();

@@ -17,8 +17,8 @@ std::string describe_sample_count(const SceneDesc& s) {
   return d + std::to_string(s.sampler.spp) + " spp";
 }
 
-std::string format_sample_cost(double total, double seconds_per_sample, bool measured) {
-  const double seconds = total * seconds_per_sample, hours = seconds / 3600;
+std::string format_sample_cost(double total, double seconds_per_sample, bool measured, double fixed_seconds) {
+  const double seconds = total * seconds_per_sample + fixed_seconds, hours = seconds / 3600;
   char buf[160];
   if (hours >= 48)
     std::snprintf(buf, sizeof buf, "%.3g samples (about %.0f days", total, hours / 24);

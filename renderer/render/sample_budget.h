@@ -24,8 +24,9 @@ double scene_sample_count(const SceneDesc& scene);
 std::string describe_sample_count(const SceneDesc& scene);
 
 // "1.54e+03 samples (about 0.4 ms at 277 ns per sample)": what to expect, said before
-// starting; `measured` adds "measured on this scene".
-std::string format_sample_cost(double total, double seconds_per_sample, bool measured);
+// starting; `measured` adds "measured on this scene"; `fixed_seconds`: a cost that no sample
+// carries (the passes' loops, render_estimate.h).
+std::string format_sample_cost(double total, double seconds_per_sample, bool measured, double fixed_seconds = 0);
 
 // UsageError when `total` samples at `seconds_per_sample` exceed kMaxEstimatedSeconds and
 // `allow` is false; `what` says where the number comes from.

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 
 namespace pdrt {
 
@@ -18,6 +17,7 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
       pixels_(pixels),
       sampler_(sampler),
       decider_(decider),
+      states_(sampler, decider),
       group_(group),
       opt_(opt),
       exchange_(group, tiles, {&films.image, films.decision_or_null()}),
@@ -53,13 +53,62 @@ void TilePasses::populate_own_tiles() {
   });
 }
 
-void TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end) {
+double TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end) {
   std::atomic<bool> cancelled{false};  // never set: the calibration is not interrupted
   const auto end_of = [end](int, int) { return end; };
+  const auto busy = [this] {
+    double s = 0;
+    for (double b : busy_) s += b;
+    return s;
+  };
+  const double before = busy();
+  std::vector<BlockSnapshot> taken(b1 - b0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(b0, b1, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k != r.end(); ++k) render_pixels(blocks[k], end_of, cancelled);
+    for (std::size_t k = r.begin(); k != r.end(); ++k) {
+      if (pixel(blocks[k].x0, blocks[k].y0).prefix > 0) taken[k - b0] = snapshot(blocks[k]);
+      render_pixels(blocks[k], end_of, cancelled);
+    }
   });
+  for (BlockSnapshot& b : taken)
+    if (!b.image.empty()) snapshots_.push_back(std::move(b));
   in_step_ = false;
+  return busy() - before;
+}
+
+TilePasses::BlockSnapshot TilePasses::snapshot(const PixelRect& b) {
+  const PixelRect& region = tiles_.region();
+  BlockSnapshot s{b, pixel(b.x0, b.y0).prefix, {}, {}};
+  for (int y = b.y0; y < b.y1; ++y)
+    for (int x = b.x0; x < b.x1; ++x) {
+      s.image.push_back(films_.image.at(x - region.x0, y - region.y0));
+      if (films_.split) s.decision.push_back(films_.decision.at(x - region.x0, y - region.y0));
+    }
+  return s;
+}
+
+void TilePasses::restore_calibration() {
+  if (snapshots_.empty()) return;
+  // The pass every pixel of this rank's tiles ended (0 when stopped in the first pass: then the
+  // calibration's first pass stays, as without the later ones).
+  int64_t reached = INT64_MAX;
+  for (int t : tiles_.tiles_of(group_.rank(), group_.size())) {
+    const PixelRect p = tiles_.pixels(t);
+    for (int y = p.y0; y < p.y1; ++y)
+      for (int x = p.x0; x < p.x1; ++x) reached = std::min(reached, pixel(x, y).prefix);
+  }
+  int64_t target = INT64_MAX;
+  for (const BlockSnapshot& s : snapshots_) target = std::min(target, s.end);
+  target = std::max(target, reached);
+  const PixelRect& region = tiles_.region();
+  for (const BlockSnapshot& s : snapshots_) {
+    if (s.end != target) continue;
+    std::size_t i = 0;
+    for (int y = s.rect.y0; y < s.rect.y1; ++y)
+      for (int x = s.rect.x0; x < s.rect.x1; ++x, ++i) {
+        films_.image.at(x - region.x0, y - region.y0) = s.image[i];
+        if (films_.split) films_.decision.at(x - region.x0, y - region.y0) = s.decision[i];
+      }
+  }
 }
 
 std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) const {
@@ -130,9 +179,9 @@ int64_t TilePasses::render_pixels(const PixelRect& p, const std::function<int64_
   const PixelRect region = tiles_.region();
   int64_t added = 0;
   int64_t& rays = rays_.local();
-  PixelSampleState ps(sampler_);
-  std::optional<PixelSampleState> pd;
-  if (decider_) pd.emplace(*decider_);
+  ThreadSamplerStates::Lease states = states_.lease();
+  PixelSampleState& ps = states.sampler();
+  PixelSampleState* pd = states.decider();
   int64_t& count = traced_.local();
   for (int y = p.y0; y < p.y1 && !(stop_in_tile_ && cancelled.load(std::memory_order_relaxed)); ++y)
     for (int x = p.x0; x < p.x1; ++x) {
@@ -146,7 +195,7 @@ int64_t TilePasses::render_pixels(const PixelRect& p, const std::function<int64_
       if (end <= begin) continue;
       added += end - begin;
       const int64_t before = films_.traced(fx, fy);
-      rays += pixels_.run(x, y, begin, end, films_.image, films_.decision_or_null(), ps, pd ? &*pd : nullptr);
+      rays += pixels_.run(x, y, begin, end, films_.image, films_.decision_or_null(), ps, pd);
       count += films_.traced(fx, fy) - before;
     }
   busy_.local() += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

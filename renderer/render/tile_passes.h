@@ -7,6 +7,7 @@
 #include "renderer/render/pixel_renderer.h"
 #include "renderer/render/render_films.h"
 #include "renderer/render/renderer.h"
+#include "renderer/render/thread_sampler_states.h"
 #include "renderer/render/tile_waves.h"
 #include "renderer/render/wave_exchange.h"
 
@@ -48,10 +49,15 @@ class TilePasses {
   // no two alike) to `end` samples a pixel, in parallel, counted as the tiles' samples are: the
   // time estimate's calibration (render_estimate.h), whose samples are then the pixels' first.
   // Without splatting a pixel's samples go to it alone, in index order, so the image does not
-  // depend on which pixels the calibration took; `end`, the first pass's end, keeps every
-  // pass's image too. The films are no longer the same on every rank: the next exchange sends
-  // every tile.
-  void calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end);
+  // depend on which pixels the calibration took; `end`, a pass's end (a block goes through the
+  // passes in order), keeps every pass's image too. The films are no longer the same on every rank: the next exchange
+  // sends every tile. Returns the seconds the threads spent inside the blocks, summed. A block taken past the first
+  // pass is kept as it was before, for restore_calibration.
+  double calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end);
+  // After a stop: the calibrated blocks that went past the pass every pixel of this rank's
+  // tiles ended are put back as they were at its end, so that a render stopped between two
+  // passes is the render of the spp reached, bit for bit.
+  void restore_calibration();
   // Whether image pixel (x, y) lies in one of this rank's tiles.
   bool owns(int x, int y) const { return own_tile_[std::size_t(tiles_.tile_at(x, y))] != 0; }
 
@@ -75,12 +81,24 @@ class TilePasses {
   void populate_own_tiles();
   // This rank's tiles of `wave` (positions in it; rank_tiles).
   std::vector<std::size_t> own_tiles(const std::vector<int>& wave) const;
+  // Image pixel (x, y)'s accumulator.
+  const PixelAccum& pixel(int x, int y) const {
+    return films_.image.at(x - tiles_.region().x0, y - tiles_.region().y0);
+  }
+  // A calibration block's accumulators, in both films, at the pass end `end` (their prefix).
+  struct BlockSnapshot {
+    PixelRect rect;
+    int64_t end = 0;
+    std::vector<PixelAccum> image, decision;
+  };
+  BlockSnapshot snapshot(const PixelRect& b);
 
   const TileWaves& tiles_;
   RenderFilms& films_;
   const PixelRenderer& pixels_;
   const Sampler& sampler_;
   const Sampler* decider_;
+  ThreadSamplerStates states_;
   const ProcessGroup& group_;
   const RenderOptions& opt_;
   WaveExchange exchange_;
@@ -94,7 +112,8 @@ class TilePasses {
   bool stopped_ = false;
   // Every rank holds the same films (all zero at the start; after an exchange with everyone).
   bool in_step_ = true;
-  std::vector<uint8_t> own_tile_;  // by tile index: this rank renders it
+  std::vector<uint8_t> own_tile_;         // by tile index: this rank renders it
+  std::vector<BlockSnapshot> snapshots_;  // the calibration's blocks before each pass past the first
 };
 
 }  // namespace pdrt

@@ -183,6 +183,9 @@ class PixelSampleState {
     }
     index_ = index;
   }
+  // The next start_pixel_sample starts a pixel afresh, whatever pixel it names (a state kept
+  // from one tile to the next, renderer/render/thread_sampler_states.h).
+  void forget_pixel() { px_ = py_ = INT32_MIN; }
   // The current pass takes indices [begin, end) of the pixel's streams: a stream that enough
   // of its samples use is prepared from the index that first asks to `end` at once (without a
   // pass: 16 values, doubling).

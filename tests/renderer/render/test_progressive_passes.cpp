@@ -19,11 +19,13 @@ namespace {
 using test::lit_sphere;
 
 // Renders `s`, cancelling once the pass that reaches `stop_at` spp is complete (0: never).
-RenderResult render_stopped_at(const SceneDesc& s, int64_t stop_at, int threads = 0) {
+// `estimate`: the time estimate's calibration runs first (render_estimate.h).
+RenderResult render_stopped_at(const SceneDesc& s, int64_t stop_at, int threads = 0, bool estimate = false) {
   auto sampler = make_scene_sampler(s.sampler, s.film);
   std::atomic<bool> cancel{false};
   RenderOptions o;
   o.quiet = true, o.threads = threads, o.cancel = &cancel;
+  if (estimate) o.on_estimate = [](const RenderEstimate&) {};
   o.on_pass = [&](int64_t spp) {
     if (spp == stop_at) cancel = true;
   };
@@ -96,6 +98,29 @@ TEST(ProgressivePasses, TimeLimitStopsBetweenPassesWithEveryPixelAtTheSppReached
   EXPECT_GT(r.stats.estimate.calibration_samples, 0);
   for (float n : r.image.samples) ASSERT_EQ(n, 8.0f);
   EXPECT_TRUE(same_bits(r.image.rgb, render_stopped_at(lit_sphere(8, "sobol"), 0).image.rgb));
+}
+
+// The calibration takes its blocks through as many passes as its time allows (on this 40 x 24
+// film, every block to 64 spp and more); stopped after the first or second pass, those blocks
+// are put back as they were at its end, in both films under adaptive "split" too.
+TEST(ProgressivePasses, CalibratedRenderStoppedAtAPassBoundaryIsTheRenderAtThatSppBitForBit) {
+  SceneDesc split = lit_sphere(256, "sobol");
+  split.film.filter.reconstruction = Reconstruction::Importance;
+  split.sampler.adaptive.enabled = true, split.sampler.adaptive.min_spp = 128, split.sampler.adaptive.max_spp = 256;
+  split.sampler.adaptive.decision = AdaptiveDecision::Split;
+  for (const SceneDesc& s : {lit_sphere(256, "poisson"), split})
+    for (int64_t stop : {8, 16}) {
+      SCOPED_TRACE(std::string(s.sampler.adaptive.enabled ? "split" : "poisson") + ", stopped at " +
+                   std::to_string(stop));
+      const RenderResult calibrated = render_stopped_at(s, stop, 2, true);
+      const RenderResult plain = render_stopped_at(s, stop, 1, false);
+      EXPECT_GT(calibrated.stats.estimate.calibration_passes, 2);
+      EXPECT_TRUE(calibrated.stats.partial);
+      EXPECT_EQ(calibrated.stats.spp_complete, stop);
+      EXPECT_TRUE(same_bits(calibrated.image.rgb, plain.image.rgb));
+      EXPECT_TRUE(same_bits(calibrated.image.samples, plain.image.samples));
+      EXPECT_EQ(calibrated.stats.samples, plain.stats.samples);
+    }
 }
 
 // Adaptive rendering: round 0 runs in the same passes, so a stop after its first pass leaves

@@ -1,13 +1,15 @@
 // The time estimate's calibration (render_estimate.h): its pixels' samples are the render's
-// first pass, kept in the film (unless splatted), so a calibrated render is the uncalibrated one
-// bit for bit whichever blocks the 0.05 s allowed.
+// first passes, kept in the film (unless splatted), so a calibrated render is the uncalibrated one
+// bit for bit whichever blocks and passes its time allowed.
 #include "renderer/render/render_estimate.h"
 #include "renderer/render/renderer.h"
 #include "tests/support/render_fixtures.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
+#include <thread>
 #include <vector>
 
 namespace pdrt {
@@ -98,6 +100,74 @@ TEST(RenderEstimate, CalibrationBlocksCoverTheRegionOnceEach) {
       region, true, [](int x, int) { return x < 16; }, 1000);
   for (const PixelRect& b : left) EXPECT_LT(b.x0, 16);
   EXPECT_EQ(left.size(), 4u * 5u);  // columns 3, 4-7, 8-11, 12-15; rows 5-7, 8-11, 12-15, 16-19, 20-21
+}
+
+// The rate is the blocks' busy time over the threads, whatever the rounds' wall time: a fake
+// calibration whose blocks take 10 ns of busy time a sample and whose rounds each wait 3 ms
+// (threads that wake late). The wait becomes the cost of each of the passes' loops instead.
+TEST(RenderEstimate, RateIsTheBlocksBusyTimeOverTheThreadsAndTheWaitIsPerLoop) {
+  const std::vector<PixelRect> blocks = calibration_blocks(
+      PixelRect{0, 64, 0, 64}, true, [](int, int) { return true; }, 1000);
+  int rounds = 0;
+  const CalibrationRender fake = [&](std::size_t b0, std::size_t b1, int64_t spp) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    ++rounds;
+    return 1e-8 * double(b1 - b0) * 16 * double(spp);
+  };
+  const LocalProcessGroup alone;
+  const EstimatePlan plan{{8}, 64.0 * 64 * 256, true, 4, 6};
+  const RenderEstimate e = estimate_render(blocks, plan, fake, alone);
+  ASSERT_GT(e.calibration_samples, 0);
+  EXPECT_GE(rounds, 3);
+  EXPECT_NEAR(e.seconds_per_sample, 1e-8 / 4, 1e-15);
+  EXPECT_NEAR(e.calibration_busy_seconds, 1e-8 * double(e.calibration_samples), 1e-12);
+  // The largest round's wall time less its busy time over the threads: the 3 ms wait, with
+  // what the clock adds (the sleep may overrun; 20 ms bounds it on a loaded machine).
+  EXPECT_GE(e.loop_seconds, 0.003 - 1e-8 * double(e.calibration_samples) / 4);
+  EXPECT_LT(e.loop_seconds, 0.02);
+  EXPECT_EQ(e.loops, 6);
+  const double taken = double(e.calibration_samples) + 8 * 16 * 8;  // the 8 untimed warm-up blocks
+  EXPECT_NEAR(e.seconds, (plan.samples - taken) * e.seconds_per_sample + 6 * e.loop_seconds, 1e-9);
+}
+
+// With time left after every block's first pass, the calibration takes the blocks it finished
+// through the next passes, in order, each block from the last pass's end (so their samples are
+// the passes'); it stops at half the render's samples.
+TEST(RenderEstimate, TimeLeftTakesTheFinishedBlocksThroughTheNextPasses) {
+  const std::vector<PixelRect> blocks = calibration_blocks(
+      PixelRect{0, 64, 0, 64}, true, [](int, int) { return true; }, 1000);
+  ASSERT_EQ(blocks.size(), 256u);
+  struct Call {
+    std::size_t b0, b1;
+    int64_t end;
+  };
+  std::vector<Call> calls;
+  const CalibrationRender fake = [&](std::size_t b0, std::size_t b1, int64_t end) {
+    calls.push_back({b0, b1, end});
+    return 1e-9 * double(b1 - b0);
+  };
+  const LocalProcessGroup alone;
+  // Blocks through [0, 8), [8, 16), [16, 32): 100 blocks of the third level fill the half.
+  const double half = 248.0 * 16 * 16 + 100.0 * 16 * 16;
+  const RenderEstimate e = estimate_render(blocks, EstimatePlan{{8, 16, 32, 64}, 2 * half, true, 2, 4}, fake, alone);
+  EXPECT_EQ(e.calibration_passes, 3);
+  EXPECT_EQ(double(e.calibration_samples), half);
+  EXPECT_EQ(e.calibration_pixels, 248 * 16);
+  // Each level's calls cover its blocks once, in order: all but the 8 warm-up blocks, then the
+  // same, then the first 100 of them.
+  const std::vector<std::pair<int64_t, std::size_t>> levels{{8, 256}, {16, 256}, {32, 108}};
+  std::size_t c = 1;  // calls[0]: the warm-up
+  ASSERT_EQ(calls[0].b0, 0u);
+  ASSERT_EQ(calls[0].b1, 8u);
+  for (const auto& [end, last] : levels) {
+    std::size_t at = 8;
+    for (; c < calls.size() && calls[c].end == end; ++c) {
+      EXPECT_EQ(calls[c].b0, at);
+      at = calls[c].b1;
+    }
+    EXPECT_EQ(at, last) << "the level to " << end;
+  }
+  EXPECT_EQ(c, calls.size());
 }
 
 }  // namespace

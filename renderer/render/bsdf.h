@@ -38,6 +38,7 @@
 #include "renderer/scene/vec3.h"
 
 #include <cstdint>
+#include <type_traits>
 #include <variant>
 
 namespace pdrt {
@@ -66,6 +67,19 @@ class Bsdf {
         },
         bxdf_);
   }
+  // query(lobe) where the lobe answers it (query's return type fails for the others),
+  // otherwise(lobe) for the rest.
+  template <class Query, class Otherwise>
+  bool ask(Query&& query, Otherwise&& otherwise) const {
+    return std::visit(
+        [&](const auto& b) -> bool {
+          if constexpr (std::is_invocable_v<Query, decltype(b)>)
+            return query(b);
+          else
+            return otherwise(b);
+        },
+        bxdf_);
+  }
 
  public:
   explicit Bsdf(const Material& m);  // Emitter (and unresolved Mix) material -> a black, non-scattering BSDF
@@ -90,37 +104,19 @@ class Bsdf {
   // Every lobe is a delta (mirror, conductor or dielectric with roughness 0, thin dielectric,
   // a layered lobe of smooth layers only).
   bool is_delta() const {
-    return std::visit(
-        [](const auto& b) {
-          if constexpr (requires { b.delta(); })
-            return b.delta();
-          else
-            return std::decay_t<decltype(b)>::kDelta;
-        },
-        bxdf_);
+    return ask([](const auto& b) -> decltype(b.delta()) { return b.delta(); },
+               [](const auto& b) { return std::decay_t<decltype(b)>::kDelta; });
   }
   // Whether sample() reads its lobe choice uc and its direction u1, u2: a lobe that ignores
   // one says so (uses_lobe_choice() / uses_direction() false), and the path tracer then does
   // not draw it (each decision is a stream of its own, so no other value moves).
   bool uses_lobe_choice() const {
-    return std::visit(
-        [](const auto& b) {
-          if constexpr (requires { b.uses_lobe_choice(); })
-            return b.uses_lobe_choice();
-          else
-            return true;
-        },
-        bxdf_);
+    return ask([](const auto& b) -> decltype(b.uses_lobe_choice()) { return b.uses_lobe_choice(); },
+               [](const auto&) { return true; });
   }
   bool uses_direction() const {
-    return std::visit(
-        [](const auto& b) {
-          if constexpr (requires { b.uses_direction(); })
-            return b.uses_direction();
-          else
-            return true;
-        },
-        bxdf_);
+    return ask([](const auto& b) -> decltype(b.uses_direction()) { return b.uses_direction(); },
+               [](const auto&) { return true; });
   }
   bool scatters() const { return !std::holds_alternative<BlackBxdf>(bxdf_); }  // false for emitters
   Vec3 albedo() const { return albedo_; }                                      // for the albedo AOV

@@ -39,6 +39,21 @@ fs::path write_scene(const fs::path& dir, const std::string& film = R"("width": 
   return p;
 }
 
+// `pdrt compare SCENE --out DIR/OUT --cache-dir DIR/cache ARGS`: its result, and its
+// results.json when it wrote one (else null).
+struct CompareRun {
+  pdrt::test::CliResult cli;
+  nlohmann::json results;
+};
+CompareRun run_compare(const fs::path& dir, const fs::path& scene, const std::string& args,
+                       const std::string& out = "report") {
+  CompareRun c{run_pdrt("compare '" + scene.string() + "' --out " + (dir / out).string() + " --cache-dir " +
+                        (dir / "cache").string() + " " + args),
+               nullptr};
+  if (fs::exists(dir / out / "results.json"))
+    c.results = nlohmann::json::parse(std::ifstream(dir / out / "results.json"));
+  return c;
+}
 }  // namespace
 
 TEST(CliRender, WritesExrWithAovsMetadataAndStats) {
@@ -424,11 +439,8 @@ TEST(CliRender, FramebufferTooLargeForMemoryIsRefused) {
 TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   fs::path d = scratch_dir("compare");
   fs::path scene = write_scene(d);
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers jitter,poisson --spp 2,8,32 --reference-spp 512 --cache-dir " +
-                    (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] = run_compare(d, scene, "--samplers jitter,poisson --spp 2,8,32 --reference-spp 512 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_EQ(j["runs"].size(), 6u);
   for (const char* s : {"jitter", "poisson"}) {
     std::vector<double> e;
@@ -442,12 +454,10 @@ TEST(CliCompare, WritesResultsWithErrorsThatFallWithSpp) {
   EXPECT_TRUE(fs::exists(d / "report" / "errors" / "poisson-8.png"));
   EXPECT_FALSE(j["reference"]["cached"].get<bool>());
   // The second run reuses the cached reference.
-  r = run_pdrt("compare " + scene.string() + " --out " + (d / "report2").string() +
-               " --samplers jitter --spp 2,8 --reference-spp 512 --cache-dir " + (d / "cache").string() +
-               " --no-plots --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j2 = nlohmann::json::parse(std::ifstream(d / "report2" / "results.json"));
-  EXPECT_TRUE(j2["reference"]["cached"].get<bool>());
+  const CompareRun again =
+      run_compare(d, scene, "--samplers jitter --spp 2,8 --reference-spp 512 --no-plots --quiet", "report2");
+  ASSERT_EQ(again.cli.exit_code, 0) << again.cli.err;
+  EXPECT_TRUE(again.results["reference"]["cached"].get<bool>());
 }
 
 // Issue 29: the reference cache key covers every file the scene reads, not only the scene file:
@@ -473,12 +483,11 @@ TEST(CliCompare, ReferenceCacheKeySeesTheMeshesAndTexturesTheSceneReads) {
   write_ppm(200);
   int run = 0;
   auto cached = [&] {
-    const fs::path out = d / ("report" + std::to_string(run++));
-    auto r = run_pdrt("compare " + (d / "scene.json").string() + " --out " + out.string() +
-                      " --samplers jitter --spp 2 --reference-spp 16 --cache-dir " + (d / "cache").string() +
-                      " --no-plots --quiet");
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return nlohmann::json::parse(std::ifstream(out / "results.json"))["reference"]["cached"].get<bool>();
+    const CompareRun c =
+        run_compare(d, d / "scene.json", "--samplers jitter --spp 2 --reference-spp 16 --no-plots --quiet",
+                    "report" + std::to_string(run++));
+    EXPECT_EQ(c.cli.exit_code, 0) << c.cli.err;
+    return c.results["reference"]["cached"].get<bool>();
   };
   EXPECT_FALSE(cached());
   EXPECT_TRUE(cached()) << "nothing changed";
@@ -495,11 +504,9 @@ TEST(CliCompare, ReferenceCacheKeySeesTheMeshesAndTexturesTheSceneReads) {
 TEST(CliCompare, SeedsWritePerSeedEntriesAndIntervals) {
   fs::path d = scratch_dir("compare_seeds");
   fs::path scene = write_scene(d, R"("width": 12, "height": 8)");
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers random,jitter --spp 2,4 --seeds 2 --reference-spp 64 --cache-dir " +
-                    (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] =
+      run_compare(d, scene, "--samplers random,jitter --spp 2,4 --seeds 2 --reference-spp 64 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_EQ(j["seeds"].size(), 2u);
   EXPECT_NE(j["seeds"][0], j["seeds"][1]);
   EXPECT_GT(j["reference"]["variance"].get<double>(), 0);
@@ -530,9 +537,11 @@ TEST(CliCompare, OneSeedPrintsNoIntervalOnTheConsole) {
   fs::path d = scratch_dir("compare_one_seed");
   fs::path scene = write_scene(d, R"("width": 12, "height": 8)");
   for (int seeds : {1, 2}) {
-    auto r = run_pdrt("compare " + scene.string() + " --out " + (d / ("r" + std::to_string(seeds))).string() +
-                      " --samplers random --spp 2 --seeds " + std::to_string(seeds) +
-                      " --reference-spp 16 --cache-dir " + (d / "cache").string() + " --no-plots");
+    const auto r =
+        run_compare(d, scene,
+                    "--samplers random --spp 2 --seeds " + std::to_string(seeds) + " --reference-spp 16 --no-plots",
+                    "r" + std::to_string(seeds))
+            .cli;
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const bool one = seeds == 1;
     EXPECT_EQ(r.err.find("+-") == std::string::npos, one) << r.err;
@@ -549,13 +558,10 @@ TEST(CliCompare, OneSeedPrintsNoIntervalOnTheConsole) {
 // seed, is the biased control the same check refuses.
 TEST(CliCompare, PoissonSeedAverageOfARenderConvergesToTheReference) {
   fs::path d = scratch_dir("compare_poisson_bias");
-  auto r =
-      run_pdrt(std::string("compare '") + PDRT_SCENES_DIR + "/soft-shadows.json' --out " + (d / "report").string() +
-               " --samplers poisson,regular --spp 4,16,64 --seeds 64 --reference-spp 1024 --width 40 --height 30"
-               " --cache-dir " +
-               (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] = run_compare(d, fs::path(PDRT_SCENES_DIR) / "soft-shadows.json",
+                            "--samplers poisson,regular --spp 4,16,64 --seeds 64 --reference-spp 1024 --width 40 "
+                            "--height 30 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_EQ(j["runs"].size(), 6u);
   for (const auto& run : j["runs"]) {
     const double b2 = run["bias2"], var = run["variance"];
@@ -571,11 +577,9 @@ TEST(CliCompare, PoissonSeedAverageOfARenderConvergesToTheReference) {
 TEST(CliCompare, SamplesUsedAreThoseOfTheRunsSampleCount) {
   fs::path d = scratch_dir("compare_used_shape");
   fs::path scene = write_scene(d);
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers zsobol,poisson-ss --spp 16 --seeds 1 --reference-spp 64 --cache-dir " +
-                    (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] =
+      run_compare(d, scene, "--samplers zsobol,poisson-ss --spp 16 --seeds 1 --reference-spp 64 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   const uint64_t seed = j["seeds"][0].get<uint64_t>();
   for (const auto& run : j["runs"]) {
     const std::string name = run["sampler"];
@@ -596,11 +600,9 @@ TEST(CliCompare, SamplesUsedAreThoseOfTheRunsSampleCount) {
 TEST(CliCompare, ResultsReportTheSamplerShareAndTheSamplesUsed) {
   fs::path d = scratch_dir("compare_usage");
   fs::path scene = write_scene(d, R"("width": 24, "height": 16)");
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers random,poisson --spp 1,16 --seeds 1 --reference-spp 64 --cache-dir " +
-                    (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] =
+      run_compare(d, scene, "--samplers random,poisson --spp 1,16 --seeds 1 --reference-spp 64 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   for (const char* s : {"random", "poisson"}) EXPECT_TRUE(j["sampler_share"].contains(s)) << s;
   std::map<std::string, double> lens_rho;
   for (const auto& run : j["runs"]) {
@@ -628,11 +630,8 @@ TEST(CliCompare, ResultsReportTheSamplerShareAndTheSamplesUsed) {
 TEST(CliCompare, ResultsReportTheThreadsUsed) {
   fs::path d = scratch_dir("compare_threads");
   fs::path scene = write_scene(d);
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers random --spp 1 --reference-spp 4 --threads 1 --cache-dir " + (d / "cache").string() +
-                    " --no-plots --quiet");
+  auto [r, j] = run_compare(d, scene, "--samplers random --spp 1 --reference-spp 4 --threads 1 --no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   EXPECT_EQ(j["threads"], 1);
 }
 
@@ -640,11 +639,8 @@ TEST(CliCompare, ResultsReportTheThreadsUsed) {
 TEST(CliCompare, ReportHasHeatMapFiguresAndExplainsTheSlope) {
   fs::path d = scratch_dir("compare_report");
   fs::path scene = write_scene(d);
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers random,jitter --spp 1,4 --reference-spp 16 --cache-dir " + (d / "cache").string() +
-                    " --quiet");
+  auto [r, j] = run_compare(d, scene, "--samplers random,jitter --spp 1,4 --reference-spp 16 --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   EXPECT_EQ(j["heat_colormap"].size(), 5u);
   for (int n : {1, 4}) {
     EXPECT_GT(j["error_maps"]["scale"][std::to_string(n)].get<double>(), 0) << n;
@@ -662,12 +658,10 @@ TEST(CliCompare, ReportHasHeatMapFiguresAndExplainsTheSlope) {
 TEST(CliCompare, AdaptiveSweepWritesCsvAndTargetRatio) {
   fs::path d = scratch_dir("compare_adaptive");
   fs::path scene = write_scene(d, R"("width": 16, "height": 12)");
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "report").string() +
-                    " --samplers poisson --spp 2,8,32 --reference-spp 256 --adaptive --adaptive-target-spp 8"
-                    " --cache-dir " +
-                    (d / "cache").string() + " --no-plots --quiet");
+  auto [r, j] = run_compare(d, scene,
+                            "--samplers poisson --spp 2,8,32 --reference-spp 256 --adaptive --adaptive-target-spp 8 "
+                            "--no-plots --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(d / "report" / "results.json"));
   ASSERT_GE(j["adaptive_sweep"].size(), 9u) << "threshold x 2^k, k = -4..4 (more while the target is not crossed)";
   ASSERT_LE(j["adaptive_sweep"].size(), 13u);
   EXPECT_DOUBLE_EQ(j["adaptive_sweep"][4]["threshold"].get<double>(), 1.0 / 16) << "the metric's default in the middle";
@@ -853,14 +847,12 @@ TEST(CliCompare, RendersUnregularizedUnlessAskedAndNamesIt) {
     text.insert(text.find("\"materials\""), "\"integrator\": {\"regularize\": true},\n  ");
     std::ofstream(scene) << text;
   }
-  const std::string common =
-      " --samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --cache-dir " +
-      (d / "cache").string() + " --no-plots";
-  auto r = run_pdrt("compare " + scene.string() + " --out " + (d / "plain").string() + common);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("sets integrator.regularize"), std::string::npos) << r.err;
-  EXPECT_FALSE(nlohmann::json::parse(std::ifstream(d / "plain" / "results.json"))["regularize"].get<bool>());
-  r = run_pdrt("compare " + scene.string() + " --out " + (d / "reg").string() + common + " --regularize");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(nlohmann::json::parse(std::ifstream(d / "reg" / "results.json"))["regularize"].get<bool>());
+  const std::string common = "--samplers random --spp 1 --seeds 1 --reference-spp 4 --width 8 --height 8 --no-plots";
+  const CompareRun plain = run_compare(d, scene, common, "plain");
+  ASSERT_EQ(plain.cli.exit_code, 0) << plain.cli.err;
+  EXPECT_NE(plain.cli.err.find("sets integrator.regularize"), std::string::npos) << plain.cli.err;
+  EXPECT_FALSE(plain.results["regularize"].get<bool>());
+  const CompareRun reg = run_compare(d, scene, common + " --regularize", "reg");
+  ASSERT_EQ(reg.cli.exit_code, 0) << reg.cli.err;
+  EXPECT_TRUE(reg.results["regularize"].get<bool>());
 }

@@ -803,9 +803,15 @@ TEST(Bsdf, ALobeThatIgnoresAValueSamplesTheSameWithAnyValue) {
       const bool rc = b.sample(wo, u1, u2, float(rng.uniform()), &c);
       differs_u += !same(ra, a, rd, d), differs_c += !same(ra, a, rc, c);
     }
-    if (!b.uses_direction()) EXPECT_EQ(differs_u, 0) << name;
-    if (!b.uses_lobe_choice()) EXPECT_EQ(differs_c, 0) << name;
-    if (b.uses_direction() && b.scatters() && !b.is_delta()) EXPECT_GT(differs_u, 0) << name;
+    if (!b.uses_direction()) {
+      EXPECT_EQ(differs_u, 0) << name;
+    }
+    if (!b.uses_lobe_choice()) {
+      EXPECT_EQ(differs_c, 0) << name;
+    }
+    if (b.uses_direction() && b.scatters() && !b.is_delta()) {
+      EXPECT_GT(differs_u, 0) << name;
+    }
   }
   // diffuse, phong, uncompensated ggx: the choice; mirror, smooth conductor, emitter: both;
   // smooth and thin dielectric: the direction.

@@ -105,6 +105,8 @@ class PoissonSampler final : public Sampler {
       const int spp = int(std::min<int64_t>(o.screen_keys_spp, 64));
       plane_keys_ = &cached_screen_keys(pool_, 2, spp);
       time_keys_ = &cached_screen_keys(time, 1, spp);
+      for (int f = 0; f < kFamilyCount; ++f)
+        for (int b = 0; b < PixelSampleState::kCachedSalts; ++b) key_places_[f][b] = key_place(Family(f), b);
     }
   }
   std::string name() const override { return plane_keys_ ? "poisson-bn" : table_set_name(tables_.kind); }
@@ -244,9 +246,10 @@ class PoissonSampler final : public Sampler {
   uint64_t keyed_stream(int px, int py, Family f, int bounce, uint64_t hs, PreparedStream* out) const {
     const SampleTable& t = *tables_.family[int(f)];
     const ScreenKeyTile& tile = f == Family::Time ? *time_keys_ : *plane_keys_;
-    const uint64_t hk = mix64(stream(INT32_MIN, INT32_MIN, f, bounce) ^ kScreenSalt), g = mix64(hk ^ kShiftSalt);
-    const int ox = int((hk & 0xffffffffu) % uint32_t(tile.size)), oy = int((hk >> 32) % uint32_t(tile.size));
-    const ScreenKey& k = tile.at(px + ox, py + oy);
+    const KeyPlace place = unsigned(bounce) < unsigned(PixelSampleState::kCachedSalts) ? key_places_[int(f)][bounce]
+                                                                                       : key_place(f, bounce);
+    const uint64_t g = place.shift;
+    const ScreenKey& k = tile.at(px + place.ox, py + place.oy);
     out->coords = f == Family::Time ? t.coords[k.table].data() : pool_[k.table];
     out->base = 0;
     out->count = t.params.points;
@@ -400,6 +403,19 @@ class PoissonSampler final : public Sampler {
     return f == Family::Pixel ? opt_.pixel : f == Family::Time ? opt_.time : opt_.plane;
   }
 
+  // poisson-bn: stream (f, bounce)'s offset in the key tile and its digital shift, constants
+  // of the sampler (kept for the cached salts, made on the fly past them).
+  struct KeyPlace {
+    int ox = 0, oy = 0;
+    uint64_t shift = 0;
+  };
+  KeyPlace key_place(Family f, int bounce) const {
+    const ScreenKeyTile& tile = f == Family::Time ? *time_keys_ : *plane_keys_;
+    const uint64_t hk = mix64(stream(INT32_MIN, INT32_MIN, f, bounce) ^ kScreenSalt);
+    return {int((hk & 0xffffffffu) % uint32_t(tile.size)), int((hk >> 32) % uint32_t(tile.size)),
+            mix64(hk ^ kShiftSalt)};
+  }
+
   static constexpr Family kPlaneFamilies[] = {Family::Pixel, Family::Lens, Family::Light, Family::Gloss};
   static uint32_t plane_place(Family f) {
     return f == Family::Pixel ? 0 : f == Family::Lens ? 1 : f == Family::Light ? 2 : 3;
@@ -410,6 +426,7 @@ class PoissonSampler final : public Sampler {
   std::vector<const uint32_t*> pool_;          // `poisson`'s 2-D tables of every family, when pooled
   const ScreenKeyTile* plane_keys_ = nullptr;  // poisson-bn: the 2-D families' keys
   const ScreenKeyTile* time_keys_ = nullptr;   // and the time family's
+  KeyPlace key_places_[kFamilyCount][PixelSampleState::kCachedSalts];
 };
 
 bool complete(const std::filesystem::path& dir, TableSetKind kind) {

@@ -118,7 +118,11 @@ RenderResult render(const SceneDesc& desc, const Sampler& sampler, const RenderO
     rounds = render_adaptive_rounds(ad, region, films, passes, quiet, opt.on_pass);
   } else {
     Progress progress("render", passes.work([spp](int, int) { return spp; }), quiet);
-    const int64_t first = next_pass_end(0, spp);
+    // The ETA is the estimate's until the first pass whose samples spread over the frame is
+    // done: the calibration's last, which it took on some of the blocks only (the passes
+    // before it, it took whole).
+    int64_t first = next_pass_end(0, spp);
+    for (int k = 1; k < res.stats.estimate.calibration_passes && first < spp; ++k) first = next_pass_end(first, spp);
     progress.expect(res.stats.estimate.seconds, passes.work([first](int, int) { return first; }));
     // No rank reads the others' tiles after the last pass: gather_image takes the image to rank 0.
     render_progressive(passes, spp, progress, opt.on_pass, FilmsTo::None);

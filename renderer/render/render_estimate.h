@@ -6,10 +6,9 @@
 // 0.05 s) or half the render's samples, each pixel to the first pass's end (min(spp, 8),
 // progressive_passes.h) and, while time is left after every block, through the next passes (so
 // a cheap scene is timed for as long, and on passes that share a pixel's fixed cost among more
-// samples). The rate
-// is the threads' busy time per sample over the threads; the estimate is that times the
-// samples the passes will take, plus, for each of the passes' parallel loops, the time the
-// calibration's largest round had threads waiting. It must run for tens of milliseconds on a
+// samples). The rate is the threads' busy time per sample over the threads; the estimate is
+// that times the samples the passes will take, plus, for each of the passes' parallel loops,
+// the time the calibration's largest round had threads waiting. It must run for tens of milliseconds on a
 // busy machine: a shorter burst gets whole cores that the render then shares. The blocks'
 // samples are the pixels' first passes, kept in the film (TilePasses::calibrate), so the
 // calibration costs the render nothing; when splatting they go to scratch films, thrown away:

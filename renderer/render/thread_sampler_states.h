@@ -1,7 +1,7 @@
 #pragma once
-// A thread's PixelSampleStates, kept from one tile (or calibration block) to the next. A state
-// is ~45 KB of stream slots: made anew for each 4 x 4 block of the time estimate's calibration,
-// it made the calibration's samples dearer than the passes'. A lease starts from no pixel
+// A thread's PixelSampleStates, kept from one tile (or calibration block) to the next: a state
+// is ~45 KB of stream slots, and streams that computed values keep their buffers, where a
+// state per tile or per 4 x 4 block made and zeroed them again. A lease starts from no pixel
 // (PixelSampleState::forget_pixel), so what a pixel draws never depends on what the thread
 // rendered before; a lease taken while the thread holds one (a nested TBB wait that runs
 // another tile) gets states of its own.
@@ -9,6 +9,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include <memory>
 #include <optional>
 
 namespace pdrt {
@@ -28,21 +29,22 @@ class ThreadSamplerStates {
     PixelSampleState& sampler() { return *held_->sampler; }
     PixelSampleState* decider() { return held_->decider ? &*held_->decider : nullptr; }
     ~Lease() {
-      if (held_ != &own_) held_->leased = false;
+      if (!own_) held_->leased = false;
     }
     Lease(const Lease&) = delete;
     Lease& operator=(const Lease&) = delete;
 
    private:
     friend class ThreadSamplerStates;
-    Lease(Held& thread, const Sampler& s, const Sampler* d) : held_(thread.leased ? &own_ : &thread) {
+    Lease(Held& thread, const Sampler& s, const Sampler* d)
+        : own_(thread.leased ? std::make_unique<Held>() : nullptr), held_(own_ ? own_.get() : &thread) {
       held_->leased = true;
       if (!held_->sampler) held_->sampler.emplace(s);
       if (d && !held_->decider) held_->decider.emplace(*d);
       held_->sampler->forget_pixel();
       if (held_->decider) held_->decider->forget_pixel();
     }
-    Held own_;
+    std::unique_ptr<Held> own_;  // the nested lease's
     Held* held_;
   };
 

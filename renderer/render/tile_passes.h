@@ -50,9 +50,10 @@ class TilePasses {
   // time estimate's calibration (render_estimate.h), whose samples are then the pixels' first.
   // Without splatting a pixel's samples go to it alone, in index order, so the image does not
   // depend on which pixels the calibration took; `end`, a pass's end (a block goes through the
-  // passes in order), keeps every pass's image too. The films are no longer the same on every rank: the next exchange
-  // sends every tile. Returns the seconds the threads spent inside the blocks, summed. A block taken past the first
-  // pass is kept as it was before, for restore_calibration.
+  // passes in order), keeps every pass's image too. The films are no longer the same on every
+  // rank: the next exchange sends every tile. Returns the seconds the threads spent inside the
+  // blocks, summed. A block taken past the first pass is kept as it was before, for
+  // restore_calibration.
   double calibrate(const std::vector<PixelRect>& blocks, std::size_t b0, std::size_t b1, int64_t end);
   // After a stop: the calibrated blocks that went past the pass every pixel of this rank's
   // tiles ended are put back as they were at its end, so that a render stopped between two

@@ -15,8 +15,6 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
     : tiles_(tiles),
       films_(films),
       pixels_(pixels),
-      sampler_(sampler),
-      decider_(decider),
       states_(sampler, decider),
       group_(group),
       opt_(opt),
@@ -76,13 +74,11 @@ double TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b
 }
 
 TilePasses::BlockSnapshot TilePasses::snapshot(const PixelRect& b) {
-  const PixelRect& region = tiles_.region();
   BlockSnapshot s{b, pixel(b.x0, b.y0).prefix, {}, {}};
-  for (int y = b.y0; y < b.y1; ++y)
-    for (int x = b.x0; x < b.x1; ++x) {
-      s.image.push_back(films_.image.at(x - region.x0, y - region.y0));
-      if (films_.split) s.decision.push_back(films_.decision.at(x - region.x0, y - region.y0));
-    }
+  each_accum(b, [&](const PixelAccum& image, const PixelAccum* decision) {
+    s.image.push_back(image);
+    if (decision) s.decision.push_back(*decision);
+  });
   return s;
 }
 
@@ -99,15 +95,14 @@ void TilePasses::restore_calibration() {
   int64_t target = INT64_MAX;
   for (const BlockSnapshot& s : snapshots_) target = std::min(target, s.end);
   target = std::max(target, reached);
-  const PixelRect& region = tiles_.region();
   for (const BlockSnapshot& s : snapshots_) {
     if (s.end != target) continue;
     std::size_t i = 0;
-    for (int y = s.rect.y0; y < s.rect.y1; ++y)
-      for (int x = s.rect.x0; x < s.rect.x1; ++x, ++i) {
-        films_.image.at(x - region.x0, y - region.y0) = s.image[i];
-        if (films_.split) films_.decision.at(x - region.x0, y - region.y0) = s.decision[i];
-      }
+    each_accum(s.rect, [&](PixelAccum& image, PixelAccum* decision) {
+      image = s.image[i];
+      if (decision) *decision = s.decision[i];
+      ++i;
+    });
   }
 }
 

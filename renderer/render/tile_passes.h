@@ -93,12 +93,19 @@ class TilePasses {
     std::vector<PixelAccum> image, decision;
   };
   BlockSnapshot snapshot(const PixelRect& b);
+  // f(image, decision) for each pixel of image rectangle b, row by row (decision: null unless split).
+  template <class F>
+  void each_accum(const PixelRect& b, F&& f) {
+    const PixelRect& region = tiles_.region();
+    for (int y = b.y0; y < b.y1; ++y)
+      for (int x = b.x0; x < b.x1; ++x)
+        f(films_.image.at(x - region.x0, y - region.y0),
+          films_.split ? &films_.decision.at(x - region.x0, y - region.y0) : nullptr);
+  }
 
   const TileWaves& tiles_;
   RenderFilms& films_;
   const PixelRenderer& pixels_;
-  const Sampler& sampler_;
-  const Sampler* decider_;
   ThreadSamplerStates states_;
   const ProcessGroup& group_;
   const RenderOptions& opt_;

@@ -102,16 +102,18 @@ TEST(ProgressivePasses, TimeLimitStopsBetweenPassesWithEveryPixelAtTheSppReached
 
 // The calibration takes its blocks through as many passes as its time allows (on this 40 x 24
 // film, every block to 64 spp and more); stopped after the first or second pass, those blocks
-// are put back as they were at its end, in both films under adaptive "split" too.
+// are put back as they were at its end, with every sampler, and in both films under adaptive
+// "split" too.
 TEST(ProgressivePasses, CalibratedRenderStoppedAtAPassBoundaryIsTheRenderAtThatSppBitForBit) {
   SceneDesc split = lit_sphere(256, "sobol");
   split.film.filter.reconstruction = Reconstruction::Importance;
   split.sampler.adaptive.enabled = true, split.sampler.adaptive.min_spp = 128, split.sampler.adaptive.max_spp = 256;
   split.sampler.adaptive.decision = AdaptiveDecision::Split;
-  for (const SceneDesc& s : {lit_sphere(256, "poisson"), split})
+  std::vector<SceneDesc> scenes{split};
+  for (const std::string& sampler : sampler_names()) scenes.push_back(lit_sphere(256, sampler.c_str()));
+  for (const SceneDesc& s : scenes)
     for (int64_t stop : {8, 16}) {
-      SCOPED_TRACE(std::string(s.sampler.adaptive.enabled ? "split" : "poisson") + ", stopped at " +
-                   std::to_string(stop));
+      SCOPED_TRACE((s.sampler.adaptive.enabled ? "split" : s.sampler.type) + ", stopped at " + std::to_string(stop));
       const RenderResult calibrated = render_stopped_at(s, stop, 2, true);
       const RenderResult plain = render_stopped_at(s, stop, 1, false);
       EXPECT_GT(calibrated.stats.estimate.calibration_passes, 2);

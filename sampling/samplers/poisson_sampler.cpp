@@ -190,6 +190,8 @@ class PoissonSampler final : public Sampler {
   // another key, and later rounds pick by hash: such streams differ only by symmetry and shift.
   // Returns the stream's hash (stream(px, py, f, bounce)).
   uint64_t map_stream(int px, int py, Family f, int bounce, uint64_t round, PreparedStream* out) const {
+    const uint64_t hs = stream(px, py, f, bounce);
+    if (plane_keys_ && round == 0) return keyed_stream(px, py, f, bounce, hs, out);
     const SampleTable& t = *tables_.family[int(f)];
     const bool pooled = !pool_.empty() && f != Family::Time;
     // Pooled: the 2-D families share one permutation of the pool, salt b of family f at
@@ -198,8 +200,6 @@ class PoissonSampler final : public Sampler {
     const uint32_t b = pooled ? 4 * uint32_t(bounce) + plane_place(f) : uint32_t(bounce);
     const uint32_t slot = power_of_two(T) ? b & (T - 1) : b % T,
                    group = power_of_two(T) ? b >> std::countr_zero(T) : b / T;
-    const uint64_t hs = stream(px, py, f, bounce);
-    if (plane_keys_ && round == 0) return keyed_stream(px, py, f, bounce, hs, out);
     uint64_t h = hs;
     uint32_t table;
     if (round == 0) {
@@ -211,11 +211,7 @@ class PoissonSampler final : public Sampler {
     }
     const unsigned sym = f == Family::Time ? (unsigned(h) & 1u) << 1 : unsigned(h) & 7u;  // 1-D: the flip only
     const uint64_t s = opt_.shift ? mix64(h ^ kShiftSalt) : 0;
-    out->coords = pooled ? pool_[table] : t.coords[table].data();
-    out->base = 0;
-    out->count = t.params.points;
-    out->shift = t.dim == 2 ? 1 : 0;
-    out->grows = false;
+    read_table(t, pooled ? pool_[table] : t.coords[table].data(), out);
     const bool swap = sym & 1;
     for (int k = 0; k < 2; ++k) {
       const bool flip = sym & (2u << k);
@@ -240,6 +236,15 @@ class PoissonSampler final : public Sampler {
     return hs;
   }
 
+  // `out` reads all of `coords`, one of table family t's tables (its axis map is the caller's).
+  static void read_table(const SampleTable& t, const uint32_t* coords, PreparedStream* out) {
+    out->coords = coords;
+    out->base = 0;
+    out->count = t.params.points;
+    out->shift = t.dim == 2 ? 1 : 0;
+    out->grows = false;
+  }
+
   // poisson-bn's round 0: the key of the pixel's place in the tile (offset per stream), under a
   // digital shift uniform per (seed, family, bounce): every value is uniform over seeds and the
   // keys' relations between neighbouring pixels stay.
@@ -248,16 +253,11 @@ class PoissonSampler final : public Sampler {
     const ScreenKeyTile& tile = f == Family::Time ? *time_keys_ : *plane_keys_;
     const KeyPlace place = unsigned(bounce) < unsigned(PixelSampleState::kCachedSalts) ? key_places_[int(f)][bounce]
                                                                                        : key_place(f, bounce);
-    const uint64_t g = place.shift;
     const ScreenKey& k = tile.at(px + place.ox, py + place.oy);
-    out->coords = f == Family::Time ? t.coords[k.table].data() : pool_[k.table];
-    out->base = 0;
-    out->count = t.params.points;
-    out->shift = t.dim == 2 ? 1 : 0;
-    out->grows = false;
+    read_table(t, f == Family::Time ? t.coords[k.table].data() : pool_[k.table], out);
     for (int a = 0; a < 2; ++a) {
       out->src[a] = uint8_t(t.dim == 2 && k.swap ? 1 - a : t.dim == 2 ? a : 0);
-      out->xr[a] = k.x[a] ^ uint32_t(g >> (32 * a)), out->add[a] = 0, out->off[a] = 0.0, out->mul[a] = kFixed;
+      out->xr[a] = k.x[a] ^ uint32_t(place.shift >> (32 * a)), out->add[a] = 0, out->off[a] = 0.0, out->mul[a] = kFixed;
     }
     return hs;
   }

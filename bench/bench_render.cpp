@@ -49,12 +49,15 @@ void BM_PdrtRenderDirect(benchmark::State& state) {
   RenderOptions o;
   o.quiet = true;
   int64_t total = 0;
+  double timed = 0, passes = 0;
   for (auto _ : state) {
     RenderResult r = render(scene(), *sampler, o);
     state.SetIterationTime(r.stats.seconds - r.stats.build_seconds);
+    timed += r.stats.seconds - r.stats.build_seconds, passes += r.stats.passes_seconds;
     total += r.stats.rays;
   }
   state.SetItemsProcessed(total);
+  state.counters["passes_share"] = timed > 0 ? passes / timed : 0;
 }
 
 }  // namespace

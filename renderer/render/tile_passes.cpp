@@ -3,9 +3,11 @@
 #include "sampling/core/progress.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 
 namespace pdrt {
 
@@ -27,6 +29,7 @@ TilePasses::TilePasses(const TileWaves& tiles, RenderFilms& films, const PixelRe
   for (const std::vector<int>& wave : tiles.waves())
     for (int t : wave) count = std::max(count, t + 1);
   own_tile_.assign(std::size_t(count), 0);
+  sampled_.assign(std::size_t(count), 0);
   for (int t : tiles.tiles_of(group.rank(), group.size())) own_tile_[std::size_t(t)] = 1;
   populate_own_tiles();
 }
@@ -61,6 +64,7 @@ double TilePasses::calibrate(const std::vector<PixelRect>& blocks, std::size_t b
   };
   const double before = busy();
   std::vector<BlockSnapshot> taken(b1 - b0);
+  for (std::size_t k = b0; k < b1; ++k) sampled_[std::size_t(tiles_.tile_at(blocks[k].x0, blocks[k].y0))] = 1;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(b0, b1, 1), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t k = r.begin(); k != r.end(); ++k) {
       if (pixel(blocks[k].x0, blocks[k].y0).prefix > 0) taken[k - b0] = snapshot(blocks[k]);
@@ -112,20 +116,29 @@ std::vector<std::size_t> TilePasses::own_tiles(const std::vector<int>& wave) con
 
 double TilePasses::work(const std::function<int64_t(int, int)>& end_of) const {
   const PixelRect& region = tiles_.region();
-  double total = 0;
-  for (int t : tiles_.tiles_of(group_.rank(), group_.size())) {
-    const PixelRect p = tiles_.pixels(t);
-    for (int y = p.y0; y < p.y1; ++y)
-      for (int x = p.x0; x < p.x1; ++x) {
-        const int fx = x - region.x0, fy = y - region.y0;
-        total += double(std::max<int64_t>(0, end_of(fx, fy) - films_.image.at(fx, fy).prefix));
-      }
-  }
-  return total;
+  const std::vector<int> mine = tiles_.tiles_of(group_.rank(), group_.size());
+  // Exact in any order: the terms are whole numbers, their sum far below 2^53.
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mine.size()), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double total) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+          const PixelRect p = tiles_.pixels(mine[k]);
+          const bool read = sampled_[std::size_t(mine[k])] != 0;  // else every prefix is 0
+          for (int y = p.y0; y < p.y1; ++y)
+            for (int x = p.x0; x < p.x1; ++x) {
+              const int fx = x - region.x0, fy = y - region.y0;
+              const int64_t taken = read ? films_.image.at(fx, fy).prefix : 0;
+              total += double(std::max<int64_t>(0, end_of(fx, fy) - taken));
+            }
+        }
+        return total;
+      },
+      std::plus<double>());
 }
 
 bool TilePasses::run(const std::function<int64_t(int, int)>& end_of, Progress& progress, FilmsTo to) {
   std::atomic<bool> cancelled{false};
+  std::fill(sampled_.begin(), sampled_.end(), uint8_t(1));  // and the exchanges may write any tile
   for (const std::vector<int>& wave : tiles_.waves()) {
     const std::vector<std::size_t> own = own_tiles(wave);
     mine_.tiles += int64_t(own.size());

@@ -120,7 +120,12 @@ class TilePasses {
   bool stopped_ = false;
   // Every rank holds the same films (all zero at the start; after an exchange with everyone).
   bool in_step_ = true;
-  std::vector<uint8_t> own_tile_;         // by tile index: this rank renders it
+  std::vector<uint8_t> own_tile_;  // by tile index: this rank renders it
+  // By tile index: some pixel of it may hold samples (a calibration block lies in it, or a pass
+  // ran). work() reads the others' prefixes as 0 instead of from the films: a film page's first
+  // read costs what its first write does (in a virtual machine, 5-7 us), and work() runs before
+  // the passes spread those writes over the threads.
+  std::vector<uint8_t> sampled_;
   std::vector<BlockSnapshot> snapshots_;  // the calibration's blocks before each pass past the first
 };
 

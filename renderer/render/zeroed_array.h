@@ -3,9 +3,9 @@
 // first touched (anonymous mmap from 64 KiB on, without huge pages; calloc below): allocating a film costs no
 // time, the threads that render a tile fault in its pages in parallel, and an MPI rank maps
 // only the pages of the tiles it renders (filling a 1080p film, 464 MB, on one thread takes
-// about 0.2 s, before any pass could start). The last released mapping of up to 64 MiB is
-// kept and zeroed again for the next array of its size: a process that renders many images
-// (compare, the benchmarks) then pays its page faults once. T must be trivially copyable and
+// about 0.2 s, before any pass could start). The last two released mappings of up to 64 MiB
+// are kept and zeroed again for the next arrays of their size: a process that renders many
+// images (compare, the benchmarks) then pays their page faults once. T must be trivially copyable and
 // destructible, and its all-zero bytes must be the value it is meant to start with.
 #include <cstddef>
 #include <cstring>

@@ -49,15 +49,18 @@ void BM_PdrtRenderDirect(benchmark::State& state) {
   RenderOptions o;
   o.quiet = true;
   int64_t total = 0;
-  double timed = 0, passes = 0;
+  double timed = 0, passes = 0, in_tiles = 0, span = 0;
   for (auto _ : state) {
     RenderResult r = render(scene(), *sampler, o);
     state.SetIterationTime(r.stats.seconds - r.stats.build_seconds);
     timed += r.stats.seconds - r.stats.build_seconds, passes += r.stats.passes_seconds;
+    in_tiles += r.stats.ranks.front().tile_seconds, span += r.stats.threads * r.stats.passes_seconds;
     total += r.stats.rays;
   }
   state.SetItemsProcessed(total);
   state.counters["passes_share"] = timed > 0 ? passes / timed : 0;
+  // The workers' thread-seconds inside tiles over threads x the passes' time.
+  state.counters["threads_busy"] = span > 0 ? in_tiles / span : 0;
 }
 
 }  // namespace

@@ -5,8 +5,12 @@
 
 #include "renderer/image/image_module.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <new>
 
 namespace pdrt {
@@ -67,16 +71,20 @@ void write_image(const std::filesystem::path& path, const Image& img, const Meta
   if (exr) attributes.push_back({"compression", "zip"});
   attributes.insert(attributes.end(), metadata.begin(), metadata.end());
 
-  std::vector<float> pixels(n * nc);
-  for (std::size_t i = 0; i < n; ++i) {
-    float* o = &pixels[i * nc];
-    for (int c = 0; c < 3; ++c) o[c] = linear ? img.rgb[3 * i + c] : linear_to_srgb(img.rgb[3 * i + c]);
-    if (exr) {
-      o[3] = img.samples[i], o[4] = img.variance[i];
-      for (int c = 0; c < 3; ++c) o[5 + c] = img.albedo[3 * i + c], o[8 + c] = img.normal[3 * i + c];
-      o[11] = img.depth[i];
+  // Interleaved in parallel into memory nothing zeroed first: a 1080p EXR's 100 MB, zeroed and
+  // filled on one thread, took a quarter of a second before the file was opened (2026-12-06).
+  const std::unique_ptr<float[]> pixels(new float[n * std::size_t(nc)]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      float* o = &pixels[i * nc];
+      for (int c = 0; c < 3; ++c) o[c] = linear ? img.rgb[3 * i + c] : linear_to_srgb(img.rgb[3 * i + c]);
+      if (exr) {
+        o[3] = img.samples[i], o[4] = img.variance[i];
+        for (int c = 0; c < 3; ++c) o[5 + c] = img.albedo[3 * i + c], o[8 + c] = img.normal[3 * i + c];
+        o[11] = img.depth[i];
+      }
     }
-  }
+  });
   std::vector<const char*> channel_names;
   for (const auto& c : names) channel_names.push_back(c.c_str());
   const std::string format = ext.substr(1);
@@ -86,7 +94,7 @@ void write_image(const std::filesystem::path& path, const Image& img, const Meta
   w.channel_names = channel_names.data();
   w.z_channel = exr ? nc - 1 : -1;
   w.uint8 = !linear;
-  w.pixels = pixels.data();
+  w.pixels = pixels.get();
   write_through_module(path, w, attributes);
 }
 

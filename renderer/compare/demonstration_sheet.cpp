@@ -111,7 +111,9 @@ DemoLayout demonstration_layout(int samplers, int spps, int crop_side) {
 DemoPicture demonstration_picture(const DemoInput& in) {
   check_input(in);
   const int rows = int(in.samplers.size()), cols = int(in.spp.size());
-  const auto [wx, wy, c] = in.window;
+  // Plain ints, not structured bindings: the lambdas below capture them (clang before 16
+  // refuses to capture a structured binding).
+  const int wx = in.window[0], wy = in.window[1], c = in.window[2];
   const int W = in.reference->width;
   DemoPicture pic;
   pic.layout = demonstration_layout(rows, cols, c);
@@ -124,7 +126,7 @@ DemoPicture demonstration_picture(const DemoInput& in) {
   pic.rgb.assign(std::size_t(3) * l.width * l.height, 1.0f);
   Canvas cv{l, pic.rgb};
   auto image_crop = [&](const Image& im) {
-    return [&im, wx = wx, wy = wy](int x, int y) { return srgb_pixel(im, wx + x, wy + y); };
+    return [&im, wx, wy](int x, int y) { return srgb_pixel(im, wx + x, wy + y); };
   };
   for (int r = 0; r < rows; ++r)
     for (int k = 0; k < cols; ++k) {

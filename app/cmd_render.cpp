@@ -19,6 +19,7 @@
 #include "renderer/scene/scene_loader.h"
 
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -238,6 +239,10 @@ void add_render_command(CLI::App& app) {
           throw UsageError("--out " + o->outs[i] + " is given twice");
     }
 
+    // --threads bounds the whole command, not only the passes: the scene's set-up and the
+    // image's conversion and writing run in parallel too.
+    std::optional<tbb::global_control> limit;
+    if (o->threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(o->threads));
     // Rank 0 writes the image: its module loads while the scene does.
     std::optional<ImageModulePreload> preload;
     if (launcher_rank() == 0) preload.emplace();

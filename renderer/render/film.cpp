@@ -4,7 +4,6 @@
 #include <tbb/blocked_range.h>
 #include <unistd.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,18 +102,8 @@ void write_image_pixel(const PixelAccum& p, float scale, Image& img, std::size_t
 
 Image Film::image(float exposure_stops) const { return image(exposure_stops, 0, 0, width_, height_); }
 
-Image rendered_image(int width, int height) {
-  Image img;
-  img.width = width, img.height = height;
-  const std::size_t n = std::size_t(width) * std::size_t(height);
-  tbb::parallel_invoke([&] { img.rgb.resize(3 * n); }, [&] { img.albedo.resize(3 * n); },
-                       [&] { img.normal.resize(3 * n); },
-                       [&] { img.samples.resize(n), img.variance.resize(n), img.depth.resize(n); });
-  return img;
-}
-
 Image Film::image(float exposure_stops, int x0, int y0, int width, int height) const {
-  Image img = rendered_image(width, height);
+  Image img = sized_image(width, height);
   const float scale = std::exp2(exposure_stops);
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)

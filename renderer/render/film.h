@@ -40,14 +40,9 @@ struct PixelAccum {
 };
 
 // Writes pixel p's image values (rgb scaled by `scale`, 2^exposure; the samples plane holds
-// its traced count) at pixel index i of `img`, whose planes are sized (rendered_image): what
+// its traced count) at pixel index i of `img`, whose planes are sized (sized_image): what
 // Film::image does.
 void write_image_pixel(const PixelAccum& p, float scale, Image& img, std::size_t i);
-
-// sized_image with its planes zeroed in parallel, one group of planes per task: the first touch
-// of an image's pages is the kernel's work, and on one thread it held up the end of every render
-// (0.25 s of a 2.7 s 1080p render at 1 spp in the sandboxed 2-core VM, 2026-12-06).
-Image rendered_image(int width, int height);
 
 class Film {
  public:

@@ -87,7 +87,7 @@ GatheredImage gather_image(const RenderFilms& films, const TileWaves& tiles, con
   std::vector<std::vector<ByteSpan>> send(static_cast<std::size_t>(nranks)), recv(static_cast<std::size_t>(nranks));
   Image strip;  // a rank's pixels one after the other, segment by segment: one row
   if (me == 0) {
-    out.image = rendered_image(crop.width(), crop.height());
+    out.image = sized_image(crop.width(), crop.height());
     convert(out.image, [&](std::size_t, const Segment& s) { return std::size_t(s.y) * crop.width() + s.x0; });
     for (int r = 1; r < nranks; ++r) {
       const std::vector<Segment> theirs = segments_of(tiles, crop, r, nranks);

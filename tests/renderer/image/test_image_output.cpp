@@ -1,4 +1,4 @@
-// Writing a rendered image (renderer/image/image_output.h): what the file holds.
+// A rendered image (renderer/image/image.h) and writing it (image_output.h): what the file holds.
 #include "renderer/image/image_output.h"
 
 #include <OpenImageIO/imageio.h>
@@ -8,9 +8,26 @@
 #include <algorithm>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace pdrt;
+
+// sized_image sizes every plane, all zero (write_image_pixel then fills each pixel, and the AOV
+// planes a pixel has no value for stay 0); its tasks zero one group of planes each.
+TEST(Image, SizedImageHasEveryPlaneSizedAndZero) {
+  const Image img = sized_image(37, 23);
+  const std::size_t n = 37 * 23;
+  EXPECT_EQ(img.width, 37);
+  EXPECT_EQ(img.height, 23);
+  const std::pair<const std::vector<float>*, std::size_t> planes[] = {{&img.rgb, 3 * n},    {&img.albedo, 3 * n},
+                                                                      {&img.normal, 3 * n}, {&img.samples, n},
+                                                                      {&img.variance, n},   {&img.depth, n}};
+  for (const auto& [p, size] : planes) {
+    ASSERT_EQ(p->size(), size);
+    for (float v : *p) ASSERT_EQ(v, 0.0f);
+  }
+}
 
 // The EXR's twelve channels, pixel by pixel, are the image's planes: the pixels are interleaved
 // in parallel chunks of 4,096, so an image of 5,917 pixels (a chunk and a partial one) checks

@@ -46,22 +46,6 @@ TEST(Film, AnEmptyPixelIsAllZeroBytes) {
     for (int x = 0; x < 40; ++x) ASSERT_EQ(std::memcmp(&film.at(x, y), &p, sizeof p), 0);
 }
 
-// rendered_image sizes every plane as sized_image does, all zero (write_image_pixel then fills
-// each pixel, and the AOV planes a pixel has no value for stay 0).
-TEST(Film, RenderedImageHasEveryPlaneSizedAndZero) {
-  const Image img = rendered_image(37, 23);
-  const std::size_t n = 37 * 23;
-  EXPECT_EQ(img.width, 37);
-  EXPECT_EQ(img.height, 23);
-  const std::pair<const std::vector<float>*, std::size_t> planes[] = {{&img.rgb, 3 * n},    {&img.albedo, 3 * n},
-                                                                      {&img.normal, 3 * n}, {&img.samples, n},
-                                                                      {&img.variance, n},   {&img.depth, n}};
-  for (const auto& [p, size] : planes) {
-    ASSERT_EQ(p->size(), size);
-    for (float v : *p) ASSERT_EQ(v, 0.0f);
-  }
-}
-
 // The per-channel range starts at the first sample (it has no sentinel), however large.
 TEST(Film, ContrastSpansTheSamplesFromTheFirst) {
   PixelAccum acc;

@@ -33,6 +33,21 @@ constexpr std::array<uint8_t, 24> kDigitPermutations = [] {
   return t;
 }();
 
+// Permutation r's images of digits 0..3, and the pairs' flips of a bottom node of odd m (bit p
+// of the index: pair p flips) as the eight indices' lowest bits.
+constexpr std::array<std::array<uint32_t, 4>, 24> kSpreadPermutation = [] {
+  std::array<std::array<uint32_t, 4>, 24> t{};
+  for (std::size_t r = 0; r < 24; ++r)
+    for (std::size_t d = 0; d < 4; ++d) t[r][d] = (uint32_t(kDigitPermutations[r]) >> (2 * d)) & 3u;
+  return t;
+}();
+constexpr std::array<std::array<uint32_t, 8>, 16> kSpreadFlips = [] {
+  std::array<std::array<uint32_t, 8>, 16> t{};
+  for (std::size_t f = 0; f < 16; ++f)
+    for (std::size_t k = 0; k < 8; ++k) t[f][k] = uint32_t(k & 1) ^ uint32_t((f >> (k >> 1)) & 1);
+  return t;
+}();
+
 // The permutation of the digit of z at `shift`: a hash of key and of z's bits above the digit.
 uint8_t digit_permutation(uint32_t z, int shift, uint64_t key) {
   const uint64_t h = mix64(key ^ ((uint64_t(z) >> (shift + 2)) * 0xc2b2ae3d27d4eb4full) ^ uint64_t(shift));
@@ -46,49 +61,38 @@ uint32_t tail_flip(uint32_t z, int lo, uint64_t key) {
   return uint32_t(mix64(key ^ ((uint64_t(z) >> (lo + 1)) * 0xc2b2ae3d27d4eb4full) ^ 0x5bd1e995ull) >> 63);
 }
 
-// scramble_digits(z, bits, 0, key) that keeps the permutations of the last index: consecutive
-// indices of a stream (a pixel's samples, then the next pixel's) share the digits above their
-// first difference, so a neighbouring pixel costs the digits that change (about 4/3) and a
-// pixel's samples the nodes of their subtree, instead of every digit of every index.
-class DigitCache {
+// scramble_digits(z, bits, lo, key) for z whose bits below lo are 0 and bits - lo even (a
+// pixel's Morton digits above its block's sample bits), keeping the permutations above the
+// first difference from the last z: a neighbouring pixel costs the digits that change (about
+// 4/3) instead of all of them.
+class PixelDigits {
  public:
-  uint32_t operator()(uint32_t z, int bits, uint64_t key) {
-    if (key != key_ || bits != bits_) key_ = key, bits_ = bits, valid_ = false;
-    if (valid_) {
-      const uint32_t diff = z ^ z_;
-      if (diff == 0) return out_;
-      // The next sample of a pixel: only the lowest digit changed, under the same permutation
-      // (the base-4 digit at bit 0, or with an odd count of bits the single bit 0 and its flip).
-      if ((bits & 1) == 0 ? diff < 4u : diff == 1u) {
-        out_ = (bits & 1) == 0 ? (out_ & ~3u) | permuted_digit(z, 0, r_[0]) : (out_ & ~1u) | ((z & 1u) ^ flip_);
-        z_ = z;
-        return out_;
-      }
-    }
+  uint32_t operator()(uint32_t z, int bits, int lo, uint64_t key) {
+    if (key != key_ || bits != bits_ || lo != lo_) key_ = key, bits_ = bits, lo_ = lo, valid_ = false;
     int shift = bits - 2;
     uint32_t out = 0;
-    if (valid_) {  // the digits above the first difference stay; its own keeps its permutation
-      const int d = 31 - __builtin_clz(z ^ z_);
-      shift = d - ((d - bits) & 1);
+    if (valid_) {
+      if (z == z_) return out_;
+      const int d = 31 - __builtin_clz(z ^ z_);  // >= lo
+      shift = d - ((d - bits) & 1);              // the digit holding bit d keeps its permutation
       out = shift + 2 >= 32 ? 0u : out_ & (~0u << (shift + 2));
-      out |= shift >= 0 ? permuted_digit(z, shift, r_[std::size_t(shift) >> 1]) : (z & 1u) ^ flip_;
+      out |= permuted_digit(z, shift, r_[std::size_t(shift) >> 1]);
       shift -= 2;
     }
-    for (; shift >= 0; shift -= 2) {
+    for (; shift >= lo; shift -= 2) {
       uint8_t& r = r_[std::size_t(shift) >> 1];
       r = digit_permutation(z, shift, key);
       out |= permuted_digit(z, shift, r);
     }
-    if (shift == -1) flip_ = tail_flip(z, 0, key), out |= (z & 1u) ^ flip_;
     z_ = z, out_ = out, valid_ = true;
     return out;
   }
 
  private:
   uint64_t key_ = 0;
-  int bits_ = -1;
+  int bits_ = -1, lo_ = -1;
   bool valid_ = false;
-  uint32_t z_ = 0, out_ = 0, flip_ = 0;
+  uint32_t z_ = 0, out_ = 0;
   std::array<uint8_t, 16> r_{};
 };
 
@@ -108,8 +112,9 @@ uint32_t interleave(uint32_t x, uint32_t y) {
   return spread(x) | spread(y) << 1;
 }
 
-constexpr uint64_t kKeySalt = 0x706f6973736f6e2dull;    // independent of zsobol's keys
-constexpr uint64_t kShiftSalt = 0x73732d7368696674ull;  // a run's shift, apart from its table pick
+constexpr uint64_t kKeySalt = 0x706f6973736f6e2dull;     // independent of zsobol's keys
+constexpr uint64_t kShiftSalt = 0x73732d7368696674ull;   // a run's shift, apart from its table pick
+constexpr uint64_t kSampleSalt = 0x73732d73616d706cull;  // a pixel's sample scramble
 
 // One family's tables in progressive order: table t's point j at coords[t][j * dim + k].
 struct OrderedTables {
@@ -169,6 +174,7 @@ class ScreenPoissonSampler final : public Sampler {
     if (o.width < 1 || o.height < 1) throw UsageError(me + "the image must have at least one pixel");
     m_ = pixel_order_bits(o.samples_per_pixel, 1, 1);
     k_ = pixel_order_bits(1, o.width, o.height) / 2;
+    if (m_ > 31) throw UsageError(me + "at most 2^31 samples per pixel, got " + std::to_string(o.samples_per_pixel));
     if (bits() > kPixelOrderBits)
       throw UsageError(me + std::to_string(o.width) + " x " + std::to_string(o.height) + " pixels at " +
                        std::to_string(o.samples_per_pixel) + " samples per pixel need " + std::to_string(bits()) +
@@ -195,19 +201,28 @@ class ScreenPoissonSampler final : public Sampler {
     const OrderedTables& t = tables(f);
     const int dim = t.dim;
     const uint32_t end = out->want, first = std::min(out->first, end);
-    out->own.resize(std::size_t(end - first) * std::size_t(dim));
+    // Grown, never shrunk: nothing reads past the window, and zeroing it anew every pass cost
+    // a twentieth of this function's time.
+    if (out->own.size() < std::size_t(end - first) * std::size_t(dim)) out->own.resize(std::size_t(end - first) * dim);
     uint32_t* v = out->own.data();
     const uint64_t block_size = uint64_t(1) << m_;
     const uint32_t pixel = pixel_index(px, py);
     for (uint64_t b0 = first & ~(block_size - 1); b0 < end; b0 += block_size) {
       const uint64_t lo = std::max<uint64_t>(b0, first), hi = std::min<uint64_t>(b0 + block_size, end);
-      StreamCache local;
-      StreamCache& c = stream_cache(f, bounce, b0 >> m_, local);
-      for (uint64_t i = lo; i < hi; ++i, v += dim) {
-        const auto point = run_point(c, c.digits(pixel | uint32_t(i - b0), bits(), c.key), f, t);
-        v[0] = point[0];
-        if (dim == 2) v[1] = point[1];
+      const auto fill = [&](StreamCache& c) {
+        if (dim == 2)
+          fill_block<2>(c, pixel, uint32_t(lo - b0), uint32_t(hi - b0), f, t, v);
+        else
+          fill_block<1>(c, pixel, uint32_t(lo - b0), uint32_t(hi - b0), f, t, v);
+      };
+      if (unsigned(bounce) < unsigned(kCachedBounces)) {
+        fill(cached_stream(f, bounce, b0 >> m_));
+      } else {
+        StreamCache local;  // (made only here: zeroing it was a twentieth of every call's time)
+        local.key = block_key(f, bounce, b0 >> m_);
+        fill(local);
       }
+      v += std::size_t(hi - lo) * std::size_t(dim);
     }
     fill_prepared(out, first, end, dim, nullptr);
   }
@@ -224,7 +239,7 @@ class ScreenPoissonSampler final : public Sampler {
   // What a thread keeps of a stream between values (pure functions of the keys they are
   // checked against, so values do not depend on what a thread computed before).
   struct StreamCache {
-    DigitCache digits;
+    PixelDigits pixel;
     uint64_t sampler = 0, block = 0, key = 0;  // the sampler (id_) and block whose key this is
     uint32_t run_id = UINT32_MAX;
     Run run;
@@ -234,11 +249,15 @@ class ScreenPoissonSampler final : public Sampler {
   std::array<uint32_t, 2> fixed(int px, int py, uint64_t index, Family f, int bounce) const {
     const OrderedTables& t = tables(f);
     const uint64_t block = index >> m_;
-    const uint32_t z = pixel_index(px, py) | (uint32_t(index) & low_mask());
-    StreamCache local;
-    StreamCache& c = stream_cache(f, bounce, block, local);
+    const uint32_t pixel = pixel_index(px, py), i = uint32_t(index) & low_mask();
+    if (unsigned(bounce) < unsigned(kCachedBounces)) {
+      StreamCache& c = cached_stream(f, bounce, block);
+      return run_point(c, c.pixel(pixel, bits(), m_, c.key) | sample_bits(c.key, pixel, i), f, t);
+    }
     // A bounce past the caches hashes every digit (what prepare's caches must agree with).
-    return run_point(c, &c == &local ? scramble_digits(z, bits(), 0, c.key) : c.digits(z, bits(), c.key), f, t);
+    StreamCache local;
+    local.key = block_key(f, bounce, block);
+    return run_point(local, scramble_digits(pixel, bits(), m_, local.key) | sample_bits(local.key, pixel, i), f, t);
   }
 
   // Per axis, position p of the stream's arrangement (c's block): the point of its run's table
@@ -250,13 +269,138 @@ class ScreenPoissonSampler final : public Sampler {
     return {at[c.run.swap] ^ c.run.xr[0], at[c.run.swap ^ 1] ^ c.run.xr[1]};
   }
 
-  // The thread's cache of a stream's block, keyed for it; past kCachedBounces, `local` keyed
-  // for it.
-  StreamCache& stream_cache(Family f, int bounce, uint64_t block, StreamCache& local) const {
-    if (unsigned(bounce) >= unsigned(kCachedBounces)) {
-      local.key = block_key(f, bounce, block);
-      return local;
+  // The sample digits of index i (< 2^m) of the pixel's block: base-4 digits from the top, each
+  // permuted by one of the 24 permutations per node of the pixel's index tree (the digits above
+  // it), as the pixel's digits are; an odd m ends in the single bit 0, flipped per pair. A
+  // node's permutation is 16 bits of a hash of (pixel, level, node / 4), so four neighbouring
+  // nodes share one hash (the pixel's tree costs (2^m - 1) / 12 hashes, not (2^m - 1) / 3).
+  // (The pixel enters the node and tail hashes unmixed: each is a mix64 of its own.)
+  uint64_t sample_seed(uint64_t key, uint32_t pixel) const {
+    return key ^ kSampleSalt ^ (uint64_t(pixel) * 0x9e3779b97f4a7c15ull);
+  }
+  static uint64_t node_hash(uint64_t seed, int level, uint32_t quad) {
+    return mix64(seed ^ (uint64_t(level + 1) * 0xd6e8feb86659fd93ull) ^ (uint64_t(quad) * 0xc2b2ae3d27d4eb4full));
+  }
+  static uint32_t node_perm_index(uint64_t h, uint32_t node) {  // h: node_hash of node / 4
+    return ((uint32_t(h >> (16 * (node & 3u))) & 0xffffu) * 24u) >> 16;
+  }
+  static uint32_t node_perm(uint64_t h, uint32_t node) { return kDigitPermutations[node_perm_index(h, node)]; }
+  static uint64_t tail_hash(uint64_t seed, uint32_t group) {  // the flips of pairs [64 group, 64 group + 64)
+    return mix64(seed ^ 0xa0761d6478bd642full ^ (uint64_t(group) * 0xbf58476d1ce4e5b9ull));
+  }
+  uint32_t sample_bits(uint64_t key, uint32_t pixel, uint32_t i) const {
+    const uint64_t seed = sample_seed(key, pixel);
+    uint32_t out = 0;
+    for (int l = 0, shift = m_ - 2; shift >= 0; ++l, shift -= 2) {
+      const uint32_t node = i >> (shift + 2);
+      out |= ((node_perm(node_hash(seed, l, node >> 2), node) >> (2 * ((i >> shift) & 3u))) & 3u) << shift;
     }
+    if (m_ & 1) out |= (i & 1u) ^ uint32_t(tail_hash(seed, i >> 7) >> ((i >> 1) & 63u) & 1u);
+    return out;
+  }
+  // out[i - a] = sample_bits(i) for a <= i < e, bottom node by bottom node (the lowest base-4
+  // digit's, 4 << (m & 1) indices): a whole node is its upper digits or'ed onto its
+  // permutation spread over four words (and, for odd m, the four pairs' flips spread over
+  // eight), so a value costs about a word's or and store; each level keeps the hash of its
+  // last four nodes.
+  void sample_bits(uint64_t seed, uint32_t a, uint32_t e, uint32_t* out) const {
+    const int b = m_ & 1, L = m_ / 2;  // the tail bits below the base-4 digits, and those digits
+    if (L == 0) {                      // m = 0 or 1: the tail bit alone
+      for (uint32_t i = a; i < e; ++i)
+        out[i - a] = b ? (i & 1u) ^ uint32_t(tail_hash(seed, i >> 7) >> (i >> 1) & 1u) : 0u;
+      return;
+    }
+    const int w = 2 + b;  // index bits below a bottom node
+    std::array<uint32_t, 16> quad;
+    std::array<uint64_t, 16> hash;
+    quad.fill(UINT32_MAX);
+    const auto perm = [&](int l, uint32_t node) {  // kDigitPermutations' index of node at level l
+      if (quad[std::size_t(l)] != node >> 2)
+        quad[std::size_t(l)] = node >> 2, hash[std::size_t(l)] = node_hash(seed, l, node >> 2);
+      return node_perm_index(hash[std::size_t(l)], node);
+    };
+    // Per parent (n / 4) of bottom node n: the digits of the levels above the parent's, and the
+    // parent's permutation, which maps n's place in it (n mod 4) to the digit at shift w.
+    uint32_t above = 0, parent_perm = 0, parent = UINT32_MAX, group = UINT32_MAX;
+    uint64_t th = 0;
+    for (uint32_t n = a >> w; uint64_t(n) << w < e; ++n) {
+      if (L > 1 && n >> 2 != parent) {
+        parent = n >> 2, above = 0;
+        for (int l = 0; l < L - 2; ++l) {
+          const int shift = m_ - 2 - 2 * l, up = 2 * (L - 1 - l);  // node of level l: n >> up
+          above |= ((kDigitPermutations[perm(l, n >> up)] >> (2 * ((n >> (up - 2)) & 3u))) & 3u) << shift;
+        }
+        parent_perm = kDigitPermutations[perm(L - 2, parent)];
+      }
+      const uint32_t upper = L > 1 ? above | (((parent_perm >> (2 * (n & 3u))) & 3u) << w) : 0u;
+      const std::array<uint32_t, 4>& digits = kSpreadPermutation[perm(L - 1, n)];
+      const uint32_t lo = n << w;
+      if (b) {
+        if (n >> 4 != group) group = n >> 4, th = tail_hash(seed, group);
+        const std::array<uint32_t, 8>& flips = kSpreadFlips[(th >> ((4 * n) & 63u)) & 15u];
+        if (lo >= a && uint64_t(lo) + 8 <= e) {
+          uint32_t* o = out + (lo - a);
+          for (int k = 0; k < 8; ++k) o[k] = upper | (digits[std::size_t(k >> 1)] << 1) | flips[std::size_t(k)];
+        } else {
+          for (uint32_t i = std::max(a, lo); i < std::min<uint64_t>(e, uint64_t(lo) + 8); ++i)
+            out[i - a] = upper | (digits[(i >> 1) & 3u] << 1) | flips[i & 7u];
+        }
+      } else if (lo >= a && uint64_t(lo) + 4 <= e) {
+        uint32_t* o = out + (lo - a);
+        for (int k = 0; k < 4; ++k) o[k] = upper | digits[std::size_t(k)];
+      } else {
+        for (uint32_t i = std::max(a, lo); i < std::min<uint64_t>(e, uint64_t(lo) + 4); ++i)
+          out[i - a] = upper | digits[i & 3u];
+      }
+    }
+  }
+
+  // Indices [a, e) of the pixel's block of c's stream, D values each, into v: the pixel's
+  // digits once (through c's cache), the window's sample digits, then the reads. The run is
+  // copied into a local and written back after: the stores to v cannot alias a local, so it
+  // stays in registers instead of being reloaded after every store.
+  struct Runs {  // fill_block's copy of a stream's run
+    uint64_t key;
+    uint32_t run_id;
+    Run run;
+  };
+  template <int D>
+  void fill_block(StreamCache& c, uint32_t pixel, uint32_t a, uint32_t e, Family f, const OrderedTables& t,
+                  uint32_t* v) const {
+    const uint32_t top = c.pixel(pixel, bits(), m_, c.key);
+    const uint32_t mask = (uint32_t(1) << t.bits) - 1;
+    const uint64_t seed = sample_seed(c.key, pixel);
+    Runs s{c.key, c.run_id, c.run};
+    if (m_ <= t.bits && a < e) {
+      // The block is an aligned block of one run: its points are contiguous in the run's
+      // table (the window's in scrambled order). Asked for all at once, their cache misses
+      // overlap instead of stalling the loop one by one.
+      if (s.run_id != run_of(top, t)) s.run_id = run_of(top, t), s.run = map_run(s.key, s.run_id, f, t);
+      const char* block = reinterpret_cast<const char*>(s.run.coords + std::size_t(top & mask) * D);
+      const std::size_t bytes = std::min<std::size_t>(std::size_t(4) * D << m_, 4096);
+      for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(block + b);
+    }
+    uint32_t low[256];
+    for (uint32_t a0 = a; a0 < e; a0 += 256) {
+      const uint32_t n = std::min<uint32_t>(256, e - a0);
+      sample_bits(seed, a0, a0 + n, low);
+      for (uint32_t j = 0; j < n; ++j, v += D) {
+        const uint32_t p = top | low[j];
+        if (s.run_id != run_of(p, t)) s.run_id = run_of(p, t), s.run = map_run(s.key, s.run_id, f, t);
+        const uint32_t* q = s.run.coords + std::size_t(p & mask) * D;
+        if constexpr (D == 1) {
+          v[0] = q[0] ^ s.run.xr[0];
+        } else {
+          v[0] = q[s.run.swap] ^ s.run.xr[0];
+          v[1] = q[s.run.swap ^ 1] ^ s.run.xr[1];
+        }
+      }
+    }
+    c.run_id = s.run_id, c.run = s.run;
+  }
+
+  // The thread's cache of a stream's block (bounce < kCachedBounces), keyed for it.
+  StreamCache& cached_stream(Family f, int bounce, uint64_t block) const {
     // Four blocks per stream: a camera packet of 4 samples at 1 or 2 spp spans them.
     thread_local std::array<StreamCache, kFamilyCount * kCachedBounces * 4> cache;
     StreamCache& c = cache[(std::size_t(int(f) * kCachedBounces + bounce) << 2) + (block & 3)];
@@ -281,7 +425,7 @@ class ScreenPoissonSampler final : public Sampler {
     return mix64(sample_stream_from_hash(seed_hash_, 0, 0, f, bounce) ^ kKeySalt ^ (block * 0x9e3779b97f4a7c15ull));
   }
   static Run map_run(uint64_t key, uint32_t run_id, Family f, const OrderedTables& t) {
-    const uint64_t h = hash_combine(key, run_id);
+    const uint64_t h = mix64(key ^ (uint64_t(run_id) * 0xbf58476d1ce4e5b9ull));
     const uint64_t s = mix64(h ^ kShiftSalt);
     const std::size_t table =
         std::size_t(((h >> 32) * uint64_t(std::min<std::size_t>(t.coords.size(), kPoolTables))) >> 32);

@@ -4,7 +4,8 @@
 // Per (family, bounce, seed) every pixel's samples take one aligned block of a global index:
 // the pixel's Morton index followed by the sample's, with its base-4 digits permuted, each by
 // one of the 24 permutations picked by a hash of the digits above it (Ahmed & Wonka §4; the
-// same nesting as `zsobol`), so aligned blocks of indices stay aligned blocks. Each run of M
+// same nesting as `zsobol`; the sample's digits four nodes to a hash), so aligned blocks of
+// indices stay aligned blocks. Each run of M
 // consecutive indices (M = a table's points: 1024 for the 2-D families, 2048 for time) is one
 // table read in its progressive order (progressive_order.h), picked by a hash of the run from
 // the family's first 8 (a cache-sized pool), with one digital shift (and an axis swap) for the
@@ -33,8 +34,8 @@ std::unique_ptr<Sampler> make_screen_poisson_sampler(uint64_t seed, const TableS
 
 // The digits of z in bit positions [lo, hi) (base 4 from the top; when hi - lo is odd the last
 // digit is the single bit lo), each permuted by a hash of key and of z's bits above it;
-// the other bits 0. Digits of [0, bits) at once give the same as [m, bits) | [0, m) for
-// bits - m even: the per-pixel part is computed once per block. Exposed for tests.
+// the other bits 0. The sampler takes [m, bits), a pixel's digits. Digits of [0, bits) at once
+// give the same as [m, bits) | [0, m) for bits - m even. Exposed for tests.
 uint32_t scramble_digits(uint32_t z, int hi, int lo, uint64_t key);
 
 }  // namespace pdrt

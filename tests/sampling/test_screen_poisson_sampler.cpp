@@ -1,6 +1,6 @@
 // `poisson-ss` (issue 31 item 1): the tables in progressive order, nets over aligned groups of
-// neighbouring pixels in every family, the digit scramble's split form, replay, unbiasedness
-// over seeds, refinement blocks, and refusals.
+// neighbouring pixels in every family, the digit scramble's split form, the nested order of a pixel's samples, values
+// independent of the thread's caches, replay, unbiasedness over seeds, refinement blocks, and refusals.
 #include "sampling/samplers/screen_poisson_sampler.h"
 
 #include "sampling/core/errors.h"
@@ -164,18 +164,67 @@ TEST(ScreenPoissonSampler, TimeSamplesOfAlignedPixelGroupsAreStratified) {
 }
 
 // prepare() fills a window block by block; every value equals the one asked alone: windows
-// that start inside a block, a bounce past the threads' stream caches, and (4096 spp) a
-// pixel's block that spans four runs of the 2-D tables and two of the time tables.
+// that start inside a block, a bounce past the threads' stream caches, blocks of an even and
+// an odd count of sample bits (4 and 8 spp: an odd count ends in a single flipped bit), and
+// (4096 spp) a pixel's block that spans four runs of the 2-D tables and two of the time tables.
 TEST(ScreenPoissonSampler, PreparedStreamsMatchValueByValueAcrossBlocks) {
-  auto s = screen(21, {4, 20, 12});
-  for (Family f : {Family::Pixel, Family::Time, Family::Gloss})
-    for (int bounce : {2, PixelSampleState::kCachedSalts + 3}) {
-      EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 40), 0) << family_name(f);  // ten blocks of 4
-      EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 43, 6), 0) << family_name(f);
-    }
+  for (int64_t spp : {4, 8}) {
+    auto s = screen(21, {spp, 20, 12});
+    for (Family f : {Family::Pixel, Family::Time, Family::Gloss})
+      for (int bounce : {2, PixelSampleState::kCachedSalts + 3}) {
+        EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 10 * spp), 0) << family_name(f) << spp;  // ten blocks
+        EXPECT_EQ(test::prepared_mismatches(*s, 7, 3, f, bounce, 10 * spp + 3, 6), 0) << family_name(f) << spp;
+      }
+  }
   auto big = screen(22, {4096, 4, 4});
   for (Family f : {Family::Lens, Family::Time})
     EXPECT_EQ(test::prepared_mismatches(*big, 1, 2, f, 0, 4096 + 100, 1000), 0) << family_name(f);
+}
+
+// The values do not depend on what a thread's caches hold: the streams of a 20 x 12 image
+// prepared pixel by pixel in rows (each pixel reuses the digits its neighbour left) equal the
+// values another sampler of the same seed gives asked in the reverse order, at a cached bounce.
+TEST(ScreenPoissonSampler, ValuesDoNotDependOnTheOrderPixelsAreVisited) {
+  const SamplerShape shape{16, 20, 12};
+  auto a = screen(31, shape), b = screen(31, shape);
+  for (Family f : {Family::Lens, Family::Time}) {
+    std::vector<double> prepared;
+    for (int y = 0; y < 12; ++y)
+      for (int x = 0; x < 20; ++x) {
+        PreparedStream p;
+        p.first = 0, p.want = 16;
+        a->prepare(x, y, f, 1, &p);
+        ASSERT_TRUE(p.coords);
+        for (int i = 0; i < 16; ++i) prepared.push_back(p.value(i, 0));
+      }
+    for (int y = 11; y >= 0; --y)
+      for (int x = 19; x >= 0; --x)
+        for (int i = 15; i >= 0; --i)
+          ASSERT_EQ(prepared[std::size_t((y * 20 + x) * 16 + i)], b->get_1d(x, y, i, f, 1))
+              << family_name(f) << " " << x << " " << y << " " << i;
+  }
+}
+
+// A pixel's samples visit its block in nested order (base-4 digits permuted per node, an odd
+// count of bits ending in a flipped pair): its first 4^j samples, and with an odd count of
+// sample bits its first 2 * 4^j, are an aligned sub-block of the table's, so a (0, m, 2)-net
+// (what a progressive render's passes and adaptive refinement see before the pixel's last
+// pass).
+TEST(ScreenPoissonSampler, PowerOfFourPrefixesOfAPixelAreNets) {
+  for (int64_t spp : {64, 32})
+    for (Family f : {Family::Pixel, Family::Lens, Family::Gloss}) {
+      auto s = screen(17, {spp, 16, 16});
+      for (auto [x, y] : square(3, 5, 3)) {
+        PointSet ps;
+        ps.dim = 2;
+        for (int i = 0; i < spp; ++i) {
+          const Vec2 v = s->get_2d(x, y, i, f, 0);
+          ps.coords.push_back(v[0]), ps.coords.push_back(v[1]);
+        }
+        for (std::size_t n = spp == 64 ? 4 : 2; n <= std::size_t(spp); n *= 4)
+          ASSERT_TRUE(is_02_net(ps, 0, n)) << family_name(f) << " " << spp << " " << n;
+      }
+    }
 }
 
 TEST(ScreenPoissonSampler, RefinementBlocksAreScreenSpacePatternsOfTheirOwn) {

@@ -108,10 +108,11 @@ TEST(ZSobolSampler, MeanOverSeedsIsUniform) {
   }
 }
 
-// Over several blocks, with an odd and an even count of index bits (3 + 10, 4 + 10) and a
-// pixel outside the image (it wraps); and windows that start inside a block (a later pass).
+// Over several blocks, with odd and even counts of index bits (3, 4, 5 and 6 + 10: one to
+// three levels of sample digits, prepare keeping the upper ones per node) and a pixel outside
+// the image (it wraps); and windows that start inside a block (a later pass).
 TEST(ZSobolSampler, PreparedStreamMatchesValueByValue) {
-  for (int spp : {8, 16}) {
+  for (int spp : {8, 16, 32, 64}) {
     auto s = make_zsobol_sampler(21, {spp, 20, 12});
     for (Family f : {Family::Pixel, Family::Time})
       for (int px : {7, 45}) {

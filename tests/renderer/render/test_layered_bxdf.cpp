@@ -436,8 +436,10 @@ double mu_at(const ThinLensCamera& cam, float fx, float fy, const Vec3& centre) 
 // in a white environment: the mean of the pixels inside 0.8 of the silhouette equals the
 // analog particle's albedo averaged over the same pixels' viewing angles, within 1 %, with
 // f()'s exit weighted consistently. As pbrt-v4 weighs it (the default) the render is brighter
-// where light sampling carries the estimate: printed, +1.0 % and +1.8 % at roughness 0.15 and
-// 0.5 when this was written, below 3 %.
+// where light sampling carries the estimate: printed, +0.7 % and +0.9 % at roughness 0.15 and
+// 0.5, below 3 %. The renders are the mean of four seeds: the random walks have a heavy tail,
+// and on a machine without AVX-512 (Embree takes another code path, so other paths) seed 7
+// alone read +1.2 % at roughness 0.5, seven other seeds -0.8 to +0.2 %.
 TEST(LayeredBxdf, RenderedFurnaceSphereMatchesTheAnalogExpectation) {
   for (float r : {0.0f, 0.15f, 0.5f}) {
     const Vec3 centre(2, -1, 10);
@@ -447,7 +449,12 @@ TEST(LayeredBxdf, RenderedFurnaceSphereMatchesTheAnalogExpectation) {
     m.layers.consistent_exit = true;
     SceneDesc s = furnace_sphere(24, 24, 256, centre, m);
     s.integrator.max_depth = 8;
-    Image im = render_quietly(s).image, im_pbrt = render_quietly(pbrt).image;
+    constexpr uint64_t kSeeds[] = {7, 1, 2, 3};
+    std::vector<Image> im, im_pbrt;
+    for (uint64_t seed : kSeeds) {
+      s.sampler.seed = pbrt.sampler.seed = seed;
+      im.push_back(render_quietly(s).image), im_pbrt.push_back(render_quietly(pbrt).image);
+    }
     ThinLensCamera cam(s.camera, s.film.width, s.film.height);
     const Slab slab = slab_of(m);
     Rng rng(41);
@@ -455,7 +462,8 @@ TEST(LayeredBxdf, RenderedFurnaceSphereMatchesTheAnalogExpectation) {
     const auto px = pixels_inside_silhouette(s, centre, 0.8);
     ASSERT_GT(px.size(), 60u);
     for (auto [x, y] : px) {
-      sum += mean_rgb(im, x, y), sum_pbrt += mean_rgb(im_pbrt, x, y);
+      for (std::size_t k = 0; k < im.size(); ++k)
+        sum += mean_rgb(im[k], x, y) / double(im.size()), sum_pbrt += mean_rgb(im_pbrt[k], x, y) / double(im.size());
       const int k = 8000;
       double e = 0;
       for (int i = 0; i < k; ++i) {

@@ -3,6 +3,7 @@
 
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
+#include "sampling/samplers/nested_digits.h"
 #include "sampling/samplers/progressive_order.h"
 
 #include <array>
@@ -33,18 +34,11 @@ constexpr std::array<uint8_t, 24> kDigitPermutations = [] {
   return t;
 }();
 
-// Permutation r's images of digits 0..3, and the pairs' flips of a bottom node of odd m (bit p
-// of the index: pair p flips) as the eight indices' lowest bits.
+// Permutation r's images of digits 0..3.
 constexpr std::array<std::array<uint32_t, 4>, 24> kSpreadPermutation = [] {
   std::array<std::array<uint32_t, 4>, 24> t{};
   for (std::size_t r = 0; r < 24; ++r)
     for (std::size_t d = 0; d < 4; ++d) t[r][d] = (uint32_t(kDigitPermutations[r]) >> (2 * d)) & 3u;
-  return t;
-}();
-constexpr std::array<std::array<uint32_t, 8>, 16> kSpreadFlips = [] {
-  std::array<std::array<uint32_t, 8>, 16> t{};
-  for (std::size_t f = 0; f < 16; ++f)
-    for (std::size_t k = 0; k < 8; ++k) t[f][k] = uint32_t(k & 1) ^ uint32_t((f >> (k >> 1)) & 1);
   return t;
 }();
 
@@ -298,61 +292,24 @@ class ScreenPoissonSampler final : public Sampler {
     if (m_ & 1) out |= (i & 1u) ^ uint32_t(tail_hash(seed, i >> 7) >> ((i >> 1) & 63u) & 1u);
     return out;
   }
-  // out[i - a] = sample_bits(i) for a <= i < e, bottom node by bottom node (the lowest base-4
-  // digit's, 4 << (m & 1) indices): a whole node is its upper digits or'ed onto its
-  // permutation spread over four words (and, for odd m, the four pairs' flips spread over
-  // eight), so a value costs about a word's or and store; each level keeps the hash of its
-  // last four nodes.
+  // out[i - a] = sample_bits(i) for a <= i < e (nested_digits.h), each level keeping the hash of
+  // its last four nodes and the tail the hash of its last 64 pairs.
   void sample_bits(uint64_t seed, uint32_t a, uint32_t e, uint32_t* out) const {
-    const int b = m_ & 1, L = m_ / 2;  // the tail bits below the base-4 digits, and those digits
-    if (L == 0) {                      // m = 0 or 1: the tail bit alone
-      for (uint32_t i = a; i < e; ++i)
-        out[i - a] = b ? (i & 1u) ^ uint32_t(tail_hash(seed, i >> 7) >> (i >> 1) & 1u) : 0u;
-      return;
-    }
-    const int w = 2 + b;  // index bits below a bottom node
     std::array<uint32_t, 16> quad;
     std::array<uint64_t, 16> hash;
     quad.fill(UINT32_MAX);
-    const auto perm = [&](int l, uint32_t node) {  // kDigitPermutations' index of node at level l
+    const auto perm = [&](int l, uint32_t node) -> const std::array<uint32_t, 4>& {
       if (quad[std::size_t(l)] != node >> 2)
         quad[std::size_t(l)] = node >> 2, hash[std::size_t(l)] = node_hash(seed, l, node >> 2);
-      return node_perm_index(hash[std::size_t(l)], node);
+      return kSpreadPermutation[node_perm_index(hash[std::size_t(l)], node)];
     };
-    // Per parent (n / 4) of bottom node n: the digits of the levels above the parent's, and the
-    // parent's permutation, which maps n's place in it (n mod 4) to the digit at shift w.
-    uint32_t above = 0, parent_perm = 0, parent = UINT32_MAX, group = UINT32_MAX;
+    uint32_t group = UINT32_MAX;
     uint64_t th = 0;
-    for (uint32_t n = a >> w; uint64_t(n) << w < e; ++n) {
-      if (L > 1 && n >> 2 != parent) {
-        parent = n >> 2, above = 0;
-        for (int l = 0; l < L - 2; ++l) {
-          const int shift = m_ - 2 - 2 * l, up = 2 * (L - 1 - l);  // node of level l: n >> up
-          above |= ((kDigitPermutations[perm(l, n >> up)] >> (2 * ((n >> (up - 2)) & 3u))) & 3u) << shift;
-        }
-        parent_perm = kDigitPermutations[perm(L - 2, parent)];
-      }
-      const uint32_t upper = L > 1 ? above | (((parent_perm >> (2 * (n & 3u))) & 3u) << w) : 0u;
-      const std::array<uint32_t, 4>& digits = kSpreadPermutation[perm(L - 1, n)];
-      const uint32_t lo = n << w;
-      if (b) {
-        if (n >> 4 != group) group = n >> 4, th = tail_hash(seed, group);
-        const std::array<uint32_t, 8>& flips = kSpreadFlips[(th >> ((4 * n) & 63u)) & 15u];
-        if (lo >= a && uint64_t(lo) + 8 <= e) {
-          uint32_t* o = out + (lo - a);
-          for (int k = 0; k < 8; ++k) o[k] = upper | (digits[std::size_t(k >> 1)] << 1) | flips[std::size_t(k)];
-        } else {
-          for (uint32_t i = std::max(a, lo); i < std::min<uint64_t>(e, uint64_t(lo) + 8); ++i)
-            out[i - a] = upper | (digits[(i >> 1) & 3u] << 1) | flips[i & 7u];
-        }
-      } else if (lo >= a && uint64_t(lo) + 4 <= e) {
-        uint32_t* o = out + (lo - a);
-        for (int k = 0; k < 4; ++k) o[k] = upper | digits[std::size_t(k)];
-      } else {
-        for (uint32_t i = std::max(a, lo); i < std::min<uint64_t>(e, uint64_t(lo) + 4); ++i)
-          out[i - a] = upper | digits[i & 3u];
-      }
-    }
+    const auto tail = [&](uint32_t i) {
+      if (i >> 7 != group) group = i >> 7, th = tail_hash(seed, group);
+      return (i & 1u) ^ uint32_t((th >> ((i >> 1) & 63u)) & 1u);
+    };
+    nested_digits(m_, 0, a, e, perm, tail, out);
   }
 
   // Indices [a, e) of the pixel's block of c's stream, D values each, into v: the pixel's

@@ -5,6 +5,7 @@
 
 #include "sampling/core/errors.h"
 #include "sampling/core/rng.h"
+#include "sampling/samplers/nested_digits.h"
 #include "sampling/samplers/owen_sobol.h"
 
 #include <algorithm>
@@ -175,26 +176,13 @@ class ZSobolSampler final : public Sampler {
  private:
   // zsobol_sobol_index(pixel | i, 2k + m, key) for a <= i < e (indices in the pixel's block of
   // 2^m), into out[i - a]: `top` is its pixel digits (the thread's DigitCache gives them), the
-  // sample's digits go bottom node by bottom node (the lowest base-4 digit's, 4 << (m & 1)
-  // indices), the digits above a node kept while its parent stays and each level's last
-  // permutation kept, so a value costs a lookup, an or and a store (the DigitCache walked the
-  // levels per value). The same hashes, so the same values.
+  // sample's are nested_digits' walk with each level's last permutation and the last pair's flip
+  // kept. The same hashes, so the same values.
   void block_indices(uint32_t top, uint32_t pixel, uint32_t a, uint32_t e, uint64_t key, uint32_t* out) const {
-    const int b = m_ & 1, L = m_ / 2;  // the tail bit below the sample's base-4 digits, and those digits
-    uint32_t pair = UINT32_MAX, flip = 0;
-    const auto tail = [&](uint32_t i) {  // the last bit of an odd count, one hash per pair
-      if (i >> 1 != pair) pair = i >> 1, flip = last_bit(pixel | (i & ~1u), key);
-      return (i & 1u) ^ (flip & 1u);
-    };
-    if (L == 0) {
-      for (uint32_t i = a; i < e; ++i) out[i - a] = top | (b ? tail(i) : 0u);
-      return;
-    }
-    const int w = 2 + b;  // index bits below a bottom node
     std::array<uint32_t, 16> level_node;
     std::array<uint8_t, 16> level_perm{};
     level_node.fill(UINT32_MAX);
-    const auto perm = [&](int l, uint32_t node) {  // the permutation of level l's node (index bits above its digit)
+    const auto perm = [&](int l, uint32_t node) -> const std::array<uint8_t, 4>& {
       const int shift = m_ - 2 - 2 * l;
       if (level_node[std::size_t(l)] != node)
         level_node[std::size_t(l)] = node,
@@ -202,23 +190,12 @@ class ZSobolSampler final : public Sampler {
             uint8_t(digit_permutation(pixel | uint32_t(uint64_t(node) << (shift + 2)), shift, key));
       return kPermutations4[level_perm[std::size_t(l)]];
     };
-    uint32_t above = 0, parent = UINT32_MAX;
-    std::array<uint8_t, 4> parent_perm{};
-    for (uint32_t n = a >> w; uint64_t(n) << w < e; ++n) {
-      if (L > 1 && n >> 2 != parent) {  // the levels above the bottom node's own digit
-        parent = n >> 2, above = 0;
-        for (int l = 0; l < L - 2; ++l) {
-          const int up = 2 * (L - 1 - l);  // level l's node of bottom node n: n >> up
-          above |= uint32_t(perm(l, n >> up)[(n >> (up - 2)) & 3u]) << (m_ - 2 - 2 * l);
-        }
-        parent_perm = perm(L - 2, parent);
-      }
-      const uint32_t upper = top | (L > 1 ? above | (uint32_t(parent_perm[n & 3u]) << w) : 0u);
-      const std::array<uint8_t, 4> bottom = perm(L - 1, n);
-      const uint32_t lo = std::max(a, n << w), hi = uint32_t(std::min<uint64_t>(e, (uint64_t(n) + 1) << w));
-      for (uint32_t i = lo; i < hi; ++i)
-        out[i - a] = upper | (uint32_t(bottom[(i >> b) & 3u]) << b) | (b ? tail(i) : 0u);
-    }
+    uint32_t pair = UINT32_MAX, flip = 0;
+    const auto tail = [&](uint32_t i) {  // the last bit of an odd count, one hash per pair
+      if (i >> 1 != pair) pair = i >> 1, flip = last_bit(pixel | (i & ~1u), key);
+      return (i & 1u) ^ (flip & 1u);
+    };
+    nested_digits(m_, top, a, e, perm, tail, out);
   }
 
   // The Sobol index of a sample and the key of its block's scramble.
